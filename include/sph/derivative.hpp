@@ -1,0 +1,238 @@
+// Pairwise sums: IDerivative computes what neighbours contribute to a particle; results go to
+// Accumulated buffers (one set per block of particles), summed in a fixed order after the loop.
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <typeindex>
+#include <variant>
+#include <vector>
+
+#include "sph/settings.hpp"
+#include "sph/storage.hpp"
+
+namespace num::sph {
+
+/// Geometry of one pair (i, j): dx = x_i - x_j (nearest periodic image), r = |dx|, and the
+/// kernel value w = W(r, h) (0 unless a derivative asked for kernel values).
+template <int Dim>
+struct PairGeometry {
+    Vector<Dim> dx;
+    Float r;
+    Float w;
+};
+
+/// The geometry of all neighbours of a particle, parallel to its neighbour and gradient lists.
+template <int Dim>
+struct NeighbourGeometry {
+    ArrayView<const Vector<Dim>> dx;
+    ArrayView<const Float> r;
+    ArrayView<const Float> w;
+    PairGeometry<Dim> pair(std::size_t k) const { return {dx[k], r[k], w.empty() ? 0.0 : w[k]}; }
+};
+
+/// Buffers a pair loop accumulates into. Each buffer names the storage level it is added to
+/// after the loop: the value (OrderEnum::ZERO), dt (FIRST) or d2t (SECOND) of its quantity.
+template <int Dim>
+class Accumulated {
+public:
+    template <class T>
+    void insert(QuantityId id, OrderEnum target = OrderEnum::ZERO) {
+        for (auto& b : buffers_)
+            if (b.id == id) {
+                if (!std::holds_alternative<std::vector<T>>(b.data) || b.target != target)
+                    throw std::logic_error("accumulated quantity " + std::to_string(int(id)) +
+                                           " requested twice with different types or targets");
+                return;
+            }
+        buffers_.push_back({id, target, std::vector<T>(size_)});
+    }
+
+    template <class T>
+    ArrayView<T> getValue(QuantityId id) {
+        for (auto& b : buffers_)
+            if (b.id == id) {
+                auto& v = std::get<std::vector<T>>(b.data);
+                return ArrayView<T>(v.data(), v.size());
+            }
+        throw std::out_of_range("no accumulated quantity " + std::to_string(int(id)));
+    }
+
+    /// Sets every buffer to n zeros.
+    void reset(Size n) {
+        size_ = n;
+        for (auto& b : buffers_)
+            std::visit([&](auto& v) { v.assign(n, typename std::decay_t<decltype(v)>::value_type{}); },
+                       b.data);
+    }
+
+    /// Zeroes the storage levels these buffers are added to.
+    void zeroTargets(Storage<Dim>& storage) const {
+        for (const auto& b : buffers_)
+            std::visit(
+                [&](const auto& v) {
+                    using T = typename std::decay_t<decltype(v)>::value_type;
+                    for (auto& x : target<T>(storage, b)) x = T{};
+                },
+                b.data);
+    }
+
+    /// storage targets += sum over blocks, block 0 first: the order never depends on threads.
+    static void addInto(Storage<Dim>& storage, std::span<const Accumulated> blocks) {
+        if (blocks.empty()) return;
+        for (std::size_t k = 0; k < blocks[0].buffers_.size(); ++k) {
+            const Buffer& b0 = blocks[0].buffers_[k];
+            std::visit(
+                [&](const auto& v0) {
+                    using T = typename std::decay_t<decltype(v0)>::value_type;
+                    ArrayView<T> dst = target<T>(storage, b0);
+                    for (const Accumulated& blk : blocks) {
+                        const auto& v = std::get<std::vector<T>>(blk.buffers_[k].data);
+                        for (std::size_t i = 0; i < dst.size(); ++i) dst[i] += v[i];
+                    }
+                },
+                b0.data);
+        }
+    }
+
+private:
+    struct Buffer {
+        QuantityId id;
+        OrderEnum target;
+        std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;
+    };
+    template <class T>
+    static ArrayView<T> target(Storage<Dim>& s, const Buffer& b) {
+        switch (b.target) {
+            case OrderEnum::ZERO: return s.template getValue<T>(b.id);
+            case OrderEnum::FIRST: return s.template getDt<T>(b.id);
+            default: return s.template getD2t<T>(b.id);
+        }
+    }
+    std::vector<Buffer> buffers_;
+    Size size_ = 0;
+};
+
+/// A pairwise sum over neighbours. The solver calls create once per block, initialize once per
+/// evaluation, then evalSymmetric or evalAsymmetric for every particle of the block.
+/// Symmetric: `neighs` holds each pair once (j > i) and the derivative writes both i and j.
+/// Asymmetric: `neighs` holds all neighbours and the derivative writes only i.
+/// `grads[k]` = grad_i W(x_i - x_j); `geometry` carries x_i - x_j (nearest periodic image),
+/// distances and, if asked for, kernel values. (The seed's signature, plus the geometry that
+/// periodic boundaries need.)
+template <int Dim>
+class IDerivative {
+public:
+    virtual ~IDerivative() = default;
+    virtual void create(Accumulated<Dim>& results) = 0;
+    virtual void initialize(const Storage<Dim>& input, Accumulated<Dim>& results) = 0;
+    virtual void evalSymmetric(Size i, ArrayView<const Size> neighs,
+                               ArrayView<const Vector<Dim>> grads,
+                               const NeighbourGeometry<Dim>& geometry) = 0;
+    virtual void evalAsymmetric(Size i, ArrayView<const Size> neighs,
+                                ArrayView<const Vector<Dim>> grads,
+                                const NeighbourGeometry<Dim>& geometry) = 0;
+    /// True if eval needs kernel values W (e.g. density summation), not only gradients.
+    virtual bool needsKernelValues() const { return false; }
+};
+
+/// CRTP helper: write one `template <bool Symmetric> void eval(Size i, Size j, const Vector& grad)`
+/// (or with a fourth `const PairGeometry<Dim>&` argument) and get both evaluations, with the
+/// per-pair call inlined.
+template <class Derived, int Dim>
+class DerivativeTemplate : public IDerivative<Dim> {
+public:
+    void evalSymmetric(Size i, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>> grads,
+                       const NeighbourGeometry<Dim>& geometry) final {
+        evalAll<true>(i, neighs, grads, geometry);
+    }
+    void evalAsymmetric(Size i, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>> grads,
+                        const NeighbourGeometry<Dim>& geometry) final {
+        evalAll<false>(i, neighs, grads, geometry);
+    }
+
+    /// Evaluates one pair (used by fused derivatives).
+    template <bool Symmetric>
+    void evalPair(Size i, Size j, const Vector<Dim>& grad, const PairGeometry<Dim>& pair) {
+        Derived& d = static_cast<Derived&>(*this);
+        if constexpr (requires { d.template eval<Symmetric>(i, j, grad, pair); })
+            d.template eval<Symmetric>(i, j, grad, pair);
+        else
+            d.template eval<Symmetric>(i, j, grad);
+    }
+
+private:
+    template <bool Symmetric>
+    void evalAll(Size i, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>> grads,
+                 const NeighbourGeometry<Dim>& geometry) {
+        for (std::size_t k = 0; k < neighs.size(); ++k)
+            evalPair<Symmetric>(i, neighs[k], grads[k], geometry.pair(k));
+    }
+};
+
+/// Several DerivativeTemplates evaluated in one pass over the pairs: the per-pair calls are
+/// composed at compile time, so a fused loop costs no virtual call per pair.
+template <int Dim, class... Parts>
+class FusedDerivative : public DerivativeTemplate<FusedDerivative<Dim, Parts...>, Dim> {
+public:
+    explicit FusedDerivative(Parts... parts) : parts_(std::move(parts)...) {}
+    void create(Accumulated<Dim>& r) override {
+        std::apply([&](auto&... p) { (p.create(r), ...); }, parts_);
+    }
+    void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
+        std::apply([&](auto&... p) { (p.initialize(s, r), ...); }, parts_);
+    }
+    bool needsKernelValues() const override {
+        return std::apply([](const auto&... p) { return (p.needsKernelValues() || ...); }, parts_);
+    }
+    template <bool Symmetric>
+    void eval(Size i, Size j, const Vector<Dim>& grad, const PairGeometry<Dim>& pair) {
+        std::apply([&](auto&... p) { (p.template evalPair<Symmetric>(i, j, grad, pair), ...); },
+                   parts_);
+    }
+
+private:
+    std::tuple<Parts...> parts_;
+};
+
+/// The derivatives of one block. `require` keeps one derivative per type.
+template <int Dim>
+class DerivativeHolder {
+public:
+    void require(std::unique_ptr<IDerivative<Dim>> derivative) {
+        const std::type_index type(typeid(*derivative));
+        for (const auto& d : derivatives_)
+            if (std::type_index(typeid(*d)) == type) return;
+        derivatives_.push_back(std::move(derivative));
+    }
+    template <class T, class... Args>
+    void require(Args&&... args) {
+        require(std::make_unique<T>(std::forward<Args>(args)...));
+    }
+
+    Size size() const { return Size(derivatives_.size()); }
+    bool needsKernelValues() const {
+        for (const auto& d : derivatives_)
+            if (d->needsKernelValues()) return true;
+        return false;
+    }
+    void create(Accumulated<Dim>& r) {
+        for (auto& d : derivatives_) d->create(r);
+    }
+    void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) {
+        for (auto& d : derivatives_) d->initialize(s, r);
+    }
+    void evalSymmetric(Size i, ArrayView<const Size> n, ArrayView<const Vector<Dim>> g,
+                       const NeighbourGeometry<Dim>& geo) {
+        for (auto& d : derivatives_) d->evalSymmetric(i, n, g, geo);
+    }
+    void evalAsymmetric(Size i, ArrayView<const Size> n, ArrayView<const Vector<Dim>> g,
+                        const NeighbourGeometry<Dim>& geo) {
+        for (auto& d : derivatives_) d->evalAsymmetric(i, n, g, geo);
+    }
+
+private:
+    std::vector<std::unique_ptr<IDerivative<Dim>>> derivatives_;
+};
+
+}  // namespace num::sph

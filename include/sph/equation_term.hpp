@@ -1,0 +1,108 @@
+// Equation terms: what appears on the right-hand sides of the evolution equations.
+//
+// Order of the hooks in one evaluation (Solver::evaluate):
+//   1. the highest time derivative of every quantity is set to zero;
+//   2. initialize() of every term, in the order the terms were added;
+//   3. the pair loop: the derivatives each term required (setDerivatives) are evaluated;
+//   4. the accumulated sums are added to the storage;
+//   5. finalize() of every term, in the order the terms were added.
+// create() runs once, when the solver is set up, before the first evaluation.
+// Terms add to derivatives (+=); a term never assigns a derivative another term writes.
+#pragma once
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sph/derivative.hpp"
+#include "sph/scheduler.hpp"
+
+namespace num::sph {
+
+/// The time-step limits offered by terms; the step is their minimum.
+class TimeStepLimits {
+public:
+    /// Offers dt for the named criterion (ignored unless positive and finite).
+    void offer(const std::string& criterion, Float dt) {
+        if (!(dt > 0) || dt == std::numeric_limits<Float>::infinity()) return;
+        if (dt < dt_) dt_ = dt, criterion_ = criterion;
+    }
+    Float dt() const { return dt_; }
+    const std::string& criterion() const { return criterion_; }
+
+private:
+    Float dt_ = std::numeric_limits<Float>::infinity();
+    std::string criterion_ = "none";
+};
+
+template <int Dim>
+class IEquationTerm {
+public:
+    static constexpr int dim = Dim;
+    virtual ~IEquationTerm() = default;
+    /// Requires the derivatives (pairwise sums) the term needs. Called once per block.
+    virtual void setDerivatives(DerivativeHolder<Dim>& derivatives, const RunSettings& settings) = 0;
+    /// Runs before the pair loop, e.g. to compute pressure from density.
+    virtual void initialize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
+    /// Runs after the pair loop; adds the term's contribution to the derivatives.
+    virtual void finalize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
+    /// Creates the quantities the term needs.
+    virtual void create(Storage<Dim>& storage, IMaterial& material) const = 0;
+    /// Offers the term's time-step limits (Courant, viscous, diffusion...).
+    virtual void limitTimeStep(const Storage<Dim>&, const RunSettings&, TimeStepLimits&) const {}
+};
+
+/// An ordered set of terms, built with makeTerm and + / +=.
+template <int Dim>
+class EquationHolder {
+public:
+    EquationHolder() = default;
+    explicit EquationHolder(std::shared_ptr<IEquationTerm<Dim>> term) {
+        terms_.push_back(std::move(term));
+    }
+
+    EquationHolder& operator+=(const EquationHolder& other) {
+        terms_.insert(terms_.end(), other.terms_.begin(), other.terms_.end());
+        return *this;
+    }
+    friend EquationHolder operator+(EquationHolder a, const EquationHolder& b) { return a += b; }
+
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& s) const {
+        for (auto& t : terms_) t->setDerivatives(d, s);
+    }
+    void initialize(IScheduler& sch, Storage<Dim>& s, Float t) const {
+        for (auto& term : terms_) term->initialize(sch, s, t);
+    }
+    void finalize(IScheduler& sch, Storage<Dim>& s, Float t) const {
+        for (auto& term : terms_) term->finalize(sch, s, t);
+    }
+    void create(Storage<Dim>& s, IMaterial& m) const {
+        for (auto& t : terms_) t->create(s, m);
+    }
+    void limitTimeStep(const Storage<Dim>& s, const RunSettings& rs, TimeStepLimits& l) const {
+        for (auto& t : terms_) t->limitTimeStep(s, rs, l);
+    }
+
+    Size size() const { return Size(terms_.size()); }
+    /// The first term of type T, or nullptr.
+    template <class T>
+    T* find() const {
+        for (auto& t : terms_)
+            if (auto* p = dynamic_cast<T*>(t.get())) return p;
+        return nullptr;
+    }
+
+private:
+    std::vector<std::shared_ptr<IEquationTerm<Dim>>> terms_;
+};
+
+/// An EquationHolder with one term of type T made from args.
+template <class T, class... Args>
+auto makeTerm(Args&&... args) {
+    constexpr int Dim = T::dim;
+    return EquationHolder<Dim>(std::make_shared<T>(std::forward<Args>(args)...));
+}
+
+}  // namespace num::sph

@@ -1,0 +1,54 @@
+// IScheduler: how loops run. Physics code calls parallelFor and never names a threading API;
+// the backend (sequential, or OpenMP threads) is chosen once, where the scheduler is made.
+#pragma once
+
+#include <algorithm>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "sph/types.hpp"
+
+namespace num::sph {
+
+class IScheduler {
+public:
+    virtual ~IScheduler() = default;
+    /// Number of threads the scheduler runs tasks on.
+    virtual Size threadCount() const = 0;
+    /// Calls task(begin, end) on chunks of [0, n) of at most `granularity` items; chunks may run
+    /// concurrently, each exactly once.
+    virtual void parallelFor(Size n, Size granularity,
+                             const std::function<void(Size begin, Size end)>& task) = 0;
+};
+
+/// Runs every chunk in order on the calling thread.
+class SequentialScheduler final : public IScheduler {
+public:
+    Size threadCount() const override { return 1; }
+    void parallelFor(Size n, Size granularity,
+                     const std::function<void(Size, Size)>& task) override {
+        if (granularity == 0) granularity = 1;
+        for (Size b = 0; b < n; b += granularity) task(b, std::min(n, b + granularity));
+    }
+};
+
+/// Runs chunks on a team of OpenMP threads (dynamic schedule).
+class ParallelScheduler final : public IScheduler {
+public:
+    explicit ParallelScheduler(Size threads);
+    Size threadCount() const override { return threads_; }
+    void parallelFor(Size n, Size granularity,
+                     const std::function<void(Size, Size)>& task) override;
+
+private:
+    Size threads_;
+};
+
+/// The scheduler for a backend name: "seq" or "omp".
+inline std::unique_ptr<IScheduler> makeScheduler(const std::string& backend, Size threads) {
+    if (backend == "seq") return std::make_unique<SequentialScheduler>();
+    return std::make_unique<ParallelScheduler>(threads);
+}
+
+}  // namespace num::sph

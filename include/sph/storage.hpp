@@ -1,0 +1,248 @@
+// Storage<Dim>: structure-of-arrays particle storage keyed by QuantityId.
+//
+// Each quantity holds a value array and, by its order, a first (dt) and second (d2t) time
+// derivative array, all of one value type: Float, Vector<Dim> or int. Adding, removing and
+// reordering particles applies to every quantity at once, so they stay consistent.
+#pragma once
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <variant>
+#include <vector>
+
+#include "sph/settings.hpp"
+#include "sph/types.hpp"
+
+namespace num::sph {
+
+/// The value, dt and d2t buffers of one quantity (dt/d2t empty below their order).
+template <class T>
+struct QuantityBuffers {
+    std::vector<T> value, dt, d2t;
+    std::vector<T>& level(int k) { return k == 0 ? value : k == 1 ? dt : d2t; }
+    const std::vector<T>& level(int k) const { return k == 0 ? value : k == 1 ? dt : d2t; }
+};
+
+template <int Dim>
+class Quantity {
+public:
+    using Data = std::variant<QuantityBuffers<Float>, QuantityBuffers<Vector<Dim>>,
+                              QuantityBuffers<int>>;
+
+    Quantity(OrderEnum order, Data data) : order_(order), data_(std::move(data)) {}
+
+    OrderEnum order() const { return order_; }
+    int levels() const { return int(order_) + 1; }
+
+    template <class T>
+    bool holds() const { return std::holds_alternative<QuantityBuffers<T>>(data_); }
+
+    template <class T>
+    QuantityBuffers<T>& buffers() {
+        if (auto* b = std::get_if<QuantityBuffers<T>>(&data_)) return *b;
+        throw std::logic_error("quantity accessed with the wrong value type");
+    }
+    template <class T>
+    const QuantityBuffers<T>& buffers() const {
+        return const_cast<Quantity*>(this)->buffers<T>();
+    }
+
+    /// Raises the order (never lowers it); new derivative buffers start at zero.
+    void raiseOrder(OrderEnum order, std::size_t n) {
+        if (order <= order_) return;
+        order_ = order;
+        visit([&](auto& b) {
+            for (int k = 1; k < levels(); ++k) b.level(k).resize(n);
+        });
+    }
+
+    /// Calls f(buffers) with the typed buffers.
+    template <class F>
+    decltype(auto) visit(F&& f) { return std::visit(std::forward<F>(f), data_); }
+    template <class F>
+    decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), data_); }
+
+private:
+    OrderEnum order_;
+    Data data_;
+};
+
+template <int Dim>
+class Storage {
+public:
+    using Vec = Vector<Dim>;
+
+    /// Number of particles.
+    Size size() const { return size_; }
+    bool has(QuantityId id) const { return quantities_.count(id) != 0; }
+    OrderEnum order(QuantityId id) const { return get(id).order(); }
+
+    /// Creates the quantity with every particle at `value`, or, if it exists, keeps its values
+    /// and raises its order when `order` is higher.
+    template <class T>
+    Quantity<Dim>& insert(QuantityId id, OrderEnum order, const T& value) {
+        return insert<T>(id, order, std::vector<T>(size_, value));
+    }
+
+    /// Creates the quantity with the given values (one per particle). The first quantity of an
+    /// empty storage sets the particle count. An existing quantity keeps its values.
+    template <class T>
+    Quantity<Dim>& insert(QuantityId id, OrderEnum order, std::vector<T> values) {
+        if (auto it = quantities_.find(id); it != quantities_.end()) {
+            if (!it->second.template holds<T>())
+                throw std::logic_error("quantity " + std::to_string(int(id)) +
+                                       " exists with another value type");
+            it->second.raiseOrder(order, size_);
+            return it->second;
+        }
+        if (quantities_.empty()) size_ = Size(values.size());
+        if (values.size() != size_)
+            throw std::invalid_argument("quantity " + std::to_string(int(id)) + " has " +
+                                        std::to_string(values.size()) + " values, storage has " +
+                                        std::to_string(size_) + " particles");
+        QuantityBuffers<T> b;
+        b.value = std::move(values);
+        if (order >= OrderEnum::FIRST) b.dt.assign(size_, T{});
+        if (order >= OrderEnum::SECOND) b.d2t.assign(size_, T{});
+        return quantities_.emplace(id, Quantity<Dim>(order, std::move(b))).first->second;
+    }
+
+    template <class T>
+    ArrayView<T> getValue(QuantityId id) { return level<T>(id, 0); }
+    template <class T>
+    ArrayView<const T> getValue(QuantityId id) const { return level<T>(id, 0); }
+    template <class T>
+    ArrayView<T> getDt(QuantityId id) { return level<T>(id, 1); }
+    template <class T>
+    ArrayView<const T> getDt(QuantityId id) const { return level<T>(id, 1); }
+    template <class T>
+    ArrayView<T> getD2t(QuantityId id) { return level<T>(id, 2); }
+    template <class T>
+    ArrayView<const T> getD2t(QuantityId id) const { return level<T>(id, 2); }
+
+    /// Several values of one type at once: `std::tie(u, m, rho) = s.getValues<Float>(...)`.
+    template <class T, class... Ids>
+    auto getValues(QuantityId first, Ids... rest) {
+        return std::make_tuple(getValue<T>(first), getValue<T>(rest)...);
+    }
+    template <class T, class... Ids>
+    auto getValues(QuantityId first, Ids... rest) const {
+        return std::make_tuple(getValue<T>(first), getValue<T>(rest)...);
+    }
+
+    Quantity<Dim>& get(QuantityId id) {
+        auto it = quantities_.find(id);
+        if (it == quantities_.end())
+            throw std::out_of_range("no quantity with id " + std::to_string(int(id)) +
+                                    " in the storage");
+        return it->second;
+    }
+    const Quantity<Dim>& get(QuantityId id) const { return const_cast<Storage*>(this)->get(id); }
+
+    /// Calls f(id, quantity) for every quantity in ascending id order.
+    template <class F>
+    void forEach(F&& f) {
+        for (auto& [id, q] : quantities_) f(id, q);
+    }
+    template <class F>
+    void forEach(F&& f) const {
+        for (const auto& [id, q] : quantities_) f(id, q);
+    }
+
+    /// Appends the particles of `other`, which must have the same quantities and types.
+    void append(const Storage& other) {
+        if (quantities_.empty()) {
+            *this = other;
+            return;
+        }
+        if (other.quantities_.size() != quantities_.size())
+            throw std::invalid_argument("append: storages hold different quantities");
+        for (auto& [id, q] : quantities_) {
+            auto it = other.quantities_.find(id);
+            if (it == other.quantities_.end())
+                throw std::invalid_argument("append: quantity " + std::to_string(int(id)) +
+                                            " missing in the appended storage");
+            const Quantity<Dim>& o = it->second;
+            q.raiseOrder(o.order(), size_);
+            q.visit([&](auto& b) {
+                using T = typename std::decay_t<decltype(b.value)>::value_type;
+                if (!o.template holds<T>())
+                    throw std::invalid_argument("append: value types differ");
+                const auto& ob = o.template buffers<T>();
+                for (int k = 0; k < q.levels(); ++k) {
+                    auto& dst = b.level(k);
+                    const auto& src = ob.level(k);
+                    if (src.empty()) dst.resize(dst.size() + other.size_);
+                    else dst.insert(dst.end(), src.begin(), src.end());
+                }
+            });
+        }
+        size_ += other.size_;
+        materials_.insert(materials_.end(), other.materials_.begin(), other.materials_.end());
+    }
+
+    /// Removes the particles whose indices are listed (any order, duplicates ignored).
+    void remove(std::vector<Size> indices) {
+        std::vector<char> drop(size_, 0);
+        for (Size i : indices) {
+            if (i >= size_) throw std::out_of_range("remove: particle index out of range");
+            drop[i] = 1;
+        }
+        std::vector<Size> keep;
+        keep.reserve(size_);
+        for (Size i = 0; i < size_; ++i)
+            if (!drop[i]) keep.push_back(i);
+        gather(keep);
+    }
+
+    /// Reorders particles: the new particle k is the old particle permutation[k].
+    void reorder(const std::vector<Size>& permutation) {
+        if (permutation.size() != size_)
+            throw std::invalid_argument("reorder: permutation has the wrong length");
+        gather(permutation);
+    }
+
+    /// Keeps the particles listed, in the order listed.
+    void gather(const std::vector<Size>& order) {
+        for (auto& [id, q] : quantities_) {
+            q.visit([&](auto& b) {
+                for (int k = 0; k < q.levels(); ++k) {
+                    auto& v = b.level(k);
+                    std::remove_reference_t<decltype(v)> out(order.size());
+                    for (std::size_t n = 0; n < order.size(); ++n) out[n] = v[order[n]];
+                    v = std::move(out);
+                }
+            });
+        }
+        size_ = Size(order.size());
+    }
+
+    /// Materials referenced by QuantityId::MATERIAL.
+    std::vector<std::shared_ptr<IMaterial>>& materials() { return materials_; }
+    const std::vector<std::shared_ptr<IMaterial>>& materials() const { return materials_; }
+
+private:
+    template <class T>
+    ArrayView<T> level(QuantityId id, int k) {
+        Quantity<Dim>& q = get(id);
+        if (k > int(q.order()))
+            throw std::logic_error("quantity " + std::to_string(int(id)) +
+                                   " has no time derivative of order " + std::to_string(k));
+        auto& v = q.template buffers<T>().level(k);
+        return ArrayView<T>(v.data(), v.size());
+    }
+    template <class T>
+    ArrayView<const T> level(QuantityId id, int k) const {
+        return const_cast<Storage*>(this)->template level<T>(id, k);
+    }
+
+    std::map<QuantityId, Quantity<Dim>> quantities_;
+    Size size_ = 0;
+    std::vector<std::shared_ptr<IMaterial>> materials_;
+};
+
+}  // namespace num::sph

@@ -1,0 +1,191 @@
+// Integrators, generic over every quantity and its order, and the run loop that picks the
+// adaptive step. Quantities of order SECOND (positions) are kicked and drifted; quantities of
+// order FIRST (density, temperature...) are advanced with their dt.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "sph/solver.hpp"
+
+namespace num::sph {
+
+namespace detail {
+/// Calls f(buffers, order) for every quantity of order FIRST or SECOND.
+template <int Dim, class F>
+void forEachEvolved(Storage<Dim>& s, F&& f) {
+    s.forEach([&](QuantityId, Quantity<Dim>& q) {
+        if (q.order() == OrderEnum::ZERO) return;
+        q.visit([&](auto& b) {
+            using T = typename std::decay_t<decltype(b.value)>::value_type;
+            if constexpr (!std::is_same_v<T, int>) f(b, q.order());
+        });
+    });
+}
+}  // namespace detail
+
+template <int Dim>
+class ITimeStepping {
+public:
+    virtual ~ITimeStepping() = default;
+    /// Advances the storage from t to t + dt. Derivatives at t must be current (see prime()).
+    virtual void step(Solver<Dim>& solver, Storage<Dim>& storage, Float t, Float dt) = 0;
+    virtual std::string name() const = 0;
+};
+
+/// Kick-drift-kick leapfrog (velocity Verlet); symplectic and second order for positions.
+/// First-order quantities get the same two half kicks: q += dt/2 (dq_n + dq_{n+1}).
+template <int Dim>
+class LeapfrogKDK final : public ITimeStepping<Dim> {
+public:
+    void step(Solver<Dim>& solver, Storage<Dim>& s, Float t, Float dt) override {
+        halfKick(s, dt);
+        detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            if (o == OrderEnum::SECOND)
+                for (std::size_t i = 0; i < b.value.size(); ++i) b.value[i] += b.dt[i] * dt;
+        });
+        solver.evaluate(s, t + dt);
+        halfKick(s, dt);
+    }
+    std::string name() const override { return "leapfrog"; }
+
+private:
+    static void halfKick(Storage<Dim>& s, Float dt) {
+        const Float half = 0.5 * dt;
+        detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            auto& target = o == OrderEnum::SECOND ? b.dt : b.value;
+            const auto& rate = o == OrderEnum::SECOND ? b.d2t : b.dt;
+            for (std::size_t i = 0; i < target.size(); ++i) target[i] += rate[i] * half;
+        });
+    }
+};
+
+/// Predictor-corrector: predict with the derivatives at t, evaluate, correct with the change
+/// of the highest derivative (v += dt/2 da, x += dt^2/6 da; first order q += dt/2 dq).
+template <int Dim>
+class PredictorCorrector final : public ITimeStepping<Dim> {
+public:
+    void step(Solver<Dim>& solver, Storage<Dim>& s, Float t, Float dt) override {
+        saved_.clear();
+        detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            saved_.emplace_back(o == OrderEnum::SECOND ? b.d2t : b.dt);
+            for (std::size_t i = 0; i < b.value.size(); ++i) {
+                if (o == OrderEnum::SECOND) {
+                    b.value[i] += b.dt[i] * dt + b.d2t[i] * (0.5 * dt * dt);
+                    b.dt[i] += b.d2t[i] * dt;
+                } else {
+                    b.value[i] += b.dt[i] * dt;
+                }
+            }
+        });
+        solver.evaluate(s, t + dt);
+        std::size_t k = 0;
+        detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            const auto& top = o == OrderEnum::SECOND ? b.d2t : b.dt;
+            const auto& old = std::get<std::decay_t<decltype(top)>>(saved_[k++]);
+            for (std::size_t i = 0; i < top.size(); ++i) {
+                const auto change = top[i] - old[i];
+                if (o == OrderEnum::SECOND) {
+                    b.dt[i] += change * (0.5 * dt);
+                    b.value[i] += change * (dt * dt / 6.0);
+                } else {
+                    b.value[i] += change * (0.5 * dt);
+                }
+            }
+        });
+    }
+    std::string name() const override { return "predictor_corrector"; }
+
+private:
+    std::vector<std::variant<std::vector<Float>, std::vector<Vector<Dim>>>> saved_;
+};
+
+/// Explicit Euler: x += v dt, v += a dt, q += dq dt with every derivative at t. First order;
+/// for tests and comparisons.
+template <int Dim>
+class ExplicitEuler final : public ITimeStepping<Dim> {
+public:
+    void step(Solver<Dim>& solver, Storage<Dim>& s, Float t, Float dt) override {
+        detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            for (std::size_t i = 0; i < b.value.size(); ++i) {
+                b.value[i] += b.dt[i] * dt;
+                if (o == OrderEnum::SECOND) b.dt[i] += b.d2t[i] * dt;
+            }
+        });
+        solver.evaluate(s, t + dt);
+    }
+    std::string name() const override { return "euler"; }
+};
+
+template <int Dim>
+std::unique_ptr<ITimeStepping<Dim>> makeIntegrator(const std::string& name) {
+    if (name == "leapfrog") return std::make_unique<LeapfrogKDK<Dim>>();
+    if (name == "predictor_corrector") return std::make_unique<PredictorCorrector<Dim>>();
+    if (name == "euler") return std::make_unique<ExplicitEuler<Dim>>();
+    throw SettingsError("unknown integrator '" + name +
+                        "' (expected leapfrog, predictor_corrector or euler)");
+}
+
+/// The run loop: adaptive step from the solver's limits, reordering by cell every few steps.
+template <int Dim>
+class Run {
+public:
+    Run(Storage<Dim>& storage, Solver<Dim>& solver, ITimeStepping<Dim>& integrator, Float t0 = 0)
+        : storage_(storage), solver_(solver), integrator_(integrator), time_(t0) {
+        reorderEvery_ = Size(solver.settings().template get<std::int64_t>("reorder_every"));
+    }
+
+    /// Evaluates the derivatives at the current time (before the first step, after a restart
+    /// that did not store them, or after particles were added or removed).
+    void prime() {
+        solver_.evaluate(storage_, time_);
+        primed_ = true;
+    }
+
+    /// One step, at most up to tEnd. Returns the step taken.
+    Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
+        if (!primed_) prime();
+        if (reorderEvery_ > 0 && steps_ > 0 && steps_ % reorderEvery_ == 0) {
+            storage_.reorder(std::vector<Size>(solver_.grid().sortedOrder().begin(),
+                                               solver_.grid().sortedOrder().end()));
+        }
+        const TimeStepLimits limits = solver_.timeStepLimits(storage_);
+        Float dt = limits.dt();
+        criterion_ = limits.criterion();
+        if (!(dt < std::numeric_limits<Float>::infinity()))
+            throw std::runtime_error(
+                "no time-step criterion applies (no forces, no sound speed): set dt_fixed or dt_max");
+        if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
+        integrator_.step(solver_, storage_, time_, dt);
+        time_ += dt;
+        ++steps_;
+        lastDt_ = dt;
+        return dt;
+    }
+
+    /// Steps until tEnd.
+    void advanceTo(Float tEnd) {
+        while (time_ < tEnd * (1 - 1e-14)) step(tEnd);
+    }
+
+    Float time() const { return time_; }
+    Size steps() const { return steps_; }
+    Float lastDt() const { return lastDt_; }
+    const std::string& limitingCriterion() const { return criterion_; }
+    void setTime(Float t, Size steps) { time_ = t, steps_ = steps; }
+    void markPrimed(bool p) { primed_ = p; }
+
+private:
+    Storage<Dim>& storage_;
+    Solver<Dim>& solver_;
+    ITimeStepping<Dim>& integrator_;
+    Float time_;
+    Size steps_ = 0;
+    Size reorderEvery_ = 0;
+    bool primed_ = false;
+    Float lastDt_ = 0;
+    std::string criterion_ = "none";
+};
+
+}  // namespace num::sph

@@ -1,0 +1,48 @@
+// Basic types of the SPH engine: precision, indices, quantity ids and derivative orders.
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "spatial/vec.hpp"
+
+namespace num::sph {
+
+/// Precision of quantities and pair arithmetic.
+using Float = double;
+/// Particle index.
+using Size = std::uint32_t;
+/// A view of contiguous memory (the seed's ArrayView).
+template <class T>
+using ArrayView = std::span<T>;
+template <int Dim>
+using Vector = Vec<Float, Dim>;
+
+/// Ids of the quantities the engine and its built-in terms know. Users add their own ids
+/// by casting any other integer (negative values are reserved for users):
+///     enum class AdditionalId { ENERGY_LAPLACIAN = -1 };
+///     storage.insert<Float>(QuantityId(AdditionalId::ENERGY_LAPLACIAN), OrderEnum::ZERO, 0.0);
+enum class QuantityId : int {
+    POSITION = 0,      ///< second order: value x, dt velocity, d2t acceleration
+    MASS,              ///< particle mass [kg]
+    DENSITY,           ///< mass density [kg/m^3]
+    PRESSURE,          ///< pressure [Pa]
+    ENERGY,            ///< specific internal energy [J/kg]
+    TEMPERATURE,       ///< temperature [degC or K, as the scene uses]
+    MATERIAL,          ///< index into the storage's material table (int)
+    KIND,              ///< ParticleKind as int: fluid, wall, body
+    SOUND_SPEED,       ///< local sound speed [m/s]
+    SHIFT,             ///< particle shifting displacement per unit time [m/s]
+    NORMAL,            ///< wall or body normal (boundary particles)
+    WALL_VELOCITY,     ///< prescribed velocity of boundary particles
+    NEIGHBOUR_COUNT,   ///< number of neighbours found in the last evaluation (int)
+    USER_FIRST = 1000  ///< first id free for user quantities (or use negative ids)
+};
+
+/// Highest time derivative a quantity carries.
+enum class OrderEnum : int { ZERO = 0, FIRST = 1, SECOND = 2 };
+
+/// What a particle is; stored as int in QuantityId::KIND.
+enum class ParticleKind : int { FLUID = 0, WALL = 1, BODY = 2 };
+
+}  // namespace num::sph

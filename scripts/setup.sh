@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian packages numerics needs, only those that are missing. Idempotent and quiet
+# when nothing is missing. Runs as root, or through sudo when available.
+set -euo pipefail
+
+packages=(
+  g++ cmake make pkg-config      # compiler and build
+  libgtest-dev                   # unit tests (GoogleTest)
+  libbenchmark-dev               # micro-benchmarks (Google Benchmark)
+  nlohmann-json3-dev             # scene files (JSON)
+  libcli11-dev                   # command lines of the apps
+  libmuparser-dev                # expressions in scene files
+  libpng-dev                     # pictures (PNG)
+  zlib1g-dev                     # compressed VTU output
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "Installing missing Debian packages: ${missing[*]}"
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "error: run as root or install sudo to install ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

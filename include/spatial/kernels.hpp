@@ -13,6 +13,7 @@
 // vector r_ij = x_i - x_j, and dW/dh.
 #pragma once
 
+#include <array>
 #include <numbers>
 
 #include "spatial/vec.hpp"
@@ -85,7 +86,7 @@ struct CubicSplineShape {
         return -T(0.75) * s * s;
     }
     /// Knots where the piecewise form changes (for continuity checks).
-    static constexpr double knots[] = {1.0};
+    static constexpr std::array<double, 1> knots{1.0};
 };
 
 /// Quintic B-spline M6 (Morris, Fox & Zhu 1997, eq. 12). Support 3h.
@@ -117,7 +118,7 @@ struct QuinticSplineShape {
         if (q < T(1)) v -= T(75) * pow4(T(1) - q);
         return v;
     }
-    static constexpr double knots[] = {1.0, 2.0};
+    static constexpr std::array<double, 2> knots{1.0, 2.0};
 };
 
 /// Wendland C2 (Wendland 1995; Dehnen & Aly 2012, table 1). Support 2h.
@@ -165,7 +166,7 @@ struct SpikyShape {
         const T s = T(2) - q;
         return -T(3) * s * s;
     }
-    static constexpr double knots[] = {};
+    static constexpr std::array<double, 0> knots{};
 };
 
 /// Wendland shapes differ between 1D and 2D/3D; this adapter picks the right one for Dim.
@@ -185,7 +186,7 @@ struct WendlandC2DimShape : WendlandC2Shape {
         if constexpr (Dim == 1) return -T(3.75) * q * s * s;
         else return -T(5) * q * s * s * s;
     }
-    static constexpr double knots[] = {};
+    static constexpr std::array<double, 0> knots{};
 };
 
 template <int Dim>
@@ -210,7 +211,7 @@ struct WendlandC4DimShape : WendlandC4Shape {
                    (-T(3) * (T(35) / T(12) * q * q + T(3) * q + T(1)) + s * (T(35) / T(6) * q + T(3)));
         }
     }
-    static constexpr double knots[] = {};
+    static constexpr std::array<double, 0> knots{};
 };
 
 template <int Dim, class T = double>

@@ -1,0 +1,77 @@
+"""PySPH application mirroring bench scene dam_break_2d: a 1 m x 2 m water column in a
+4 m x 4 m tank, h = 1.3 dx, Wendland C2 kernel (PySPH's WendlandQuintic), Tait EOS with
+c0 = 10 sqrt(2 g H), artificial viscosity alpha = 0.1, delta-SPH density diffusion.
+
+Unlike PySPH's own dam_break_2d example, h and the particle mass follow --dx. Prints one line
+'fluid_particles=N steps=S seconds=T' where T times the solver loop only (the one-time
+compilation of the generated code happens in setup and is excluded).
+
+Usage: /usr/bin/python3 pysph_dam_break_2d.py --dx 0.01 --steps 100 [--openmp]
+"""
+import argparse
+import sys
+import time
+
+import numpy as np
+from pysph.base.kernels import WendlandQuintic
+from pysph.sph.scheme import WCSPHScheme
+from pysph.solver.application import Application
+from pysph.tools.geometry import get_2d_block, get_2d_tank
+from pysph.base.utils import get_particle_array
+
+G = 9.81
+RHO0 = 1000.0
+H_COLUMN = 2.0
+C0 = 10.0 * np.sqrt(2.0 * G * H_COLUMN)
+HDX = 1.3
+
+
+class DamBreakBench(Application):
+    def __init__(self, dx, steps, **kw):
+        self.dx = dx
+        self.h = HDX * dx
+        self.steps = steps
+        super().__init__(**kw)
+
+    def create_scheme(self):
+        return WCSPHScheme(['fluid'], ['boundary'], dim=2, rho0=RHO0, c0=C0, h0=self.h,
+                           hdx=HDX, gy=-G, alpha=0.1, beta=0.0, gamma=7.0,
+                           delta_sph=True, delta=0.1)
+
+    def configure_scheme(self):
+        dt = 0.125 * self.h / C0
+        self.scheme.configure_solver(kernel=WendlandQuintic(dim=2), dt=dt,
+                                     tf=dt * self.steps, adaptive_timestep=False,
+                                     pfreq=10**9)
+
+    def create_particles(self):
+        dx = self.dx
+        xt, yt = get_2d_tank(dx=dx, length=4.0, height=4.0, base_center=[2.0, 0.0],
+                             num_layers=3)
+        xf, yf = get_2d_block(dx=dx, length=1.0, height=H_COLUMN,
+                              center=[0.5 + 0.5 * dx, 1.0 + 0.5 * dx])
+        m = RHO0 * dx * dx
+        fluid = get_particle_array(name='fluid', x=xf, y=yf, h=self.h, m=m, rho=RHO0)
+        boundary = get_particle_array(name='boundary', x=xt, y=yt, h=self.h, m=m, rho=RHO0)
+        self.scheme.setup_properties([fluid, boundary])
+        return [fluid, boundary]
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument('--dx', type=float, default=0.01)
+    p.add_argument('--steps', type=int, default=100)
+    p.add_argument('--openmp', action='store_true')
+    args, rest = p.parse_known_args()
+    app = DamBreakBench(args.dx, args.steps, fname='pysph_bench')
+    argv = ['--disable-output', '-q'] + (['--openmp'] if args.openmp else []) + rest
+    app.setup(argv)
+    n_fluid = app.particles[0].get_number_of_particles()
+    start = time.perf_counter()
+    app.solver.solve(show_progress=False)
+    seconds = time.perf_counter() - start
+    print(f"fluid_particles={n_fluid} steps={app.solver.count} seconds={seconds:.6f}")
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,188 @@
+// The weakly-compressible fluid model: options -> equation terms, geometry -> particles.
+//
+// A fluid case is two descriptions:
+//   FluidModel<Dim>     the physics: rest density, equation of state, sound speed, density by
+//                       continuity (+ delta-SPH) or summation, laminar and artificial
+//                       viscosity, particle shifting, body force (constant or of time), extra
+//                       terms (heat, user terms), materials;
+//   FluidGeometry<Dim>  (setup/fluid_geometry.hpp) the container box with its walls or
+//                       periodic axes, fluid regions and solid bodies, on one lattice dx.
+// and two functions:
+//   makeFluidEquations(model, geometry)          -> EquationHolder<Dim> for the Solver;
+//   makeFluidStorage(model, geometry, settings)  -> Storage<Dim> with every quantity set.
+//
+// Typical use (2D Poiseuille channel, periodic in x, walls at y = 0 and y = L):
+//     FluidModel<2> model;
+//     model.viscosity = 1e-6;  model.maxVelocity = 2.5e-5;
+//     model.bodyForce = constantForce(Vector<2>{{2e-4, 0}});
+//     FluidGeometry<2> geo;
+//     geo.domain.min = {{0, 0}};  geo.domain.max = {{4 * dx, L}};  geo.domain.periodic = {true,
+//     false}; geo.spacing = dx; geo.fluid.push_back({Shape<2>::box(geo.domain.min,
+//     geo.domain.max)}); Storage<2> storage = makeFluidStorage(model, geo, settings); Solver<2>
+//     solver(scheduler, settings, makeFluidEquations(model, geo), geo.domain); LeapfrogKDK<2>
+//     integrator;  Run<2> run(storage, solver, integrator);  run.advanceTo(t);
+//
+// Quantities in the storage (types.hpp and terms/fluid_quantities.hpp):
+//   POSITION (2nd order: x, v, a), MASS, DENSITY (1st order with continuity), PRESSURE,
+//   TEMPERATURE, MATERIAL (int, index into storage.materials()), KIND (int ParticleKind:
+//   FLUID, WALL, BODY), WALL_VELOCITY and NORMAL (boundary particles: prescribed surface
+//   velocity, unit normal pointing into the fluid), FluidId::BOUNDARY_VELOCITY,
+//   FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY.
+// Boundary particles (walls and bodies) never move; fluid particles never cross them.
+//
+// Order of the terms (each term's initialize and finalize run in this order):
+//   neighbour refresh (for the passes below) -> summation density -> equation of state ->
+//   wall condition (Adami et al. 2012) -> continuity (+ delta-SPH) -> pressure gradient ->
+//   laminar viscosity -> artificial viscosity -> body force -> particle shifting ->
+//   model.extraTerms (e.g. heat) -> boundary hold (zeroes boundary accelerations) ->
+//   containment (no particle inside a wall or body).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "sph/equation_term.hpp"
+#include "sph/kernel_choice.hpp"
+#include "sph/setup/fluid_geometry.hpp"
+#include "sph/setup/particle_generation.hpp"
+#include "sph/terms/equation_of_state.hpp"
+
+namespace num::sph {
+
+enum class DensityMode { CONTINUITY, SUMMATION };
+
+/// A body force (acceleration) of time.
+template <int Dim>
+using BodyForce = std::function<Vector<Dim>(Float t)>;
+
+template <int Dim>
+BodyForce<Dim> constantForce(const Vector<Dim>& g) {
+    return [g](Float) { return g; };
+}
+
+/// g (1 - cos(pi t / T)) / 2 for t < T, then g: a smooth ramp that avoids a start-up shock.
+template <int Dim>
+BodyForce<Dim> rampedForce(const Vector<Dim>& g, Float rampTime) {
+    return [g, rampTime](Float t) {
+        if (t >= rampTime) return g;
+        return g * (0.5 * (1 - std::cos(std::numbers::pi * std::max(t, 0.0) / rampTime)));
+    };
+}
+
+template <int Dim>
+struct FluidModel {
+    using Vec = Vector<Dim>;
+
+    // Equation of state.
+    Float restDensity = 1000;     ///< rho0 [kg/m^3]
+    Float soundSpeed = 0;         ///< c0 [m/s]; 0 derives c0 = soundSpeedFactor * maxVelocity
+    Float maxVelocity = 1;        ///< the largest expected flow speed U [m/s]
+    Float soundSpeedFactor = 10;  ///< c0 = 10 U keeps density variations near 1 %
+    EosType eos = EosType::TAIT;
+    Float taitExponent = 7;
+    Float backgroundPressure = 0;  ///< p_b [Pa], added to the equation of state
+
+    // Density.
+    DensityMode density = DensityMode::CONTINUITY;
+    Float deltaSph = 0.1;             ///< delta of the density diffusion (continuity only); 0: off
+    bool deltaSphHydrostatic = true;  ///< remove the hydrostatic part from the diffusion
+
+    // Viscosity (both may be on).
+    Float viscosity = 0;            ///< kinematic nu of the laminar term [m^2/s]; 0: off
+    Float artificialViscosity = 0;  ///< Monaghan's alpha; 0: off
+
+    // Particle regularity.
+    bool shifting = false;          ///< particle shifting (Lind et al. 2012)
+    Float shiftingCoefficient = 2;  ///< A in dr = -A h U dt grad C
+
+    // Forces.
+    BodyForce<Dim> bodyForce;  ///< acceleration of time (gravity, a ramp); empty: none
+
+    /// Keep fluid particles out of walls and bodies by reflection (a safety net).
+    bool containParticles = true;
+
+    /// Terms appended after the fluid terms, before boundaries are held and particles
+    /// contained: heat conduction, buoyancy, user terms.
+    EquationHolder<Dim> extraTerms;
+
+    /// The storage's material table (MATERIAL indexes it); empty: one "water" made from the
+    /// fields above.
+    std::vector<std::shared_ptr<IMaterial>> materials;
+
+    Float c0() const { return soundSpeed > 0 ? soundSpeed : soundSpeedFactor * maxVelocity; }
+
+    EquationOfState equationOfState() const {
+        return EquationOfState{eos, restDensity, c0(), taitExponent, backgroundPressure};
+    }
+    Vec bodyForceAt(Float t) const { return bodyForce ? bodyForce(t) : Vec{}; }
+};
+
+/// The fluid's equation terms, in the order described at the top of this file.
+template <int Dim>
+EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
+                                       const FluidGeometry<Dim>& geometry);
+
+/// The particles of a geometry with every quantity the fluid terms use. Masses are
+/// rho0 dx^Dim, densities rho0, pressures p(rho0), velocities from the fluid regions.
+template <int Dim>
+Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<Dim>& geometry,
+                              const RunSettings& settings) {
+    using Vec = Vector<Dim>;
+    const Float dx = geometry.spacing;
+    const int layers = geometry.wallLayers > 0
+                           ? geometry.wallLayers
+                           : wallLayersFor(RunKernel<Dim>(settings).supportRadius(), dx);
+    const auto particles = generateParticles(geometry, layers);
+    const std::size_t n = particles.size();
+    std::vector<Vec> x(n), v(n), wallVelocity(n), normal(n);
+    std::vector<Float> temperature(n);
+    std::vector<int> material(n), kind(n), slip(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& p = particles[i];
+        x[i] = p.x, v[i] = p.v, wallVelocity[i] = p.wallVelocity, normal[i] = p.normal;
+        temperature[i] = p.temperature, material[i] = p.material;
+        kind[i] = int(p.kind), slip[i] = int(p.slip);
+    }
+    const Float volume = std::pow(dx, Dim);
+    const OrderEnum densityOrder =
+        model.density == DensityMode::CONTINUITY ? OrderEnum::FIRST : OrderEnum::ZERO;
+
+    Storage<Dim> s;
+    s.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND, std::move(x));
+    std::copy(v.begin(), v.end(), s.template getDt<Vec>(QuantityId::POSITION).begin());
+    s.template insert<Float>(QuantityId::MASS, OrderEnum::ZERO, model.restDensity * volume);
+    s.template insert<Float>(QuantityId::DENSITY, densityOrder, model.restDensity);
+    s.template insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO,
+                             model.equationOfState().pressure(model.restDensity));
+    s.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::ZERO, std::move(temperature));
+    s.template insert<int>(QuantityId::MATERIAL, OrderEnum::ZERO, std::move(material));
+    s.template insert<int>(QuantityId::KIND, OrderEnum::ZERO, std::move(kind));
+    s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, wallVelocity);
+    s.template insert<Vec>(QuantityId::NORMAL, OrderEnum::ZERO, std::move(normal));
+    s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, std::move(wallVelocity));
+    s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, std::move(slip));
+    s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, model.viscosity);
+    if (model.materials.empty()) {
+        auto water = std::make_shared<Material>("water");
+        water->params()
+            .set("density", model.restDensity)
+            .set("sound_speed", model.c0())
+            .set("viscosity", model.viscosity)
+            .set("artificial_viscosity", model.artificialViscosity);
+        s.materials().push_back(water);
+    } else {
+        s.materials() = model.materials;
+    }
+    return s;
+}
+
+template <int Dim>
+EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model, const FluidGeometry<Dim>&) {
+    EquationHolder<Dim> eq = makeTerm<EquationOfStateTerm<Dim>>(model.equationOfState());
+    eq += model.extraTerms;
+    return eq;
+}
+
+}  // namespace num::sph

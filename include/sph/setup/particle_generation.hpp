@@ -1,0 +1,114 @@
+// Particles on a Cartesian lattice of spacing dx: the fluid, the wall layers outside the
+// container box and the particles of solid bodies all sit on one lattice of cell centres
+// (x = lo + (i + 1/2) dx), so spacing is uniform across fluid-wall interfaces.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sph/setup/fluid_geometry.hpp"
+
+namespace num::sph {
+
+/// Calls f(x) for every cell centre of the lattice covering [lo, hi) with spacing dx.
+template <int Dim, class F>
+void forEachLatticePoint(const Vector<Dim>& lo, const Vector<Dim>& hi, Float dx, F&& f) {
+    std::array<long, Dim> n{};
+    for (int k = 0; k < Dim; ++k) {
+        n[k] = std::lround((hi[k] - lo[k]) / dx);
+        if (n[k] <= 0) return;
+    }
+    std::array<long, Dim> i{};
+    for (;;) {
+        Vector<Dim> x;
+        for (int k = 0; k < Dim; ++k) x[k] = lo[k] + (Float(i[k]) + 0.5) * dx;
+        f(x);
+        int k = 0;
+        while (k < Dim && ++i[k] == n[k]) i[k++] = 0;
+        if (k == Dim) return;
+    }
+}
+
+/// One generated particle before it goes into a Storage.
+template <int Dim>
+struct GeneratedParticle {
+    Vector<Dim> x{}, v{};
+    ParticleKind kind = ParticleKind::FLUID;
+    Float temperature = 20;
+    int material = 0;
+    Vector<Dim> wallVelocity{}, normal{};
+    WallSlip slip = WallSlip::NO_SLIP;
+};
+
+/// Wall layers needed to cover a kernel support radius with spacing dx.
+inline int wallLayersFor(Float supportRadius, Float dx) {
+    return std::max(1, int(std::ceil(supportRadius / dx - 1e-9)));
+}
+
+/// Generates the fluid, wall and body particles of a geometry. Throws std::invalid_argument
+/// (naming the axis) when a periodic length is not a multiple of the spacing.
+template <int Dim>
+std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& g, int layers) {
+    using Vec = Vector<Dim>;
+    const Float dx = g.spacing;
+    if (!(dx > 0)) throw std::invalid_argument("particle spacing must be positive");
+    const Domain<Dim>& d = g.domain;
+    Vec lo = d.min, hi = d.max;
+    for (int k = 0; k < Dim; ++k) {
+        const Float cells = d.length(k) / dx;
+        if (d.periodic[k] && std::abs(cells - std::round(cells)) > 1e-6 * cells)
+            throw std::invalid_argument("periodic axis " + std::to_string(k) + ": length " +
+                                        std::to_string(d.length(k)) +
+                                        " is not a multiple of the spacing " + std::to_string(dx));
+        if (g.hasWall(k, 0)) lo[k] -= layers * dx;
+        if (g.hasWall(k, 1)) hi[k] += layers * dx;
+    }
+    std::vector<GeneratedParticle<Dim>> out;
+    forEachLatticePoint<Dim>(lo, hi, dx, [&](const Vec& x) {
+        GeneratedParticle<Dim> p;
+        p.x = x;
+        // Outside the box: a wall particle, described by the side it lies deepest beyond.
+        Float depth = 0;
+        int axis = -1, side = 0;
+        Vec normal{};
+        for (int k = 0; k < Dim; ++k) {
+            if (d.periodic[k]) continue;
+            const Float below = d.min[k] - x[k], above = x[k] - d.max[k];
+            if (below > 0) normal[k] = 1;
+            if (above > 0) normal[k] = -1;
+            if (below > depth) depth = below, axis = k, side = 0;
+            if (above > depth) depth = above, axis = k, side = 1;
+        }
+        if (axis >= 0) {
+            const WallSide<Dim>& w = g.walls[axis][side];
+            p.kind = ParticleKind::WALL;
+            p.temperature = w.temperature, p.material = w.material;
+            p.wallVelocity = w.velocity, p.slip = w.slip;
+            p.normal = normal / norm(normal);
+            out.push_back(p);
+            return;
+        }
+        for (const SolidBody<Dim>& b : g.bodies) {
+            const Float s = b.shape.signedDistance(x);
+            if (s >= 0) continue;
+            if (b.thickness > 0 && s < -b.thickness) return;
+            p.kind = ParticleKind::BODY;
+            p.temperature = b.temperature, p.material = b.material, p.slip = b.slip;
+            p.normal = b.shape.outwardNormal(x);
+            out.push_back(p);
+            return;
+        }
+        for (const FluidRegion<Dim>& r : g.fluid) {
+            if (!r.shape.contains(x)) continue;
+            p.temperature = r.temperature, p.material = r.material;
+            if (r.velocity) p.v = r.velocity(x);
+            out.push_back(p);
+            return;
+        }
+    });
+    return out;
+}
+
+}  // namespace num::sph

@@ -1,0 +1,84 @@
+// Equation of state of a weakly-compressible fluid, and the term that applies it.
+//
+// Tait (Monaghan 1994, eq. 3.5; Batchelor 1967):  p = B ((rho / rho0)^gamma - 1) + p_b,
+//                                                  B = rho0 c0^2 / gamma, gamma = 7.
+// Linear (Morris, Fox & Zhu 1997, eq. 10):        p = c0^2 (rho - rho0) + p_b.
+// p_b is an optional background pressure. Both have the sound speed c0 at rho = rho0.
+// The term also offers the Courant limit dt <= C h / (c0 + max|v|) (Monaghan 1992, sec. 10).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "sph/equation_term.hpp"
+#include "sph/terms/fluid_quantities.hpp"
+
+namespace num::sph {
+
+enum class EosType { TAIT, LINEAR };
+
+struct EquationOfState {
+    EosType type = EosType::TAIT;
+    Float rho0 = 1000;
+    Float c0 = 10;
+    Float gamma = 7;
+    Float backgroundPressure = 0;
+
+    Float stiffness() const { return rho0 * c0 * c0 / gamma; }
+
+    Float pressure(Float rho) const {
+        if (type == EosType::LINEAR) return c0 * c0 * (rho - rho0) + backgroundPressure;
+        return stiffness() * (std::pow(rho / rho0, gamma) - 1) + backgroundPressure;
+    }
+    /// The inverse, rho(p); Tait is clamped where (p - p_b) / B <= -1 has no density.
+    Float density(Float p) const {
+        const Float dp = p - backgroundPressure;
+        if (type == EosType::LINEAR) return rho0 + dp / (c0 * c0);
+        return rho0 * std::pow(std::max(1 + dp / stiffness(), 1e-3), 1 / gamma);
+    }
+};
+
+/// Sets the pressure of every fluid particle from its density (boundary particles get theirs
+/// from the wall condition).
+template <int Dim>
+class EquationOfStateTerm : public IEquationTerm<Dim> {
+  public:
+    explicit EquationOfStateTerm(EquationOfState eos) : eos_(eos) {}
+
+    const EquationOfState& eos() const { return eos_; }
+
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
+
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        auto p = s.template getValue<Float>(QuantityId::PRESSURE);
+        auto kind = s.template getValue<int>(QuantityId::KIND);
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i)
+                if (isFluid(kind[i])) p[i] = eos_.pressure(rho[i]);
+        });
+    }
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+
+    void create(Storage<Dim>& s, IMaterial&) const override {
+        s.template insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO, eos_.rho0);
+        s.template insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO, eos_.backgroundPressure);
+        s.template insert<int>(QuantityId::KIND, OrderEnum::ZERO, int(ParticleKind::FLUID));
+    }
+
+    void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,
+                       TimeStepLimits& limits) const override {
+        const auto v = s.template getDt<Vector<Dim>>(QuantityId::POSITION);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        Float v2 = 0;
+        for (Size i = 0; i < s.size(); ++i)
+            if (isFluid(kind[i])) v2 = std::max(v2, normSqr(v[i]));
+        const Float h = settings.get<double>("smoothing_length");
+        limits.offer("courant", settings.get<double>("cfl") * h / (eos_.c0 + std::sqrt(v2)));
+    }
+
+  private:
+    EquationOfState eos_;
+};
+
+}  // namespace num::sph

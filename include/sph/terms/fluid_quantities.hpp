@@ -1,0 +1,30 @@
+// Quantity ids and particle-kind helpers shared by the fluid terms and the wall conditions.
+//
+// The engine's ids (types.hpp) cover position, mass, density, pressure, temperature, material,
+// kind, wall velocity and normal. The fluid terms add the few below, in the range 100..199
+// (heat terms use 200..299; users keep >= USER_FIRST and negative ids).
+#pragma once
+
+#include "sph/storage.hpp"
+#include "sph/types.hpp"
+
+namespace num::sph {
+
+namespace FluidId {
+/// Velocity a boundary particle shows to the fluid in the viscous terms (Vector). For a no-slip
+/// boundary it is 2 v_wall - v~ (Adami, Hu & Adams 2012, eq. 22-23); fluid particles ignore it.
+inline constexpr QuantityId BOUNDARY_VELOCITY = QuantityId(100);
+/// Slip condition of a boundary particle (int): 0 no-slip, 1 free-slip.
+inline constexpr QuantityId WALL_SLIP = QuantityId(101);
+/// Kinematic viscosity nu of each particle [m^2/s] (Float); a term may change it per step
+/// (e.g. a temperature-dependent viscosity) before the pair loop.
+inline constexpr QuantityId KINEMATIC_VISCOSITY = QuantityId(102);
+/// Kernel sum C_i = sum_j V_j W_ij of the last evaluation (Float), from particle shifting.
+inline constexpr QuantityId KERNEL_SUM = QuantityId(103);
+}  // namespace FluidId
+
+enum class WallSlip : int { NO_SLIP = 0, FREE_SLIP = 1 };
+
+inline bool isFluid(int kind) { return kind == int(ParticleKind::FLUID); }
+
+}  // namespace num::sph

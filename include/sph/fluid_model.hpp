@@ -43,11 +43,23 @@
 #include <numbers>
 #include <vector>
 
+#include "sph/boundary/boundary_hold.hpp"
+#include "sph/boundary/generalized_wall.hpp"
+#include "sph/boundary/particle_containment.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/setup/fluid_geometry.hpp"
 #include "sph/setup/particle_generation.hpp"
+#include "sph/terms/artificial_viscosity.hpp"
+#include "sph/terms/body_force.hpp"
+#include "sph/terms/continuity_density.hpp"
+#include "sph/terms/delta_sph.hpp"
 #include "sph/terms/equation_of_state.hpp"
+#include "sph/terms/laminar_viscosity.hpp"
+#include "sph/terms/neighbour_gather.hpp"
+#include "sph/terms/particle_shifting.hpp"
+#include "sph/terms/pressure_gradient.hpp"
+#include "sph/terms/summation_density.hpp"
 
 namespace num::sph {
 
@@ -175,13 +187,42 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
     } else {
         s.materials() = model.materials;
     }
+    // Quantities of optional and extra terms (shifting, heat...), with their defaults.
+    makeFluidEquations(model, geometry).create(s, *s.materials().front());
     return s;
 }
 
 template <int Dim>
-EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model, const FluidGeometry<Dim>&) {
-    EquationHolder<Dim> eq = makeTerm<EquationOfStateTerm<Dim>>(model.equationOfState());
+EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
+                                       const FluidGeometry<Dim>& geometry) {
+    const EquationOfState eos = model.equationOfState();
+    bool boundaries = !geometry.bodies.empty();
+    for (int k = 0; k < Dim; ++k) boundaries |= geometry.hasWall(k, 0) || geometry.hasWall(k, 1);
+    const bool summation = model.density == DensityMode::SUMMATION;
+
+    EquationHolder<Dim> eq;
+    auto gather = std::make_shared<NeighbourGather<Dim>>(geometry.domain);
+    if (summation || boundaries) eq += makeTerm<NeighbourRefresh<Dim>>(gather);
+    if (summation) eq += makeTerm<SummationDensity<Dim>>(gather);
+    eq += makeTerm<EquationOfStateTerm<Dim>>(eos);
+    if (boundaries) eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce);
+    if (!summation) {
+        eq += makeTerm<ContinuityDensity<Dim>>();
+        if (model.deltaSph > 0)
+            eq += makeTerm<DeltaSph<Dim>>(
+                model.deltaSph, model.restDensity, eos.c0,
+                model.deltaSphHydrostatic ? model.bodyForce : BodyForce<Dim>{});
+    }
+    eq += makeTerm<PressureGradient<Dim>>();
+    if (model.viscosity > 0) eq += makeTerm<LaminarViscosity<Dim>>(model.viscosity);
+    if (model.artificialViscosity > 0)
+        eq += makeTerm<ArtificialViscosity<Dim>>(model.artificialViscosity, eos.c0);
+    if (model.bodyForce) eq += makeTerm<BodyForceTerm<Dim>>(model.bodyForce);
+    if (model.shifting)
+        eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, model.maxVelocity);
     eq += model.extraTerms;
+    eq += makeTerm<BoundaryHold<Dim>>();
+    if (model.containParticles && boundaries) eq += makeTerm<ParticleContainment<Dim>>(geometry);
     return eq;
 }
 

@@ -5,6 +5,7 @@
 // (heat terms use 200..299; users keep >= USER_FIRST and negative ids).
 #pragma once
 
+#include "sph/equation_term.hpp"
 #include "sph/storage.hpp"
 #include "sph/types.hpp"
 
@@ -21,6 +22,8 @@ inline constexpr QuantityId WALL_SLIP = QuantityId(101);
 inline constexpr QuantityId KINEMATIC_VISCOSITY = QuantityId(102);
 /// Kernel sum C_i = sum_j V_j W_ij of the last evaluation (Float), from particle shifting.
 inline constexpr QuantityId KERNEL_SUM = QuantityId(103);
+/// Gradient of the kernel sum, sum_j V_j grad_i W_ij (Vector), from particle shifting.
+inline constexpr QuantityId KERNEL_SUM_GRADIENT = QuantityId(104);
 }  // namespace FluidId
 
 enum class WallSlip : int { NO_SLIP = 0, FREE_SLIP = 1 };

@@ -1,0 +1,84 @@
+// Generalised wall boundary condition (Adami, Hu & Adams 2012, J. Comput. Phys. 231, 7057).
+//
+// Walls and bodies are layers of boundary particles w whose pressure and velocity are
+// extrapolated from the fluid particles f around them (Shepard interpolation), before the
+// pair loop:
+//   p_w = [ sum_f p_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf ] / sum_f W_wf   (eq. 27)
+//   v~_w = sum_f v_f W_wf / sum_f W_wf                                                 (eq. 22)
+//   no-slip:   v_w = 2 v_wall - v~_w   (eq. 23; used by the viscous terms only)
+//   free-slip: the viscous terms skip the boundary particle
+//   rho_w = rho(p_w) from the inverse equation of state                               (eq. 28)
+// g is the body force at time t; boundaries here are held fixed or slide tangentially at a
+// prescribed surface velocity v_wall (WALL_VELOCITY), so a_w = 0. The pressure gradient then
+// treats boundary particles as ordinary neighbours, which keeps fluid out of walls.
+#pragma once
+
+#include <functional>
+#include <memory>
+
+#include "sph/terms/equation_of_state.hpp"
+#include "sph/terms/fluid_quantities.hpp"
+#include "sph/terms/neighbour_gather.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+class GeneralizedWall : public IEquationTerm<Dim> {
+  public:
+    using Vec = Vector<Dim>;
+
+    GeneralizedWall(std::shared_ptr<const NeighbourGather<Dim>> gather, EquationOfState eos,
+                    std::function<Vec(Float)> bodyForce)
+        : gather_(std::move(gather)), eos_(eos), bodyForce_(std::move(bodyForce)) {}
+
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
+
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
+        const auto v = s.template getDt<Vec>(QuantityId::POSITION);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const auto wallVelocity = s.template getValue<Vec>(QuantityId::WALL_VELOCITY);
+        const auto slip = s.template getValue<int>(FluidId::WALL_SLIP);
+        auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        auto p = s.template getValue<Float>(QuantityId::PRESSURE);
+        auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
+        const Vec g = bodyForce_ ? bodyForce_(t) : Vec{};
+        boundary_ = particlesWhere(s, [](int k) { return !isFluid(k); });
+        gather_->forEach(scheduler, boundary_, [&](Size w, auto&& visit) {
+            Float sumW = 0, sumP = 0;
+            Vec sumRhoR{}, sumV{};
+            visit([&](Size f, const Vec& dx, Float, Float W) {
+                if (!isFluid(kind[f])) return;
+                sumW += W;
+                sumP += p[f] * W;
+                sumRhoR += dx * (rho[f] * W);
+                sumV += v[f] * W;
+            });
+            // Pressure and density are written for boundary particles only, which the gather
+            // never reads, so the pass is free of races.
+            if (sumW > 0) {
+                p[w] = (sumP + dot(g, sumRhoR)) / sumW;
+                vb[w] = slip[w] == int(WallSlip::NO_SLIP) ? wallVelocity[w] * 2.0 - sumV / sumW
+                                                          : wallVelocity[w];
+            } else {
+                p[w] = eos_.backgroundPressure;
+                vb[w] = wallVelocity[w];
+            }
+            rho[w] = eos_.density(p[w]);
+        });
+    }
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+
+    void create(Storage<Dim>& s, IMaterial&) const override {
+        s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vec{});
+        s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
+        s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, int(WallSlip::NO_SLIP));
+    }
+
+  private:
+    std::shared_ptr<const NeighbourGather<Dim>> gather_;
+    EquationOfState eos_;
+    std::function<Vec(Float)> bodyForce_;
+    std::vector<Size> boundary_;
+};
+
+}  // namespace num::sph

@@ -1,0 +1,58 @@
+// A safety net that guarantees no fluid particle is ever inside a wall or a solid body. The
+// wall condition's pressure normally keeps fluid away; if a particle still ends up beyond a
+// wall surface (the container box side) or inside a body, it is reflected back across the
+// surface and the velocity component into the solid is removed. Runs in finalize(), i.e.
+// after the drift of the leapfrog step, before the closing half kick.
+#pragma once
+
+#include <vector>
+
+#include "sph/setup/fluid_geometry.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+class ParticleContainment : public IEquationTerm<Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    explicit ParticleContainment(const FluidGeometry<Dim>& geometry) : geometry_(geometry) {}
+
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
+    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        auto x = s.template getValue<Vec>(QuantityId::POSITION);
+        auto v = s.template getDt<Vec>(QuantityId::POSITION);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const FluidGeometry<Dim>& g = geometry_;
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) {
+                if (!isFluid(kind[i])) continue;
+                for (int k = 0; k < Dim; ++k) {
+                    const Float lo = g.domain.min[k], hi = g.domain.max[k];
+                    if (g.hasWall(k, 0) && x[i][k] < lo) {
+                        x[i][k] = std::min(2 * lo - x[i][k], hi);
+                        v[i][k] = std::max(v[i][k], 0.0);
+                    }
+                    if (g.hasWall(k, 1) && x[i][k] > hi) {
+                        x[i][k] = std::max(2 * hi - x[i][k], lo);
+                        v[i][k] = std::min(v[i][k], 0.0);
+                    }
+                }
+                for (const SolidBody<Dim>& body : g.bodies) {
+                    const Float d = body.shape.signedDistance(x[i]);
+                    if (d >= 0) continue;
+                    const Vec n = body.shape.outwardNormal(x[i]);
+                    x[i] -= n * (2 * d);
+                    const Float vn = dot(v[i], n);
+                    if (vn < 0) v[i] -= n * vn;
+                }
+            }
+        });
+    }
+    void create(Storage<Dim>&, IMaterial&) const override {}
+
+  private:
+    FluidGeometry<Dim> geometry_;
+};
+
+}  // namespace num::sph

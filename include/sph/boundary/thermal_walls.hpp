@@ -1,0 +1,132 @@
+// Thermal walls and bodies: fixed temperature, adiabatic, fixed heat flux, conducting.
+//
+// Boundary particles (QuantityId::KIND = WALL or BODY) take part in heat conduction like any
+// particle (terms/heat_conduction.hpp); their heat_ids::THERMAL_CONDITION says what happens:
+//   FIXED_TEMPERATURE  Dirichlet: T_b is held, dT_b/dt := 0 after the pair sums; the heat the
+//                      conduction operator moved into them is counted as delivered to the rest.
+//   ADIABATIC          Neumann, zero flux: the conduction pair sum skips every pair with them.
+//   HEAT_FLUX          prescribed flux q'' [W/m^2]: the particles conduct and receive
+//                      dT/dt += s / c with s = heat_ids::HEAT_SOURCE [W/kg]; setHeatFlux gives
+//                      a layer of them the source s_b = q'' A_b / m_b with sum_b A_b = A, so the
+//                      power q'' A enters the domain exactly and reaches the fluid by conduction
+//                      (a heater plate; in steady state the flux into the fluid is q'').
+//   CONDUCTING         a solid (or fluid) with its own material: conjugate heat transfer.
+// HEAT_SOURCE also works as a plain volumetric source on any particle (c dT/dt = s), the
+// reference implementation of a heat source.
+//
+// Energy books (trapezoidal in time, as the leapfrog and predictor-corrector integrators
+// advance first-order quantities): heatFromFixed() is the heat fixed-temperature particles gave
+// to the others, heatFromSources() the heat the sources added; the total sum m c T of the
+// evolving particles changes by exactly their sum (to round-off).
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "sph/boundary/thermal_condition.hpp"
+#include "sph/equation_term.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+class ThermalBoundary : public IEquationTerm<Dim> {
+  public:
+    /// wallDefault / bodyDefault: the condition given to WALL / BODY particles when this term
+    /// creates heat_ids::THERMAL_CONDITION (an existing quantity is kept as it is).
+    explicit ThermalBoundary(ThermalCondition wallDefault = ThermalCondition::ADIABATIC,
+                             ThermalCondition bodyDefault = ThermalCondition::FIXED_TEMPERATURE)
+        : wallDefault_(wallDefault), bodyDefault_(bodyDefault) {}
+
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
+
+    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
+        const std::vector<ThermalMaterial> table = thermalMaterials(s);
+        const auto cond = s.template getValue<int>(heat_ids::THERMAL_CONDITION);
+        const auto src = s.template getValue<Float>(heat_ids::HEAT_SOURCE);
+        const auto m = s.template getValue<Float>(QuantityId::MASS);
+        const auto dT = s.template getDt<Float>(QuantityId::TEMPERATURE);
+        const std::vector<int> zeros(s.has(QuantityId::MATERIAL) ? 0 : s.size(), 0);
+        const ArrayView<const int> mat = s.has(QuantityId::MATERIAL)
+                                             ? s.template getValue<int>(QuantityId::MATERIAL)
+                                             : ArrayView<const int>(zeros);
+        // Powers are summed in particle order on one thread (bitwise reproducible); the
+        // per-particle updates are independent.
+        Float fixedPower = 0, sourcePower = 0;
+        for (Size i = 0; i < s.size(); ++i) {
+            const Float c = table[mat[i]].heatCapacity;
+            if (cond[i] == int(ThermalCondition::FIXED_TEMPERATURE))
+                fixedPower -= m[i] * c * dT[i];
+            else
+                sourcePower += m[i] * src[i];
+        }
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) {
+                if (cond[i] == int(ThermalCondition::FIXED_TEMPERATURE))
+                    dT[i] = 0;
+                else if (src[i] != 0)
+                    dT[i] += src[i] / table[mat[i]].heatCapacity;
+            }
+        });
+        book(t, fixedPower, sourcePower);
+    }
+
+    void create(Storage<Dim>& storage, IMaterial&) const override {
+        storage.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST, 0.0);
+        storage.template insert<Float>(heat_ids::HEAT_SOURCE, OrderEnum::ZERO, 0.0);
+        if (storage.has(heat_ids::THERMAL_CONDITION)) return;
+        std::vector<int> c(storage.size(), int(ThermalCondition::CONDUCTING));
+        if (storage.has(QuantityId::KIND)) {
+            const auto kind = storage.template getValue<int>(QuantityId::KIND);
+            for (Size i = 0; i < storage.size(); ++i) {
+                if (kind[i] == int(ParticleKind::WALL)) c[i] = int(wallDefault_);
+                if (kind[i] == int(ParticleKind::BODY)) c[i] = int(bodyDefault_);
+            }
+        }
+        storage.template insert<int>(heat_ids::THERMAL_CONDITION, OrderEnum::ZERO, std::move(c));
+    }
+
+    /// Makes the selected particles a heater delivering `flux` [W/m^2] through `area` [m^2]
+    /// (in 2D a length, per unit depth): each gets the source q'' A m_b / (M sum) so that the
+    /// total power is flux * area whatever the particle masses.
+    static void setHeatFlux(Storage<Dim>& s, Float flux, Float area,
+                            const std::function<bool(Size)>& select) {
+        setThermalCondition(s, ThermalCondition::HEAT_FLUX, select);
+        s.template insert<Float>(heat_ids::HEAT_SOURCE, OrderEnum::ZERO, 0.0);
+        const auto m = s.template getValue<Float>(QuantityId::MASS);
+        const auto src = s.template getValue<Float>(heat_ids::HEAT_SOURCE);
+        Float mass = 0;
+        for (Size i = 0; i < s.size(); ++i)
+            if (select(i)) mass += m[i];
+        if (!(mass > 0)) throw std::invalid_argument("setHeatFlux: no particle selected");
+        for (Size i = 0; i < s.size(); ++i)
+            if (select(i)) src[i] = flux * area / mass;
+    }
+
+    /// Heat given by fixed-temperature particles to the others since the first evaluation [J].
+    Float heatFromFixed() const { return fromFixed_; }
+    /// Heat added by heat sources (and flux walls) since the first evaluation [J].
+    Float heatFromSources() const { return fromSources_; }
+    /// Power of the fixed-temperature particles and of the sources at the last evaluation [W].
+    Float fixedPower() const { return lastFixed_; }
+    Float sourcePower() const { return lastSource_; }
+
+  private:
+    void book(Float t, Float fixedPower, Float sourcePower) {
+        if (started_ && t > lastT_) {
+            fromFixed_ += 0.5 * (lastFixed_ + fixedPower) * (t - lastT_);
+            fromSources_ += 0.5 * (lastSource_ + sourcePower) * (t - lastT_);
+        }
+        started_ = true;
+        lastT_ = t;
+        lastFixed_ = fixedPower;
+        lastSource_ = sourcePower;
+    }
+
+    ThermalCondition wallDefault_, bodyDefault_;
+    bool started_ = false;
+    Float lastT_ = 0, lastFixed_ = 0, lastSource_ = 0;
+    Float fromFixed_ = 0, fromSources_ = 0;
+};
+
+}  // namespace num::sph

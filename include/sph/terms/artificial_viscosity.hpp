@@ -1,0 +1,86 @@
+// Monaghan's artificial viscosity (Monaghan 1992, eq. 4.1-4.2), linear part:
+//   dv_i/dt = - sum_j m_j Pi_ij grad_i W_ij,
+//   Pi_ij = -alpha c0 mu_ij / rho_ij  if v_ij . r_ij < 0, else 0,
+//   mu_ij = h v_ij . r_ij / (r_ij^2 + eta^2),  rho_ij = (rho_i + rho_j) / 2,  eta^2 = 0.01 h^2.
+// Acts only between approaching particles; antisymmetric, so momentum is conserved. For a
+// viscous flow it corresponds to nu = alpha h c0 / (2 (Dim + 2)) (Monaghan 2005, sec. 5.4).
+// Boundary particles show the wall condition's velocity.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "sph/terms/fluid_quantities.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPart<Dim>, Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    ArtificialViscosityPart(std::shared_ptr<const std::vector<Vec>> velocity, Float alpha, Float c0,
+                            Float h)
+        : velocity_(std::move(velocity)), alphaC0h_(alpha * c0 * h), eta2_(0.01 * h * h) {}
+
+    void create(Accumulated<Dim>& r) override {
+        r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);
+    }
+    void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
+        m_ = s.template getValue<Float>(QuantityId::MASS);
+        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        kind_ = s.template getValue<int>(QuantityId::KIND);
+        a_ = r.template getValue<Vec>(QuantityId::POSITION);
+    }
+    template <bool Symmetric>
+    void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
+        const bool fi = isFluid(kind_[i]), fj = isFluid(kind_[j]);
+        if (!(fi || (Symmetric && fj))) return;
+        const std::vector<Vec>& v = *velocity_;
+        const Float vr = dot(v[i] - v[j], pair.dx);
+        if (vr >= 0) return;
+        // Pi_ij = -alpha c0 h vr / ((r^2 + eta^2) rho_ij)
+        const Float pi = -alphaC0h_ * vr / ((pair.r * pair.r + eta2_) * 0.5 * (rho_[i] + rho_[j]));
+        const Vec f = grad * pi;
+        if (fi) a_[i] -= f * m_[j];
+        if constexpr (Symmetric)
+            if (fj) a_[j] += f * m_[i];
+    }
+
+  private:
+    std::shared_ptr<const std::vector<Vec>> velocity_;
+    Float alphaC0h_, eta2_;
+    ArrayView<const Float> m_, rho_;
+    ArrayView<const int> kind_;
+    ArrayView<Vec> a_;
+};
+
+template <int Dim>
+class ArtificialViscosity : public IEquationTerm<Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    ArtificialViscosity(Float alpha, Float c0) : alpha_(alpha), c0_(c0) {}
+
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
+        d.template require<ArtificialViscosityPart<Dim>>(velocity_, alpha_, c0_,
+                                                         settings.get<double>("smoothing_length"));
+    }
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        const auto v = s.template getDt<Vec>(QuantityId::POSITION);
+        const auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        velocity_->resize(s.size());
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) (*velocity_)[i] = isFluid(kind[i]) ? v[i] : vb[i];
+        });
+    }
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void create(Storage<Dim>& s, IMaterial&) const override {
+        s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
+    }
+
+  private:
+    Float alpha_, c0_;
+    std::shared_ptr<std::vector<Vec>> velocity_ = std::make_shared<std::vector<Vec>>();
+};
+
+}  // namespace num::sph

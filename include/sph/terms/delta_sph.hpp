@@ -1,0 +1,91 @@
+// Density diffusion of delta-SPH (Molteni & Colagrossi 2009, eq. 10), added to the continuity
+// equation to damp spurious pressure oscillations:
+//   drho_i/dt += 2 delta h c0 sum_j V_j psi_ij (r_ij . grad_i W_ij) / (r_ij^2 + eta^2),
+//   psi_ij = rho_i - rho_j - rho0 (g . r_ij) / c0^2   (hydrostatic part removed),
+// r_ij = x_i - x_j, V_j = m_j / rho_j, eta^2 = 0.01 h^2, delta ~ 0.1. The last term of psi
+// subtracts the density difference of hydrostatic equilibrium under the body force g, as in
+// Fourtakas et al. (2019, Comput. Fluids 190, eq. 12) in its linear form, so a tank at rest
+// is not diffused away from hydrostatics. Applied between fluid particles only.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "sph/terms/fluid_quantities.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+struct DeltaSphData {
+    std::vector<Float> volume;
+    Vector<Dim> gravityTerm{};  // rho0 g / c0^2 at the current time
+};
+
+template <int Dim>
+class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    DeltaSphPart(std::shared_ptr<const DeltaSphData<Dim>> data, Float delta, Float c0, Float h)
+        : data_(std::move(data)), coefficient_(2 * delta * h * c0), eta2_(0.01 * h * h) {}
+
+    void create(Accumulated<Dim>& r) override {
+        r.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST);
+    }
+    void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
+        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        kind_ = s.template getValue<int>(QuantityId::KIND);
+        drho_ = r.template getValue<Float>(QuantityId::DENSITY);
+    }
+    template <bool Symmetric>
+    void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
+        if (!isFluid(kind_[i]) || !isFluid(kind_[j])) return;
+        const DeltaSphData<Dim>& d = *data_;
+        const Float psi = rho_[i] - rho_[j] - dot(d.gravityTerm, pair.dx);
+        const Float f = coefficient_ * psi * dot(pair.dx, grad) / (pair.r * pair.r + eta2_);
+        drho_[i] += f * d.volume[j];
+        if constexpr (Symmetric) drho_[j] -= f * d.volume[i];
+    }
+
+  private:
+    std::shared_ptr<const DeltaSphData<Dim>> data_;
+    Float coefficient_, eta2_;
+    ArrayView<const Float> rho_;
+    ArrayView<const int> kind_;
+    ArrayView<Float> drho_;
+};
+
+template <int Dim>
+class DeltaSph : public IEquationTerm<Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    /// bodyForce may be empty (no hydrostatic correction).
+    DeltaSph(Float delta, Float rho0, Float c0, std::function<Vec(Float)> bodyForce)
+        : delta_(delta), rho0_(rho0), c0_(c0), bodyForce_(std::move(bodyForce)) {}
+
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
+        d.template require<DeltaSphPart<Dim>>(data_, delta_, c0_,
+                                              settings.get<double>("smoothing_length"));
+    }
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
+        const auto m = s.template getValue<Float>(QuantityId::MASS);
+        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        data_->volume.resize(s.size());
+        data_->gravityTerm = bodyForce_ ? bodyForce_(t) * (rho0_ / (c0_ * c0_)) : Vec{};
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) data_->volume[i] = m[i] / rho[i];
+        });
+    }
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void create(Storage<Dim>& s, IMaterial& material) const override {
+        s.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST,
+                                 material.params().template get<double>("density"));
+    }
+
+  private:
+    Float delta_, rho0_, c0_;
+    std::function<Vec(Float)> bodyForce_;
+    std::shared_ptr<DeltaSphData<Dim>> data_ = std::make_shared<DeltaSphData<Dim>>();
+};
+
+}  // namespace num::sph

@@ -1,0 +1,136 @@
+// Heat conduction between particles, also across materials (conjugate heat transfer).
+//
+// Brookshaw (1985) Laplacian with the conductivity of a pair as the harmonic mean
+// (Cleary & Monaghan 1999, J. Comput. Phys. 148, eq. 10; Cleary 1998):
+//
+//   c_a dT_a/dt = sum_b  4 m_b k_a k_b / (rho_a rho_b (k_a + k_b))
+//                        (T_a - T_b) (r_ab . grad_a W_ab) / (r_ab^2 + eta^2),   eta^2 = 0.01 h^2
+//
+// r_ab . grad_a W_ab <= 0, so a particle hotter than its neighbours cools: heat flows from hot
+// to cold (the seed's "du += -alpha * delta" has the opposite sign and is anti-diffusion).
+// The pair term is antisymmetric: what a gains, m_a c_a dT_a, b loses, so the total heat
+// sum m c T is conserved to round-off when no boundary adds or removes heat. The harmonic
+// mean gives the flux through an interface between two materials its correct value
+// (continuous temperature and flux), so two materials in contact exchange heat correctly.
+//
+// Temperature is QuantityId::TEMPERATURE (first order). Pairs with an ADIABATIC particle
+// exchange nothing (boundary/thermal_condition.hpp). Time-step limit (explicit diffusion):
+// dt <= diffusion_factor h^2 / alpha_max with alpha = k / (rho c).
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include "sph/boundary/thermal_condition.hpp"
+#include "sph/equation_term.hpp"
+
+namespace num::sph {
+
+/// The pair sum of the conduction operator, accumulated directly into dT/dt.
+template <int Dim>
+class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivative<Dim>, Dim> {
+  public:
+    explicit HeatConductionDerivative(Float h) : eta2_(0.01 * h * h) {}
+
+    void create(Accumulated<Dim>& results) override {
+        results.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST);
+    }
+
+    void initialize(const Storage<Dim>& s, Accumulated<Dim>& results) override {
+        const std::vector<ThermalMaterial> table = thermalMaterials(s);
+        k_.resize(table.size());
+        invC_.resize(table.size());
+        for (std::size_t m = 0; m < table.size(); ++m) {
+            k_[m] = table[m].conductivity;
+            invC_[m] = 1.0 / table[m].heatCapacity;
+        }
+        zeros_.assign(s.size(), 0);
+        if (s.has(QuantityId::MATERIAL)) {
+            mat_ = s.template getValue<int>(QuantityId::MATERIAL);
+            for (int m : mat_)
+                if (m < 0 || std::size_t(m) >= table.size())
+                    throw std::out_of_range("heat conduction: material index out of the table");
+        } else {
+            mat_ = zeros_;
+        }
+        if (s.has(heat_ids::THERMAL_CONDITION)) {
+            cond_ = s.template getValue<int>(heat_ids::THERMAL_CONDITION);
+        } else {
+            cond_ = zeros_;
+        }
+        T_ = s.template getValue<Float>(QuantityId::TEMPERATURE);
+        m_ = s.template getValue<Float>(QuantityId::MASS);
+        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        dT_ = results.template getValue<Float>(QuantityId::TEMPERATURE);
+    }
+
+    template <bool Symmetric>
+    void eval(Size a, Size b, const Vector<Dim>& grad, const PairGeometry<Dim>& pair) {
+        if (!conductsHeat(cond_[a], cond_[b])) return;
+        const Float ka = k_[mat_[a]], kb = k_[mat_[b]];
+        const Float ksum = ka + kb;
+        if (!(ksum > 0)) return;
+        // 4 k_a k_b / (k_a + k_b) = 2 x harmonic mean; pair.dx = r_ab = x_a - x_b.
+        const Float f = 4.0 * ka * kb / (ksum * rho_[a] * rho_[b]) * (T_[a] - T_[b]) *
+                        dot(pair.dx, grad) / (pair.r * pair.r + eta2_);
+        dT_[a] += m_[b] * f * invC_[mat_[a]];
+        if constexpr (Symmetric) dT_[b] -= m_[a] * f * invC_[mat_[b]];
+    }
+
+  private:
+    Float eta2_;
+    std::vector<Float> k_, invC_;
+    std::vector<int> zeros_;
+    ArrayView<const int> mat_, cond_;
+    ArrayView<const Float> T_, m_, rho_;
+    ArrayView<Float> dT_;
+};
+
+/// The conduction term: requires the pair sum, creates temperature, offers the diffusion limit.
+template <int Dim>
+class HeatConduction : public IEquationTerm<Dim> {
+  public:
+    void setDerivatives(DerivativeHolder<Dim>& derivatives, const RunSettings& settings) override {
+        derivatives.template require<HeatConductionDerivative<Dim>>(
+            settings.get<double>("smoothing_length"));
+    }
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+
+    /// Temperature (first order, starting at the material's reference temperature where it
+    /// does not exist yet), density and material index.
+    void create(Storage<Dim>& storage, IMaterial& material) const override {
+        const ParameterSet& p = material.params();
+        storage.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST,
+                                       p.get<double>("reference_temperature"));
+        storage.template insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO,
+                                       p.get<double>("density"));
+        storage.template insert<int>(QuantityId::MATERIAL, OrderEnum::ZERO, 0);
+    }
+
+    /// dt <= diffusion_factor h^2 / max alpha, alpha = k / (rho c) of particles that conduct.
+    void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,
+                       TimeStepLimits& limits) const override {
+        const std::vector<ThermalMaterial> table = thermalMaterials(s);
+        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        const std::vector<int> zeros(s.size(), 0);
+        const ArrayView<const int> mat = s.has(QuantityId::MATERIAL)
+                                             ? s.template getValue<int>(QuantityId::MATERIAL)
+                                             : ArrayView<const int>(zeros);
+        const ArrayView<const int> cond =
+            s.has(heat_ids::THERMAL_CONDITION)
+                ? s.template getValue<int>(heat_ids::THERMAL_CONDITION)
+                : ArrayView<const int>(zeros);
+        Float alphaMax = 0;
+        for (Size i = 0; i < s.size(); ++i) {
+            if (cond[i] == int(ThermalCondition::ADIABATIC)) continue;
+            const ThermalMaterial& m = table[mat[i]];
+            alphaMax = std::max(alphaMax, m.conductivity / (rho[i] * m.heatCapacity));
+        }
+        const Float h = settings.get<double>("smoothing_length");
+        if (alphaMax > 0)
+            limits.offer("diffusion", settings.get<double>("diffusion_factor") * h * h / alphaMax);
+    }
+};
+
+}  // namespace num::sph

@@ -1,0 +1,111 @@
+// Laminar viscosity (Morris, Fox & Zhu 1997, eq. 8), with the smooth kernel's derivative:
+//   dv_i/dt = sum_j m_j (mu_i + mu_j) / (rho_i rho_j) (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) v_ij,
+//   mu = rho nu, r_ij = x_i - x_j, v_ij = v_i - v_j, eta^2 = 0.01 h^2.
+// Since r_ij . grad_i W_ij <= 0 the term pulls v_i towards v_j; the pair terms are
+// antisymmetric, so momentum is conserved. A boundary particle shows the velocity of the wall
+// condition (2 v_wall - v~ for no-slip, Adami et al. 2012, eq. 23); free-slip boundary
+// particles are skipped. Time-step limit: dt <= f h^2 / nu (Morris et al. 1997, eq. 13).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "sph/terms/fluid_quantities.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+struct ViscousData {
+    std::vector<Vector<Dim>> velocity;  // fluid: v; boundary: the wall condition's velocity
+    std::vector<Float> mu;              // dynamic viscosity rho nu
+    std::vector<char> active;           // 0: free-slip boundary particle
+};
+
+template <int Dim>
+class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>, Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    LaminarViscosityPart(std::shared_ptr<const ViscousData<Dim>> data, Float h)
+        : data_(std::move(data)), eta2_(0.01 * h * h) {}
+
+    void create(Accumulated<Dim>& r) override {
+        r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);
+    }
+    void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
+        m_ = s.template getValue<Float>(QuantityId::MASS);
+        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        kind_ = s.template getValue<int>(QuantityId::KIND);
+        a_ = r.template getValue<Vec>(QuantityId::POSITION);
+    }
+    template <bool Symmetric>
+    void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
+        const bool fi = isFluid(kind_[i]), fj = isFluid(kind_[j]);
+        const ViscousData<Dim>& d = *data_;
+        if (!(fi || (Symmetric && fj)) || !d.active[i] || !d.active[j]) return;
+        const Float factor = (d.mu[i] + d.mu[j]) / (rho_[i] * rho_[j]) * dot(pair.dx, grad) /
+                             (pair.r * pair.r + eta2_);
+        const Vec f = (d.velocity[i] - d.velocity[j]) * factor;
+        if (fi) a_[i] += f * m_[j];
+        if constexpr (Symmetric)
+            if (fj) a_[j] -= f * m_[i];
+    }
+
+  private:
+    std::shared_ptr<const ViscousData<Dim>> data_;
+    Float eta2_;
+    ArrayView<const Float> m_, rho_;
+    ArrayView<const int> kind_;
+    ArrayView<Vec> a_;
+};
+
+template <int Dim>
+class LaminarViscosity : public IEquationTerm<Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    /// nu: the kinematic viscosity every particle starts with (KINEMATIC_VISCOSITY).
+    explicit LaminarViscosity(Float nu) : nu_(nu) {}
+
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
+        d.template require<LaminarViscosityPart<Dim>>(data_,
+                                                      settings.get<double>("smoothing_length"));
+    }
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        const auto v = s.template getDt<Vec>(QuantityId::POSITION);
+        const auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
+        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        const auto nu = s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const auto slip = s.template getValue<int>(FluidId::WALL_SLIP);
+        ViscousData<Dim>& d = *data_;
+        d.velocity.resize(s.size()), d.mu.resize(s.size()), d.active.resize(s.size());
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) {
+                const bool fluid = isFluid(kind[i]);
+                d.velocity[i] = fluid ? v[i] : vb[i];
+                d.mu[i] = rho[i] * nu[i];
+                d.active[i] = fluid || slip[i] == int(WallSlip::NO_SLIP);
+            }
+        });
+    }
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void create(Storage<Dim>& s, IMaterial&) const override {
+        s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, nu_);
+        s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
+        s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, int(WallSlip::NO_SLIP));
+    }
+    void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,
+                       TimeStepLimits& limits) const override {
+        Float numax = 0;
+        for (Float nu : s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY))
+            numax = std::max(numax, nu);
+        const Float h = settings.get<double>("smoothing_length");
+        if (numax > 0)
+            limits.offer("viscous", settings.get<double>("viscous_factor") * h * h / numax);
+    }
+
+  private:
+    Float nu_;
+    std::shared_ptr<ViscousData<Dim>> data_ = std::make_shared<ViscousData<Dim>>();
+};
+
+}  // namespace num::sph

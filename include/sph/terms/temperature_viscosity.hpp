@@ -1,0 +1,89 @@
+// Temperature-dependent viscosity: sets each fluid particle's kinematic viscosity from its
+// temperature before the pair loop, for the viscous terms that read
+// FluidId::KINEMATIC_VISCOSITY.
+//
+//   Exponential (Reynolds 1886):  nu(T) = nu0 exp(-b (T - T0))
+//       nu0 = the material's "viscosity", T0 its "reference_temperature", b [1/K] given.
+//   Water (Vogel 1921 fit, T in degC):  mu(T) = A exp(B / (T + 273.15 - C)),
+//       A = 2.939e-5 Pa s, B = 507.88 K, C = 149.3 K (mu(20 degC) = 1.003e-3 Pa s),
+//       nu = mu / rho0.
+// Boundary particles keep their value (their viscosity is that of the wall condition).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "sph/equation_term.hpp"
+#include "sph/terms/fluid_quantities.hpp"
+#include "sph/terms/thermal_properties.hpp"
+
+namespace num::sph {
+
+enum class ViscosityLaw { EXPONENTIAL, WATER_VOGEL };
+
+struct ViscosityOfTemperature {
+    ViscosityLaw law = ViscosityLaw::EXPONENTIAL;
+    Float coefficient = 0.02;  ///< b of the exponential law [1/K] (water near 20 degC: ~0.02)
+
+    /// nu at temperature T for a material with viscosity nu0 at T0 and rest density rho0.
+    Float operator()(Float T, Float nu0, Float T0, Float rho0) const {
+        if (law == ViscosityLaw::WATER_VOGEL)
+            return 2.939e-5 * std::exp(507.88 / (T + 273.15 - 149.3)) / rho0;
+        return nu0 * std::exp(-coefficient * (T - T0));
+    }
+};
+
+template <int Dim>
+class TemperatureViscosity : public IEquationTerm<Dim> {
+  public:
+    explicit TemperatureViscosity(ViscosityOfTemperature law = {}) : law_(law) {}
+
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        const std::vector<ThermalMaterial> table = thermalMaterials(s);
+        std::vector<Float> nu0(table.size());
+        for (std::size_t m = 0; m < table.size(); ++m)
+            nu0[m] = s.materials()[m]->params().template get<double>("viscosity");
+        const auto T = s.template getValue<Float>(QuantityId::TEMPERATURE);
+        const auto nu = s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY);
+        const bool hasKind = s.has(QuantityId::KIND), hasMat = s.has(QuantityId::MATERIAL);
+        const ArrayView<const int> kind =
+            hasKind ? s.template getValue<int>(QuantityId::KIND) : ArrayView<const int>();
+        const ArrayView<const int> mat =
+            hasMat ? s.template getValue<int>(QuantityId::MATERIAL) : ArrayView<const int>();
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) {
+                if (hasKind && !isFluid(kind[i])) continue;
+                const int k = hasMat ? mat[i] : 0;
+                nu[i] = law_(T[i], nu0[k], table[k].referenceTemperature, table[k].density);
+            }
+        });
+    }
+
+    void create(Storage<Dim>& storage, IMaterial& material) const override {
+        const ParameterSet& p = material.params();
+        storage.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST,
+                                       p.get<double>("reference_temperature"));
+        storage.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO,
+                                       p.get<double>("viscosity"));
+    }
+
+    /// The viscous limit dt <= viscous_factor h^2 / nu_max at the current temperatures.
+    void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,
+                       TimeStepLimits& limits) const override {
+        Float numax = 0;
+        for (Float v : s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY))
+            numax = std::max(numax, v);
+        const Float h = settings.get<double>("smoothing_length");
+        if (numax > 0)
+            limits.offer("viscous", settings.get<double>("viscous_factor") * h * h / numax);
+    }
+
+  private:
+    ViscosityOfTemperature law_;
+};
+
+}  // namespace num::sph

@@ -1,0 +1,43 @@
+// A small RGB raster with the drawing the apps' pictures need (discs, rectangles, lines, text
+// in a built-in 5x7 font), a colour map, and PNG output through libpng.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace num::io {
+
+struct Rgb {
+    std::uint8_t r = 0, g = 0, b = 0;
+};
+
+/// Colour of u in [0, 1] on a blue-white-red map (cold to hot); clamped outside.
+Rgb coolWarm(double u);
+/// c scaled towards black by f in [0, 1] (1 keeps it).
+Rgb shade(Rgb c, double f);
+
+class Image {
+  public:
+    Image(int width, int height, Rgb background = {});
+    int width() const { return w_; }
+    int height() const { return h_; }
+    Rgb at(int x, int y) const;
+    void set(int x, int y, Rgb c);
+    void fillRect(int x0, int y0, int x1, int y1, Rgb c);
+    void fillDisc(double cx, double cy, double radius, Rgb c);
+    void line(double x0, double y0, double x1, double y1, Rgb c);
+    /// Text with its top-left corner at (x, y); each font pixel is a scale x scale square.
+    void text(int x, int y, const std::string& s, Rgb c, int scale = 2);
+    static int textWidth(const std::string& s, int scale = 2) { return int(s.size()) * 6 * scale; }
+    const std::vector<std::uint8_t>& pixels() const { return px_; }
+
+  private:
+    int w_, h_;
+    std::vector<std::uint8_t> px_;
+};
+
+/// Writes the image as an 8-bit RGB PNG (AppError OUTPUT on failure).
+void writePng(const std::string& path, const Image& image);
+
+}  // namespace num::io

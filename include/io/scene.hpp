@@ -1,0 +1,126 @@
+// A scene as read from its JSON file (format: docs/scenes.md). Plain data; loadScene() checks
+// every key, type and range, and the geometry, so whatever reaches the simulation is valid.
+#pragma once
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/errors.hpp"
+#include "io/expression.hpp"
+#include "spatial/vec.hpp"
+
+namespace num::io {
+
+template <int Dim>
+using SceneVec = Vec<double, Dim>;
+
+/// One component per axis, each a number or an expression in x, y, z, t.
+template <int Dim>
+using VectorField = std::array<Expression, Dim>;
+
+enum class SideType { WALL, PERIODIC, OPEN };
+
+struct ThermalCondition {
+    enum class Kind { ADIABATIC, TEMPERATURE, HEAT_FLUX } kind = Kind::ADIABATIC;
+    double value = 0;  ///< temperature [degC] or heat flux into the fluid [W/m^2]
+};
+
+template <int Dim>
+struct BoundarySide {
+    SideType type = SideType::WALL;
+    bool slip = false;
+    SceneVec<Dim> velocity{};
+    ThermalCondition thermal;
+};
+
+struct MaterialSpec {
+    std::string name;
+    double density = 1000, viscosity = 1e-6, artificialViscosity = 0.02;
+    std::optional<double> soundSpeed;  ///< empty: "auto"
+    double conductivity = 0.6, heatCapacity = 4186, thermalExpansion = 0;
+    double referenceTemperature = 20;
+};
+
+enum class Shape { BOX, CIRCLE, SPHERE };
+
+template <int Dim>
+struct FluidBlock {
+    std::string material;
+    Shape shape = Shape::BOX;
+    SceneVec<Dim> min{}, max{}, center{};
+    double radius = 0;
+    Expression temperature{20.0}, pressure{0.0};
+    VectorField<Dim> velocity{};
+};
+
+template <int Dim>
+struct Body {
+    Shape shape = Shape::CIRCLE;
+    SceneVec<Dim> min{}, max{}, center{};
+    double radius = 0;
+    double temperature = 20;
+    std::string material;  ///< empty: held at `temperature`; else conducting with this material
+};
+
+template <int Dim>
+struct Emitter {
+    std::string name, material;
+    SceneVec<Dim> position{}, direction{};
+    double speed = 1, radius = 0.05, temperature = 20, start = 0, end = 1e300;
+};
+
+template <int Dim>
+struct Probe {
+    std::string name;
+    SceneVec<Dim> point{};
+    std::vector<std::string> fields;
+};
+
+struct OutputSpec {
+    std::string directory = "out/scene";
+    std::string prefix = "particles";
+    double every = 0.05;
+    bool vtu = true, csv = false, images = true, video = true;
+    int imageWidth = 960;
+    std::optional<double> colorMin, colorMax;  ///< colour-bar range; empty: from the scene
+};
+
+struct PhysicsSpec {
+    bool heat = true, buoyancy = true;
+    std::string density = "continuity";  ///< continuity or summation
+    double densityDiffusion = 0.1;       ///< delta-SPH coefficient
+    bool shifting = true;
+    double gravityRamp = 0;  ///< seconds over which gravity rises from 0
+};
+
+template <int Dim>
+struct Scene {
+    std::string file;  ///< where it was read from (for messages)
+    std::string name;
+    SceneVec<Dim> domainMin{}, domainMax{};
+    std::array<std::array<BoundarySide<Dim>, 2>, Dim> sides{};  ///< [axis][0 = low, 1 = high]
+    double spacing = 0.02, hOverSpacing = 1.3;
+    std::string kernel = "wendland_c2";
+    double endTime = 1, cfl = 0.25, dtMax = 0;
+    std::string integrator = "leapfrog";
+    VectorField<Dim> gravity{};
+    std::map<std::string, MaterialSpec> materials;
+    std::vector<FluidBlock<Dim>> fluids;
+    std::vector<Body<Dim>> bodies;
+    std::vector<Emitter<Dim>> emitters;
+    OutputSpec output;
+    std::vector<Probe<Dim>> probes;
+    PhysicsSpec physics;
+    double maxSpeed = 0;  ///< velocity scale for "auto" sound speeds [m/s] (0: estimated)
+};
+
+/// Names of the sides of the box per axis: left/right, bottom/top, back/front.
+inline const char* sideName(int axis, int high) {
+    static const char* names[3][2] = {{"left", "right"}, {"bottom", "top"}, {"back", "front"}};
+    return names[axis][high];
+}
+
+}  // namespace num::io

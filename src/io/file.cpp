@@ -1,0 +1,79 @@
+#include "io/file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+
+namespace num::io {
+
+namespace {
+std::string explain(int error) {
+    std::string s = std::strerror(error);
+    if (error == ENOSPC) s += " (the disk is full: free some space or choose another --out)";
+    if (error == EACCES || error == EROFS || error == EPERM)
+        s += " (choose a writable directory with --out)";
+    return s;
+}
+}  // namespace
+
+OutFile::OutFile(const std::string& path) : path_(path) {
+    f_ = std::fopen(path.c_str(), "wb");
+    if (!f_) fail("cannot create the file", errno);
+}
+
+OutFile::~OutFile() {
+    if (f_) std::fclose(f_);
+}
+
+void OutFile::fail(const std::string& what, int error) {
+    if (f_) std::fclose(f_), f_ = nullptr;
+    throw AppError(ExitCode::OUTPUT, path_ + ": " + what + ": " + explain(error));
+}
+
+void OutFile::write(const void* data, std::size_t bytes) {
+    if (bytes && std::fwrite(data, 1, bytes, f_) != bytes) fail("write failed", errno);
+}
+
+void OutFile::close(bool sync) {
+    if (!f_) return;
+    if (std::fflush(f_) != 0) fail("write failed", errno);
+    if (sync && ::fsync(fileno(f_)) != 0 && errno != EINVAL) fail("write failed", errno);
+    std::FILE* f = f_;
+    f_ = nullptr;
+    if (std::fclose(f) != 0) fail("write failed", errno);
+}
+
+void writeFileAtomically(const std::string& path, std::string_view content) {
+    const std::string tmp = path + ".tmp";
+    try {
+        OutFile out(tmp);
+        out.write(content);
+        out.close(true);
+    } catch (...) {
+        std::remove(tmp.c_str());
+        throw;
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        const int e = errno;
+        std::remove(tmp.c_str());
+        throw AppError(ExitCode::OUTPUT, path + ": cannot replace the file: " + explain(e));
+    }
+}
+
+void makeOutputDirectory(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        throw AppError(ExitCode::OUTPUT,
+                       dir + ": cannot create the output directory: " +
+                           (ec ? ec.message() : std::string("a file of that name exists")) +
+                           " (choose another with --out)");
+    if (::access(dir.c_str(), W_OK) != 0)
+        throw AppError(ExitCode::OUTPUT,
+                       dir + ": the output directory is not writable: " + explain(errno));
+}
+
+}  // namespace num::io

@@ -1,0 +1,145 @@
+#include "json_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace num::io::detail {
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    std::size_t bestDistance = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const auto& c : candidates) {
+        const std::size_t d = editDistance(word, c);
+        if (d < bestDistance) bestDistance = d, best = c;
+    }
+    return best;
+}
+
+std::string describe(const json& v) {
+    switch (v.type()) {
+        case json::value_t::null:
+            return "null";
+        case json::value_t::boolean:
+            return v.get<bool>() ? "true" : "false";
+        case json::value_t::string:
+            return "the string \"" + v.get<std::string>() + "\"";
+        case json::value_t::array:
+            return "an array of " + std::to_string(v.size()) + " values";
+        case json::value_t::object:
+            return "an object";
+        default: {
+            std::ostringstream s;
+            s << v.get<double>();
+            return s.str();
+        }
+    }
+}
+
+void At::fail(const std::string& expected, const std::string& hint) const {
+    throw sceneError(file, path, expected, describe(v), hint);
+}
+
+void At::failAt(const std::string& key, const std::string& expected) const {
+    throw sceneError(file, join(key), expected, "nothing (the key is missing)");
+}
+
+void At::object(std::initializer_list<const char*> allowed,
+                std::initializer_list<const char*> required) const {
+    if (!v.is_object()) fail("an object");
+    std::vector<std::string> names(allowed.begin(), allowed.end());
+    for (const auto& [key, value] : v.items()) {
+        if (std::find(names.begin(), names.end(), key) != names.end()) continue;
+        const std::string guess = closest(key, names);
+        std::string list;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+        throw sceneError(file, join(key), "one of the keys " + list,
+                         "the unknown key '" + key + "'",
+                         guess.empty() ? "" : "did you mean '" + guess + "'?");
+    }
+    for (const char* r : required)
+        if (!v.contains(r)) failAt(r, "this required key");
+}
+
+At At::required(const std::string& key) const {
+    if (!has(key)) failAt(key, "this required key");
+    return (*this)[key];
+}
+
+double At::number(double lo, double hi, bool loOpen, const std::string& unit) const {
+    const std::string u = unit.empty() ? "" : " [" + unit + "]";
+    std::ostringstream range;
+    if (loOpen && lo == 0 && hi >= 1e300)
+        range << "a positive number";
+    else if (lo == 0 && hi >= 1e300)
+        range << "a number >= 0";
+    else if (lo <= -1e300 && hi >= 1e300)
+        range << "a number";
+    else
+        range << "a number in " << (loOpen ? "(" : "[") << lo << ", " << hi << "]";
+    if (!v.is_number()) fail(range.str() + u);
+    const double x = v.get<double>();
+    if (!std::isfinite(x) || x < lo || x > hi || (loOpen && x == lo)) fail(range.str() + u);
+    return x;
+}
+
+long At::integer(long lo, long hi) const {
+    const std::string e = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!v.is_number_integer()) fail(e);
+    const long x = v.get<long>();
+    if (x < lo || x > hi) fail(e);
+    return x;
+}
+
+bool At::boolean() const {
+    if (!v.is_boolean()) fail("true or false");
+    return v.get<bool>();
+}
+
+std::string At::string() const {
+    if (!v.is_string()) fail("a string");
+    return v.get<std::string>();
+}
+
+std::string At::choice(std::initializer_list<const char*> choices) const {
+    std::vector<std::string> names(choices.begin(), choices.end());
+    std::string list;
+    for (const auto& n : names) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
+    if (!v.is_string()) fail("one of " + list);
+    const std::string s = v.get<std::string>();
+    if (std::find(names.begin(), names.end(), s) != names.end()) return s;
+    const std::string guess = closest(s, names);
+    fail("one of " + list, guess.empty() ? "" : "did you mean \"" + guess + "\"?");
+}
+
+Expression At::expression() const {
+    if (v.is_number()) return Expression(number());
+    if (!v.is_string()) fail("a number or an expression string in x, y, z, t");
+    try {
+        return Expression::parse(v.get<std::string>());
+    } catch (const ExpressionError& e) {
+        throw sceneError(file, path, "an expression in x, y, z, t", describe(v), e.what(),
+                         ExitCode::EXPRESSION);
+    }
+}
+
+void At::array(std::size_t n, const std::string& what) const {
+    if (!v.is_array() || v.size() != n) fail("an array of " + std::to_string(n) + " " + what);
+}
+
+}  // namespace num::io::detail

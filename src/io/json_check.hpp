@@ -1,0 +1,65 @@
+// Checked reading of JSON values with key paths: every mistake becomes an AppError naming the
+// file, the key path, what was expected and what was found (internal to numerics_io).
+#pragma once
+
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "io/errors.hpp"
+#include "io/expression.hpp"
+
+namespace num::io::detail {
+
+using nlohmann::json;
+
+/// Levenshtein distance, for "did you mean" hints.
+std::size_t editDistance(const std::string& a, const std::string& b);
+/// The closest of `candidates` to `word` if close enough to be a likely misspelling, else "".
+std::string closest(const std::string& word, const std::vector<std::string>& candidates);
+/// A short description of a JSON value for "found ..." ("the string \"abc\"", "-0.01").
+std::string describe(const json& v);
+
+/// A JSON value and where it is (file and key path such as "fluids[0].velocity").
+struct At {
+    const json& v;
+    const std::string& file;
+    std::string path;
+
+    At operator[](const std::string& key) const { return {v.at(key), file, join(key)}; }
+    At operator[](std::size_t i) const {
+        return {v.at(i), file, path + "[" + std::to_string(i) + "]"};
+    }
+    std::string join(const std::string& key) const { return path.empty() ? key : path + "." + key; }
+    bool has(const std::string& key) const { return v.is_object() && v.contains(key); }
+
+    [[noreturn]] void fail(const std::string& expected, const std::string& hint = "") const;
+    [[noreturn]] void failAt(const std::string& key, const std::string& expected) const;
+
+    /// This must be an object with only the keys listed (and those listed as required).
+    void object(std::initializer_list<const char*> allowed,
+                std::initializer_list<const char*> required = {}) const;
+    /// The value of a required key (error naming the key when missing).
+    At required(const std::string& key) const;
+
+    double number(double lo = -1e300, double hi = 1e300, bool loOpen = false,
+                  const std::string& unit = "") const;
+    double number(const std::string& key, double fallback, double lo, double hi,
+                  bool loOpen = false, const std::string& unit = "") const {
+        return has(key) ? (*this)[key].number(lo, hi, loOpen, unit) : fallback;
+    }
+    long integer(long lo, long hi) const;
+    bool boolean() const;
+    bool boolean(const std::string& key, bool fallback) const {
+        return has(key) ? (*this)[key].boolean() : fallback;
+    }
+    std::string string() const;
+    std::string choice(std::initializer_list<const char*> choices) const;
+    /// A number or an expression string in x, y, z, t.
+    Expression expression() const;
+    /// An array of exactly n elements (n = dimension for vectors).
+    void array(std::size_t n, const std::string& what) const;
+};
+
+}  // namespace num::io::detail

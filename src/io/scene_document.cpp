@@ -1,0 +1,97 @@
+// Scene files as JSON documents: reading, syntax errors with line and column, overrides.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "io/scene_loader.hpp"
+#include "json_check.hpp"
+
+namespace num::io {
+
+SceneDocument SceneDocument::fromFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        const std::string why = std::strerror(errno);
+        throw AppError(ExitCode::SCENE_FILE, path + ": cannot read the scene file: " + why +
+                                                 " (check the path; built-in scenes run when no "
+                                                 "file is given)");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw AppError(ExitCode::SCENE_FILE, path + ": read error");
+    return fromText(text.str(), path);
+}
+
+SceneDocument SceneDocument::fromText(const std::string& text, const std::string& file) {
+    SceneDocument doc;
+    doc.file_ = file;
+    try {
+        doc.json_ = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+    } catch (const nlohmann::json::parse_error& e) {
+        // Line and column of the byte where parsing stopped (e.byte is 1-based).
+        std::size_t line = 1, column = 1;
+        for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
+            if (text[k] == '\n')
+                ++line, column = 1;
+            else
+                ++column;
+        }
+        std::string what = e.what();
+        if (const auto p = what.find("syntax error"); p != std::string::npos) what = what.substr(p);
+        throw AppError(ExitCode::JSON_SYNTAX, file + ":" + std::to_string(line) + ":" +
+                                                  std::to_string(column) +
+                                                  ": malformed JSON: " + what);
+    }
+    if (!doc.json_.is_object())
+        throw sceneError(file, "", "a JSON object { ... }", detail::describe(doc.json_));
+    return doc;
+}
+
+void SceneDocument::set(const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw AppError(ExitCode::USAGE, "--set " + assignment +
+                                            ": expected KEY=VALUE with a dotted key, e.g. "
+                                            "--set particles.spacing=0.01");
+    const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+    nlohmann::json value;
+    try {
+        value = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::parse_error&) {
+        value = text;  // a bare word or an expression: a string
+    }
+    nlohmann::json* node = &json_;
+    std::string path;
+    std::stringstream parts(key);
+    std::string part;
+    while (std::getline(parts, part, '.')) {
+        if (part.empty())
+            throw AppError(ExitCode::USAGE, "--set " + assignment + ": empty key in '" + key + "'");
+        if (node->is_array()) {
+            const bool digits = part.find_first_not_of("0123456789") == std::string::npos;
+            const std::size_t i = digits ? std::stoul(part) : node->size();
+            if (i >= node->size())
+                throw AppError(ExitCode::USAGE,
+                               "--set " + assignment + ": " + (path.empty() ? "" : path) +
+                                   " is an array of " + std::to_string(node->size()) +
+                                   " values; '" + part + "' is not an index into it");
+            node = &(*node)[i];
+        } else {
+            if (!node->is_object())
+                throw AppError(ExitCode::USAGE, "--set " + assignment + ": " + path +
+                                                    " is not an object, cannot set '" + part +
+                                                    "' in it");
+            node = &(*node)[part];
+        }
+        path += (path.empty() ? "" : ".") + part;
+    }
+    *node = value;
+}
+
+int SceneDocument::dimension() const {
+    const detail::At root{json_, file_, ""};
+    return int(root.required("dimension").integer(2, 3));
+}
+
+}  // namespace num::io

@@ -1,0 +1,149 @@
+// Geometry checks of a scene: everything inside the domain, no fluid in a body, not empty.
+#include <cmath>
+#include <sstream>
+
+#include "io/scene_loader.hpp"
+
+namespace num::io {
+
+namespace {
+
+template <int Dim>
+std::string text(const SceneVec<Dim>& v) {
+    std::ostringstream s;
+    s << "[";
+    for (int k = 0; k < Dim; ++k) s << (k ? ", " : "") << v[k];
+    s << "]";
+    return s.str();
+}
+
+/// Bounding box of a box or a round shape.
+template <int Dim>
+void bounds(Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, const SceneVec<Dim>& c,
+            double r, SceneVec<Dim>& lo, SceneVec<Dim>& hi) {
+    if (shape == Shape::BOX)
+        lo = mn, hi = mx;
+    else
+        lo = c - SceneVec<Dim>::filled(r), hi = c + SceneVec<Dim>::filled(r);
+}
+
+/// Distance from p to a box (0 inside).
+template <int Dim>
+double distanceToBox(const SceneVec<Dim>& p, const SceneVec<Dim>& lo, const SceneVec<Dim>& hi) {
+    double d2 = 0;
+    for (int k = 0; k < Dim; ++k) {
+        const double e = std::max({lo[k] - p[k], 0.0, p[k] - hi[k]});
+        d2 += e * e;
+    }
+    return std::sqrt(d2);
+}
+
+/// Whether two shapes overlap by more than `tol`.
+template <int Dim>
+bool overlap(const FluidBlock<Dim>& f, const Body<Dim>& b, double tol) {
+    const bool fBox = f.shape == Shape::BOX, bBox = b.shape == Shape::BOX;
+    if (fBox && bBox) {
+        for (int k = 0; k < Dim; ++k)
+            if (std::min(f.max[k], b.max[k]) - std::max(f.min[k], b.min[k]) <= tol) return false;
+        return true;
+    }
+    if (fBox) return distanceToBox<Dim>(b.center, f.min, f.max) < b.radius - tol;
+    if (bBox) return distanceToBox<Dim>(f.center, b.min, b.max) < f.radius - tol;
+    return norm(f.center - b.center) < f.radius + b.radius - tol;
+}
+
+}  // namespace
+
+template <int Dim>
+void checkSceneGeometry(const Scene<Dim>& s) {
+    const std::string& file = s.file;
+    const double tol = 1e-9 * norm(s.domainMax - s.domainMin);
+    const std::string domain =
+        "the domain " + text<Dim>(s.domainMin) + " to " + text<Dim>(s.domainMax);
+    auto inside = [&](const SceneVec<Dim>& lo, const SceneVec<Dim>& hi) {
+        for (int k = 0; k < Dim; ++k)
+            if (lo[k] < s.domainMin[k] - tol || hi[k] > s.domainMax[k] + tol) return false;
+        return true;
+    };
+    for (int k = 0; k < Dim; ++k)
+        if (s.domainMax[k] - s.domainMin[k] < 4 * s.spacing)
+            throw sceneError(file, "particles.spacing",
+                             "a spacing at most a quarter of the domain's extent on every axis",
+                             std::to_string(s.spacing));
+    double estimate = 0;
+    for (std::size_t i = 0; i < s.fluids.size(); ++i) {
+        const FluidBlock<Dim>& f = s.fluids[i];
+        const std::string path = "fluids[" + std::to_string(i) + "]";
+        SceneVec<Dim> lo, hi;
+        bounds<Dim>(f.shape, f.min, f.max, f.center, f.radius, lo, hi);
+        if (!inside(lo, hi))
+            throw sceneError(file, path, "a fluid block inside " + domain,
+                             "a block spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
+        double cells = 1;
+        for (int k = 0; k < Dim; ++k) cells *= (hi[k] - lo[k]) / s.spacing;
+        if (f.shape != Shape::BOX && 2 * f.radius < s.spacing)
+            throw sceneError(
+                file, path + ".radius",
+                "a radius of at least half the spacing (" + std::to_string(s.spacing / 2) + " m)",
+                std::to_string(f.radius), "the block would hold no particle");
+        for (int k = 0; k < Dim; ++k)
+            if (hi[k] - lo[k] < s.spacing)
+                throw sceneError(file, path,
+                                 "a block at least one spacing (" + std::to_string(s.spacing) +
+                                     " m) wide on every axis",
+                                 "a width of " + std::to_string(hi[k] - lo[k]) + " m on axis " +
+                                     std::to_string(k),
+                                 "the block would hold no particle");
+        estimate += cells;
+        for (std::size_t j = 0; j < s.bodies.size(); ++j)
+            if (overlap(f, s.bodies[j], 0.5 * s.spacing))
+                throw sceneError(file, path, "a fluid block that does not overlap a solid body",
+                                 "an overlap with bodies[" + std::to_string(j) + "]",
+                                 "shrink or split the block around the body");
+    }
+    for (std::size_t j = 0; j < s.bodies.size(); ++j) {
+        const Body<Dim>& b = s.bodies[j];
+        SceneVec<Dim> lo, hi;
+        bounds<Dim>(b.shape, b.min, b.max, b.center, b.radius, lo, hi);
+        if (!inside(lo, hi))
+            throw sceneError(file, "bodies[" + std::to_string(j) + "]", "a body inside " + domain,
+                             "a body spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
+    }
+    for (std::size_t i = 0; i < s.emitters.size(); ++i) {
+        const Emitter<Dim>& e = s.emitters[i];
+        if (!inside(e.position, e.position))
+            throw sceneError(file, "emitters[" + std::to_string(i) + "].position",
+                             "a point inside " + domain, text<Dim>(e.position));
+        if (2 * e.radius < s.spacing)
+            throw sceneError(file, "emitters[" + std::to_string(i) + "].radius",
+                             "a radius of at least half the spacing", std::to_string(e.radius));
+    }
+    for (std::size_t i = 0; i < s.probes.size(); ++i)
+        if (!inside(s.probes[i].point, s.probes[i].point))
+            throw sceneError(file, "probes[" + std::to_string(i) + "].point",
+                             "a point inside " + domain, text<Dim>(s.probes[i].point));
+    if (s.fluids.empty() && s.emitters.empty())
+        throw sceneError(file, "fluids",
+                         "at least one fluid block or emitter (the scene has no fluid particles)",
+                         "none",
+                         "add a block such as {\"material\": \"water\", \"shape\": \"box\", "
+                         "\"min\": [...], \"max\": [...]}");
+    if (estimate > 2e7)
+        throw sceneError(
+            file, "particles.spacing", "a spacing giving at most 20 million fluid particles",
+            std::to_string(s.spacing) + " (about " + std::to_string(long(estimate)) + " particles)",
+            "increase the spacing");
+    const double support = 2.0 * s.hOverSpacing * s.spacing;  // largest kernel support: 2h
+    for (int k = 0; k < Dim; ++k)
+        if (s.sides[k][0].type == SideType::PERIODIC &&
+            s.domainMax[k] - s.domainMin[k] < 2 * support)
+            throw sceneError(file, std::string("boundaries.") + sideName(k, 0),
+                             "a periodic axis at least twice the kernel support (" +
+                                 std::to_string(2 * support) + " m) long",
+                             std::to_string(s.domainMax[k] - s.domainMin[k]) + " m");
+}
+
+template void checkSceneGeometry<2>(const Scene<2>&);
+template void checkSceneGeometry<3>(const Scene<3>&);
+
+}  // namespace num::io

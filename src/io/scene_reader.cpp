@@ -1,0 +1,341 @@
+// readScene: every key of the scene format (docs/scenes.md) with its type, unit and range.
+#include <set>
+
+#include "io/scene_loader.hpp"
+#include "json_check.hpp"
+
+namespace num::io {
+
+using detail::At;
+
+namespace {
+
+template <int Dim>
+SceneVec<Dim> readVec(const At& a, const std::string& unit) {
+    a.array(Dim, std::string("numbers [") + unit + "] (one per axis of the " + std::to_string(Dim) +
+                     "D scene)");
+    SceneVec<Dim> v;
+    for (int k = 0; k < Dim; ++k) v[k] = a[std::size_t(k)].number(-1e300, 1e300, false, unit);
+    return v;
+}
+
+template <int Dim>
+VectorField<Dim> readField(const At& a) {
+    a.array(Dim, "numbers or expressions (one per axis of the " + std::to_string(Dim) + "D scene)");
+    VectorField<Dim> f;
+    for (int k = 0; k < Dim; ++k) f[k] = a[std::size_t(k)].expression();
+    return f;
+}
+
+std::string materialName(const At& a, const std::map<std::string, MaterialSpec>& materials) {
+    const std::string name = a.string();
+    if (materials.count(name)) return name;
+    std::vector<std::string> names;
+    std::string list;
+    for (const auto& [n, m] : materials) names.push_back(n), list += (list.empty() ? "" : ", ") + n;
+    const std::string guess = detail::closest(name, names);
+    a.fail("the name of a material defined under \"materials\" (" + list + ")",
+           guess.empty() ? "" : "did you mean \"" + guess + "\"?");
+}
+
+MaterialSpec readMaterial(const At& a, const std::string& name) {
+    a.object({"density", "sound_speed", "viscosity", "artificial_viscosity", "conductivity",
+              "heat_capacity", "thermal_expansion", "reference_temperature"});
+    MaterialSpec m;
+    m.name = name;
+    m.density = a.number("density", m.density, 0, 1e7, true, "kg/m^3");
+    if (a.has("sound_speed") &&
+        !(a["sound_speed"].v.is_string() && a["sound_speed"].v.get<std::string>() == "auto")) {
+        if (!a["sound_speed"].v.is_number())
+            a["sound_speed"].fail("a positive number [m/s] or \"auto\"");
+        m.soundSpeed = a["sound_speed"].number(0, 1e6, true, "m/s");
+    }
+    m.viscosity = a.number("viscosity", m.viscosity, 0, 1e3, false, "m^2/s");
+    m.artificialViscosity = a.number("artificial_viscosity", m.artificialViscosity, 0, 10);
+    m.conductivity = a.number("conductivity", m.conductivity, 0, 1e6, false, "W/(m K)");
+    m.heatCapacity = a.number("heat_capacity", m.heatCapacity, 0, 1e7, true, "J/(kg K)");
+    m.thermalExpansion =
+        a.number("thermal_expansion", m.thermalExpansion, -0.01, 0.01, false, "1/K");
+    m.referenceTemperature =
+        a.number("reference_temperature", m.referenceTemperature, -273.15, 1e4, false, "degC");
+    return m;
+}
+
+template <int Dim>
+void readSides(const At& a, Scene<Dim>& s) {
+    std::vector<const char*> names;
+    for (int k = 0; k < Dim; ++k) names.push_back(sideName(k, 0)), names.push_back(sideName(k, 1));
+    if (!a.v.is_object()) a.fail("an object with the sides of the domain box");
+    std::vector<std::string> allowed(names.begin(), names.end());
+    for (const auto& [key, value] : a.v.items())
+        if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+            const std::string guess = detail::closest(key, allowed);
+            throw sceneError(a.file, a.join(key),
+                             "a side of the " + std::to_string(Dim) + "D domain box (" +
+                                 (Dim == 2 ? "left, right, bottom, top"
+                                           : "left, right, bottom, top, back, front") +
+                                 ")",
+                             "'" + key + "'", guess.empty() ? "" : "did you mean '" + guess + "'?");
+        }
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) {
+            const char* name = sideName(k, hi);
+            if (!a.has(name))
+                a.failAt(name,
+                         "this side's boundary ({\"type\": \"wall\"}, \"periodic\" or "
+                         "\"open\"; every side must be given)");
+            const At b = a[name];
+            b.object({"type", "slip", "velocity", "thermal"}, {"type"});
+            BoundarySide<Dim>& side = s.sides[k][hi];
+            const std::string type = b["type"].choice({"wall", "periodic", "open"});
+            side.type = type == "wall"       ? SideType::WALL
+                        : type == "periodic" ? SideType::PERIODIC
+                                             : SideType::OPEN;
+            if (side.type != SideType::WALL)
+                for (const char* key : {"slip", "velocity", "thermal"})
+                    if (b.has(key))
+                        b[key].fail("no '" + std::string(key) + "' on a " + type +
+                                    " side (it applies to walls only)");
+            side.slip = b.boolean("slip", false);
+            if (b.has("velocity")) side.velocity = readVec<Dim>(b["velocity"], "m/s");
+            if (b.has("thermal")) {
+                const At t = b["thermal"];
+                t.object({"temperature", "heat_flux"});
+                if (t.has("temperature") == t.has("heat_flux"))
+                    t.fail(
+                        "an object with exactly one of \"temperature\" [degC] or "
+                        "\"heat_flux\" [W/m^2]");
+                side.thermal.kind = t.has("temperature") ? ThermalCondition::Kind::TEMPERATURE
+                                                         : ThermalCondition::Kind::HEAT_FLUX;
+                side.thermal.value = t.has("temperature")
+                                         ? t["temperature"].number(-273.15, 1e4, false, "degC")
+                                         : t["heat_flux"].number(-1e9, 1e9, false, "W/m^2");
+            }
+        }
+    for (int k = 0; k < Dim; ++k) {
+        const bool lo = s.sides[k][0].type == SideType::PERIODIC;
+        const bool hi = s.sides[k][1].type == SideType::PERIODIC;
+        if (lo != hi)
+            throw sceneError(
+                a.file, a.join(sideName(k, lo ? 1 : 0)) + ".type",
+                "\"periodic\" as on the opposite side '" + std::string(sideName(k, lo ? 0 : 1)) +
+                    "' (periodic applies to both sides of an axis)",
+                "\"" +
+                    std::string(s.sides[k][lo ? 1 : 0].type == SideType::WALL ? "wall" : "open") +
+                    "\"");
+    }
+}
+
+template <int Dim>
+void readShape(const At& a, Shape& shape, SceneVec<Dim>& mn, SceneVec<Dim>& mx,
+               SceneVec<Dim>& center, double& radius, bool fluid) {
+    const char* round = Dim == 2 ? "circle" : "sphere";
+    const std::string name = a.required("shape").choice({"box", "circle", "sphere"});
+    if (name != "box" && name != round)
+        a["shape"].fail(std::string("\"box\" or \"") + round + "\" in a " + std::to_string(Dim) +
+                        "D scene");
+    shape = name == "box" ? Shape::BOX : Dim == 2 ? Shape::CIRCLE : Shape::SPHERE;
+    if (shape == Shape::BOX) {
+        mn = readVec<Dim>(a.required("min"), "m");
+        mx = readVec<Dim>(a.required("max"), "m");
+        for (int k = 0; k < Dim; ++k)
+            if (!(mx[k] > mn[k])) a["max"].fail("max > min on every axis");
+        for (const char* key : {"center", "radius"})
+            if (a.has(key)) a[key].fail("no '" + std::string(key) + "' for a box (use min, max)");
+    } else {
+        center = readVec<Dim>(a.required("center"), "m");
+        radius = a.required("radius").number(0, 1e300, true, "m");
+        for (const char* key : {"min", "max"})
+            if (a.has(key))
+                a[key].fail("no '" + std::string(key) + "' for a " + round +
+                            " (use center, radius)");
+    }
+    (void)fluid;
+}
+
+}  // namespace
+
+template <int Dim>
+Scene<Dim> readScene(const SceneDocument& doc) {
+    const At root{doc.json(), doc.file(), ""};
+    root.object(
+        {"dimension", "name", "description", "domain", "boundaries", "particles", "time", "gravity",
+         "materials", "fluids", "bodies", "emitters", "output", "probes", "physics"},
+        {"dimension", "domain", "boundaries", "particles", "time", "materials"});
+    Scene<Dim> s;
+    s.file = doc.file();
+    const int dim = int(root["dimension"].integer(2, 3));
+    if (dim != Dim)
+        throw sceneError(doc.file(), "dimension",
+                         std::to_string(Dim) + " for " + (Dim == 2 ? "fluid_sim" : "fluid_sim_3d"),
+                         std::to_string(dim),
+                         "this is a " + std::to_string(dim) + "D scene: run it with " +
+                             (dim == 2 ? "fluid_sim" : "fluid_sim_3d"));
+    if (root.has("name")) s.name = root["name"].string();
+    if (root.has("description")) root["description"].string();
+
+    const At domain = root["domain"];
+    domain.object({"min", "max"}, {"min", "max"});
+    s.domainMin = readVec<Dim>(domain["min"], "m");
+    s.domainMax = readVec<Dim>(domain["max"], "m");
+    for (int k = 0; k < Dim; ++k)
+        if (!(s.domainMax[k] > s.domainMin[k])) domain["max"].fail("max > min on every axis");
+    readSides(root["boundaries"], s);
+
+    const At p = root["particles"];
+    p.object({"spacing", "h_over_spacing", "kernel"}, {"spacing"});
+    s.spacing = p["spacing"].number(0, 1e300, true, "m");
+    s.hOverSpacing = p.number("h_over_spacing", s.hOverSpacing, 0.8, 3.0);
+    if (p.has("kernel"))
+        s.kernel =
+            p["kernel"].choice({"cubic_spline", "wendland_c2", "wendland_c4", "quintic_spline"});
+
+    const At t = root["time"];
+    t.object({"end", "cfl", "integrator", "dt_max"}, {"end"});
+    s.endTime = t["end"].number(0, 1e300, true, "s");
+    s.cfl = t.number("cfl", s.cfl, 0, 1, true);
+    s.dtMax = t.number("dt_max", 0, 0, 1e300, false, "s");
+    if (t.has("integrator"))
+        s.integrator = t["integrator"].choice({"leapfrog", "predictor_corrector", "euler"});
+
+    if (root.has("gravity")) s.gravity = readField<Dim>(root["gravity"]);
+
+    const At mats = root["materials"];
+    if (!mats.v.is_object() || mats.v.empty())
+        mats.fail("an object of named materials, e.g. {\"water\": {\"density\": 1000}}");
+    for (const auto& [name, value] : mats.v.items())
+        s.materials[name] = readMaterial(mats[name], name);
+
+    if (root.has("fluids")) {
+        const At f = root["fluids"];
+        if (!f.v.is_array()) f.fail("an array of fluid blocks");
+        for (std::size_t i = 0; i < f.v.size(); ++i) {
+            const At b = f[i];
+            b.object({"material", "shape", "min", "max", "center", "radius", "temperature",
+                      "velocity", "pressure"},
+                     {"material", "shape"});
+            FluidBlock<Dim> blk;
+            blk.material = materialName(b["material"], s.materials);
+            readShape<Dim>(b, blk.shape, blk.min, blk.max, blk.center, blk.radius, true);
+            if (b.has("temperature")) blk.temperature = b["temperature"].expression();
+            if (b.has("pressure")) blk.pressure = b["pressure"].expression();
+            if (b.has("velocity")) blk.velocity = readField<Dim>(b["velocity"]);
+            s.fluids.push_back(std::move(blk));
+        }
+    }
+    if (root.has("bodies")) {
+        const At f = root["bodies"];
+        if (!f.v.is_array()) f.fail("an array of solid bodies");
+        for (std::size_t i = 0; i < f.v.size(); ++i) {
+            const At b = f[i];
+            b.object({"shape", "min", "max", "center", "radius", "temperature", "material"},
+                     {"shape"});
+            Body<Dim> body;
+            readShape<Dim>(b, body.shape, body.min, body.max, body.center, body.radius, false);
+            body.temperature =
+                b.number("temperature", body.temperature, -273.15, 1e4, false, "degC");
+            if (b.has("material")) body.material = materialName(b["material"], s.materials);
+            s.bodies.push_back(body);
+        }
+    }
+    if (root.has("emitters")) {
+        const At f = root["emitters"];
+        if (!f.v.is_array()) f.fail("an array of emitters");
+        for (std::size_t i = 0; i < f.v.size(); ++i) {
+            const At e = f[i];
+            e.object({"name", "position", "direction", "speed", "radius", "material", "temperature",
+                      "start", "end"},
+                     {"position", "direction", "speed", "radius", "material"});
+            Emitter<Dim> em;
+            em.name = e.has("name") ? e["name"].string() : "emitter" + std::to_string(i);
+            em.position = readVec<Dim>(e["position"], "m");
+            em.direction = readVec<Dim>(e["direction"], "-");
+            if (!(norm(em.direction) > 0)) e["direction"].fail("a non-zero direction vector");
+            em.direction = em.direction / norm(em.direction);
+            em.speed = e["speed"].number(0, 1e4, true, "m/s");
+            em.radius = e["radius"].number(0, 1e300, true, "m");
+            em.material = materialName(e["material"], s.materials);
+            em.temperature = e.number("temperature", em.temperature, -273.15, 1e4, false, "degC");
+            em.start = e.number("start", 0, 0, 1e300, false, "s");
+            em.end = e.number("end", 1e300, 0, 1e300, false, "s");
+            if (!(em.end > em.start)) e["end"].fail("an end time after the start time");
+            s.emitters.push_back(em);
+        }
+    }
+    if (root.has("output")) {
+        const At o = root["output"];
+        o.object({"directory", "prefix", "every", "formats", "images", "video", "image_width",
+                  "color_range"});
+        OutputSpec& out = s.output;
+        if (o.has("directory")) out.directory = o["directory"].string();
+        if (o.has("prefix")) {
+            out.prefix = o["prefix"].string();
+            if (out.prefix.empty() || out.prefix.find_first_of("/\\ ") != std::string::npos)
+                o["prefix"].fail("a non-empty file-name prefix without '/', '\\' or spaces");
+        }
+        out.every = o.number("every", out.every, 0, 1e300, true, "s");
+        if (o.has("formats")) {
+            const At f = o["formats"];
+            if (!f.v.is_array()) f.fail("an array of formats (\"vtu\", \"csv\")");
+            out.vtu = out.csv = false;
+            for (std::size_t i = 0; i < f.v.size(); ++i)
+                (f[i].choice({"vtu", "csv"}) == "vtu" ? out.vtu : out.csv) = true;
+        }
+        out.images = o.boolean("images", out.images);
+        out.video = o.boolean("video", out.video);
+        if (o.has("image_width")) out.imageWidth = int(o["image_width"].integer(64, 8192));
+        if (o.has("color_range")) {
+            const At c = o["color_range"];
+            c.array(2, "temperatures [degC] (low, high)");
+            out.colorMin = c[0].number(-273.15, 1e4, false, "degC");
+            out.colorMax = c[1].number(-273.15, 1e4, false, "degC");
+            if (!(*out.colorMax > *out.colorMin)) c.fail("low < high");
+        }
+    }
+    if (root.has("probes")) {
+        const At f = root["probes"];
+        if (!f.v.is_array()) f.fail("an array of probes");
+        std::set<std::string> names;
+        for (std::size_t i = 0; i < f.v.size(); ++i) {
+            const At e = f[i];
+            e.object({"name", "point", "fields"}, {"name", "point"});
+            Probe<Dim> pr;
+            pr.name = e["name"].string();
+            if (pr.name.empty() || pr.name.find_first_of(".,\" ") != std::string::npos)
+                e["name"].fail("a non-empty name without '.', ',', '\"' or spaces");
+            if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
+            pr.point = readVec<Dim>(e["point"], "m");
+            if (e.has("fields")) {
+                const At fl = e["fields"];
+                if (!fl.v.is_array() || fl.v.empty()) fl.fail("a non-empty array of field names");
+                for (std::size_t k = 0; k < fl.v.size(); ++k)
+                    pr.fields.push_back(
+                        fl[k].choice({"velocity", "density", "pressure", "temperature"}));
+            } else {
+                pr.fields = {"velocity", "pressure", "temperature"};
+            }
+            s.probes.push_back(pr);
+        }
+    }
+    if (root.has("physics")) {
+        const At ph = root["physics"];
+        ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting", "gravity_ramp",
+                   "max_speed"});
+        s.physics.heat = ph.boolean("heat", s.physics.heat);
+        s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
+        if (ph.has("density"))
+            s.physics.density = ph["density"].choice({"continuity", "summation"});
+        s.physics.densityDiffusion =
+            ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
+        s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
+        s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
+        s.maxSpeed = ph.number("max_speed", 0, 0, 1e6, false, "m/s");
+    }
+    checkSceneGeometry(s);
+    return s;
+}
+
+template Scene<2> readScene<2>(const SceneDocument&);
+template Scene<3> readScene<3>(const SceneDocument&);
+
+}  // namespace num::io

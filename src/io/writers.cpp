@@ -1,0 +1,196 @@
+#include "io/writers.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+
+#include "io/file.hpp"
+
+namespace num::io {
+
+using sph::Float;
+using sph::Size;
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+/// The bytes of one field, as VTK wants them (Float64 with 1 or 3 components, or Int32).
+template <int Dim>
+std::vector<char> fieldBytes(const sph::Storage<Dim>& s, const OutputField& f, int& components,
+                             std::string& type) {
+    std::vector<char> bytes;
+    auto append = [&](const auto& v) {
+        const char* p = reinterpret_cast<const char*>(&v);
+        bytes.insert(bytes.end(), p, p + sizeof v);
+    };
+    const Size n = s.size();
+    if (f.type == OutputField::Type::VECTOR) {
+        components = 3, type = "Float64";
+        const auto v = f.derivative ? s.template getDt<sph::Vector<Dim>>(f.id)
+                                    : s.template getValue<sph::Vector<Dim>>(f.id);
+        for (Size i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) append(double(k < Dim ? v[i][k] : 0.0));
+    } else if (f.type == OutputField::Type::FLOAT) {
+        components = 1, type = "Float64";
+        for (double x : s.template getValue<Float>(f.id)) append(x);
+    } else {
+        components = 1, type = "Int32";
+        for (int x : s.template getValue<int>(f.id)) append(std::int32_t(x));
+    }
+    return bytes;
+}
+
+}  // namespace
+
+template <int Dim>
+void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
+              const std::vector<OutputField>& fields, double time) {
+    const std::uint64_t n = s.size();
+    std::vector<std::vector<char>> blocks;
+    std::ostringstream xml;
+    std::uint64_t offset = 0;
+    auto array = [&](const std::string& name, const std::string& type, int components,
+                     std::vector<char> bytes) {
+        xml << "        <DataArray type=\"" << type << "\" Name=\"" << name
+            << "\" NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\""
+            << offset << "\"/>\n";
+        offset += sizeof(std::uint64_t) + bytes.size();
+        blocks.push_back(std::move(bytes));
+    };
+    xml << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt64\">\n"
+        << "  <UnstructuredGrid>\n"
+        << "    <FieldData>\n"
+        << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+           "format=\"ascii\">"
+        << number(time) << "</DataArray>\n"
+        << "    </FieldData>\n"
+        << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
+        << "      <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n";
+    for (const OutputField& f : fields) {
+        int components = 1;
+        std::string type;
+        std::vector<char> bytes = fieldBytes(s, f, components, type);
+        array(f.name, type, components, std::move(bytes));
+    }
+    xml << "      </PointData>\n      <Points>\n";
+    {
+        std::vector<char> bytes;
+        bytes.reserve(n * 24);
+        for (const auto& x : s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION))
+            for (int k = 0; k < 3; ++k) {
+                const double c = k < Dim ? x[k] : 0.0;
+                const char* p = reinterpret_cast<const char*>(&c);
+                bytes.insert(bytes.end(), p, p + 8);
+            }
+        array("Points", "Float64", 3, std::move(bytes));
+    }
+    xml << "      </Points>\n      <Cells>\n";
+    std::vector<char> conn(n * 8), offs(n * 8), types(n, char(1));  // VTK_VERTEX = 1
+    for (std::uint64_t i = 0; i < n; ++i) {
+        const std::int64_t c = std::int64_t(i), o = std::int64_t(i + 1);
+        std::memcpy(&conn[i * 8], &c, 8);
+        std::memcpy(&offs[i * 8], &o, 8);
+    }
+    array("connectivity", "Int64", 1, std::move(conn));
+    array("offsets", "Int64", 1, std::move(offs));
+    array("types", "UInt8", 1, std::move(types));
+    xml << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+        << "  <AppendedData encoding=\"raw\">\n   _";
+    OutFile out(path);
+    out.write(xml.str());
+    for (const auto& b : blocks) {
+        const std::uint64_t size = b.size();
+        out.write(&size, sizeof size);
+        out.write(b.data(), b.size());
+    }
+    out.write("\n  </AppendedData>\n</VTKFile>\n");
+    out.close();
+}
+
+template <int Dim>
+void writeCsv(const std::string& path, const sph::Storage<Dim>& s,
+              const std::vector<OutputField>& fields) {
+    std::string text;
+    const char* axes = "xyz";
+    for (int k = 0; k < Dim; ++k) {
+        if (k) text += ',';
+        text += axes[k];
+    }
+    for (const OutputField& f : fields) {
+        if (f.type == OutputField::Type::VECTOR)
+            for (int k = 0; k < Dim; ++k) {
+                text += ',';
+                text += f.name == "velocity" ? std::string("v") : f.name + "_";
+                text += axes[k];
+            }
+        else {
+            text += ',';
+            text += f.name;
+        }
+    }
+    text += "\n";
+    const bool haveKind = s.has(sph::QuantityId::KIND);
+    const auto x = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+    char buf[40];
+    OutFile out(path);
+    for (Size i = 0; i < s.size(); ++i) {
+        if (haveKind && s.template getValue<int>(sph::QuantityId::KIND)[i] != 0) continue;
+        for (int k = 0; k < Dim; ++k) {
+            std::snprintf(buf, sizeof buf, k ? ",%.10g" : "%.10g", x[i][k]);
+            text += buf;
+        }
+        for (const OutputField& f : fields) {
+            if (f.type == OutputField::Type::VECTOR) {
+                const auto v = f.derivative ? s.template getDt<sph::Vector<Dim>>(f.id)[i]
+                                            : s.template getValue<sph::Vector<Dim>>(f.id)[i];
+                for (int k = 0; k < Dim; ++k)
+                    std::snprintf(buf, sizeof buf, ",%.10g", v[k]), text += buf;
+            } else if (f.type == OutputField::Type::FLOAT) {
+                std::snprintf(buf, sizeof buf, ",%.10g", s.template getValue<Float>(f.id)[i]);
+                text += buf;
+            } else {
+                text += ',';
+                text += std::to_string(s.template getValue<int>(f.id)[i]);
+            }
+        }
+        text += "\n";
+        if (text.size() > (1 << 20)) out.write(text), text.clear();
+    }
+    out.write(text);
+    out.close();
+}
+
+void PvdSeries::truncateAfter(double time) {
+    while (!entries_.empty() && entries_.back().first > time) entries_.pop_back();
+}
+
+void PvdSeries::write(const std::string& path) const {
+    std::ostringstream xml;
+    xml << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+        << "  <Collection>\n";
+    for (const auto& [t, file] : entries_)
+        xml << "    <DataSet timestep=\"" << number(t) << "\" group=\"\" part=\"0\" file=\"" << file
+            << "\"/>\n";
+    xml << "  </Collection>\n</VTKFile>\n";
+    writeFileAtomically(path, xml.str());
+}
+
+template void writeVtu<2>(const std::string&, const sph::Storage<2>&,
+                          const std::vector<OutputField>&, double);
+template void writeVtu<3>(const std::string&, const sph::Storage<3>&,
+                          const std::vector<OutputField>&, double);
+template void writeCsv<2>(const std::string&, const sph::Storage<2>&,
+                          const std::vector<OutputField>&);
+template void writeCsv<3>(const std::string&, const sph::Storage<3>&,
+                          const std::vector<OutputField>&);
+
+}  // namespace num::io

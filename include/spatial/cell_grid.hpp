@@ -1,6 +1,7 @@
 // Neighbour search on a uniform cell grid (cell size >= search radius), built by counting sort.
-// Borrows positions, knows nothing of physics. Periodic in any subset of axes: on a periodic
-// axis, pair vectors are the nearest image (the period must be at least twice the radius).
+// Copies the positions in cell order, knows nothing of physics. Periodic in any subset of axes: on
+// a periodic axis, pair vectors are the nearest image (the period must be at least twice the
+// radius).
 #pragma once
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "spatial/vec.hpp"
@@ -47,7 +49,7 @@ struct Domain {
 
 template <int Dim>
 class CellGrid {
-public:
+  public:
     using Vector = Vec<double, Dim>;
     using Index = std::uint32_t;
 
@@ -60,20 +62,29 @@ public:
         const Index n = Index(x.size());
         Vector lo = Vector::filled(0), hi = Vector::filled(0);
         if (n > 0) lo = hi = x[0];
-        for (const Vector& p : x)
-            for (int k = 0; k < Dim; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+        for (Index i = 0; i < n; ++i)
+            for (int k = 0; k < Dim; ++k) {
+                if (!std::isfinite(x[i][k]))
+                    throw std::invalid_argument("cell grid: particle " + std::to_string(i) +
+                                                " has a non-finite position");
+                lo[k] = std::min(lo[k], x[i][k]), hi[k] = std::max(hi[k], x[i][k]);
+            }
         // Never more than about 8 cells per particle: a stray particle far away enlarges the
         // cells rather than exhausting memory.
         const double maxCells = 8.0 * std::max<Index>(n, 64);
-        double cellSize = radius;
+        // Cells are a hair larger than the radius so that rounding in the cell coordinate of a
+        // particle on a cell border can never put two neighbours two cells apart.
+        double cellSize = radius * (1 + 1e-8);
         for (;;) {
             double total = 1;
             for (int k = 0; k < Dim; ++k) {
                 if (domain.periodic[k]) {
                     const double L = domain.length(k);
                     if (L < 2 * radius)
-                        throw std::invalid_argument("cell grid: periodic length is below twice the radius");
+                        throw std::invalid_argument(
+                            "cell grid: periodic length is below twice the radius");
                     cells_[k] = std::max(1, int(std::floor(L / cellSize)));
+                    if (L / cells_[k] < cellSize) cells_[k] = std::max(1, cells_[k] - 1);
                     origin_[k] = domain.min[k];
                     size_[k] = L / cells_[k];
                 } else {
@@ -89,50 +100,126 @@ public:
         Index total = 1;
         for (int k = 0; k < Dim; ++k) total *= Index(cells_[k]);
 
+        // Positions are copied in cell order, so that the search reads them contiguously. On
+        // periodic axes each particle is placed at the image whose cell it is sorted into, so
+        // that the image shift of a neighbour follows from the cell offset alone.
+        std::vector<Vector> placed(n);
         cellOf_.resize(n);
         start_.assign(total + 1, 0);
         for (Index i = 0; i < n; ++i) {
-            cellOf_[i] = cellIndex(cellCoords(x[i]));
+            placed[i] = x[i];
+            std::array<int, Dim> c;
+            locate(placed[i], c);
+            cellOf_[i] = cellIndex(c);
             ++start_[cellOf_[i] + 1];
         }
         for (Index c = 0; c < total; ++c) start_[c + 1] += start_[c];
         sorted_.resize(n);
+        slot_.resize(n);
+        sortedX_.resize(n);
         std::vector<Index> fill(start_.begin(), start_.end() - 1);
-        for (Index i = 0; i < n; ++i) sorted_[fill[cellOf_[i]]++] = i;
-        x_ = x;
+        for (Index i = 0; i < n; ++i) {
+            const Index s = fill[cellOf_[i]]++;
+            sorted_[s] = i;
+            slot_[i] = s;
+            sortedX_[s] = placed[i];
+        }
     }
 
-    /// Calls f(j, dx, r2) for every particle j (i itself included) with r2 = |dx|^2 < radius^2,
-    /// dx = x_i - x_j (nearest image). Cells are visited in a fixed order, and particles within
-    /// a cell in increasing index, so the order of neighbours is deterministic.
+    /// Calls f(j, dx, r2) for every particle j (itself too, if xi is a particle's position)
+    /// with r2 = |dx|^2 < radius^2, dx = xi - x_j for the nearest periodic image of x_j. Cells
+    /// are visited in a fixed order, and particles within a cell in increasing index, so the
+    /// order of neighbours is deterministic. Pair vectors are exactly antisymmetric:
+    /// dx_ij == -dx_ji bit for bit.
     template <class F>
     void forEachNeighbour(const Vector& xi, F&& f) const {
-        const std::array<int, Dim> c = cellCoords(xi);
-        std::array<std::array<int, 3>, Dim> visit;
-        std::array<int, Dim> count{};
+        Vector p = xi;
+        std::array<int, Dim> c;
+        locate(p, c);
+        visitCells(p, c, std::forward<F>(f));
+    }
+
+    /// forEachNeighbour for particle i of the last build (faster: its cell is known).
+    template <class F>
+    void forEachNeighbourOf(Index i, F&& f) const {
+        std::array<int, Dim> c;
+        Index flat = cellOf_[i];
+        for (int k = 0; k < Dim; ++k) c[k] = int(flat % Index(cells_[k])), flat /= Index(cells_[k]);
+        visitCells(sortedX_[slot_[i]], c, std::forward<F>(f));
+    }
+
+    /// Particle indices ordered by cell: the permutation that makes neighbours near in memory.
+    const std::vector<Index>& sortedOrder() const { return sorted_; }
+    double radius() const { return radius_; }
+
+  private:
+    /// The cell of p; on periodic axes p is moved to the image that lies in that cell.
+    void locate(Vector& p, std::array<int, Dim>& c) const {
         for (int k = 0; k < Dim; ++k) {
+            if (domain_.periodic[k]) {
+                const double L = domain_.length(k);
+                double y = p[k];
+                if (y < domain_.min[k] || y >= domain_.max[k]) {
+                    y = domain_.min[k] + std::fmod(y - domain_.min[k], L);
+                    if (y < domain_.min[k]) y += L;
+                }
+                double v = std::floor((y - origin_[k]) / size_[k]);
+                if (v >= cells_[k]) v = 0, y -= L;  // rounding at the upper end: the image at min
+                if (v < 0) v = 0;
+                p[k] = y;
+                c[k] = int(v);
+            } else {
+                const double v = std::floor((p[k] - origin_[k]) / size_[k]);
+                c[k] = int(std::clamp(v, 0.0, double(cells_[k] - 1)));
+            }
+        }
+    }
+
+    template <class F>
+    void visitCells(const Vector& p, const std::array<int, Dim>& c, F&& f) const {
+        // The cells to visit on each axis and the image shift of each: an axis with fewer than
+        // three cells may meet a cell from both sides, so its image is found per pair instead.
+        std::array<std::array<int, 3>, Dim> visit;
+        std::array<std::array<double, 3>, Dim> shift;
+        std::array<int, Dim> count{};
+        std::array<bool, Dim> perPair{};
+        for (int k = 0; k < Dim; ++k) {
+            perPair[k] = domain_.periodic[k] && cells_[k] < 3;
             for (int o = -1; o <= 1; ++o) {
                 int cc = c[k] + o;
-                if (domain_.periodic[k]) cc = (cc % cells_[k] + cells_[k]) % cells_[k];
-                else if (cc < 0 || cc >= cells_[k]) continue;
+                double s = 0;
+                if (domain_.periodic[k]) {
+                    if (cc < 0)
+                        cc += cells_[k], s = domain_.length(k);
+                    else if (cc >= cells_[k])
+                        cc -= cells_[k], s = -domain_.length(k);
+                } else if (cc < 0 || cc >= cells_[k]) {
+                    continue;
+                }
                 bool seen = false;
                 for (int m = 0; m < count[k]; ++m) seen |= visit[k][m] == cc;
-                if (!seen) visit[k][count[k]++] = cc;
+                if (seen) continue;
+                visit[k][count[k]] = cc;
+                shift[k][count[k]++] = perPair[k] ? 0.0 : s;
             }
         }
         const double r2max = radius_ * radius_;
-        const bool periodic = domain_.anyPeriodic();
         std::array<int, Dim> idx{};
         for (;;) {
             std::array<int, Dim> cell;
-            for (int k = 0; k < Dim; ++k) cell[k] = visit[k][idx[k]];
+            Vector sh;
+            for (int k = 0; k < Dim; ++k) cell[k] = visit[k][idx[k]], sh[k] = shift[k][idx[k]];
             const Index ci = cellIndex(cell);
             for (Index s = start_[ci]; s < start_[ci + 1]; ++s) {
-                const Index j = sorted_[s];
-                Vector dx = xi - x_[j];
-                if (periodic) dx = domain_.minimumImage(dx);
+                const Vector& xj = sortedX_[s];
+                Vector dx;
+                for (int k = 0; k < Dim; ++k) {
+                    dx[k] = (p[k] - xj[k]) + sh[k];
+                    if (perPair[k])
+                        dx[k] -= domain_.length(k) * std::nearbyint(dx[k] / domain_.length(k));
+                }
                 const double r2 = normSqr(dx);
-                if (r2 < r2max) f(j, dx, r2);
+                if (r2 < r2max) f(sorted_[s], dx, r2);
             }
             int k = 0;
             while (k < Dim && ++idx[k] == count[k]) idx[k++] = 0;
@@ -140,19 +227,6 @@ public:
         }
     }
 
-    /// Particle indices ordered by cell: the permutation that makes neighbours near in memory.
-    const std::vector<Index>& sortedOrder() const { return sorted_; }
-    double radius() const { return radius_; }
-
-private:
-    std::array<int, Dim> cellCoords(const Vector& p) const {
-        std::array<int, Dim> c;
-        for (int k = 0; k < Dim; ++k) {
-            const int v = int(std::floor((p[k] - origin_[k]) / size_[k]));
-            c[k] = std::clamp(v, 0, cells_[k] - 1);
-        }
-        return c;
-    }
     Index cellIndex(const std::array<int, Dim>& c) const {
         Index id = 0;
         for (int k = Dim - 1; k >= 0; --k) id = id * Index(cells_[k]) + Index(c[k]);
@@ -163,8 +237,8 @@ private:
     Domain<Dim> domain_{};
     std::array<int, Dim> cells_{};
     Vector origin_{}, size_{};
-    std::vector<Index> cellOf_, start_, sorted_;
-    std::span<const Vector> x_;
+    std::vector<Index> cellOf_, start_, sorted_, slot_;  // slot_: inverse of sorted_
+    std::vector<Vector> sortedX_;  // positions in cell order, at the image of their cell
 };
 
 }  // namespace num

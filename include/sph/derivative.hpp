@@ -2,8 +2,12 @@
 // Accumulated buffers (one set per block of particles), summed in a fixed order after the loop.
 #pragma once
 
+#include <algorithm>
 #include <memory>
+#include <span>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 #include <typeindex>
 #include <variant>
 #include <vector>
@@ -31,11 +35,13 @@ struct NeighbourGeometry {
     PairGeometry<Dim> pair(std::size_t k) const { return {dx[k], r[k], w.empty() ? 0.0 : w[k]}; }
 };
 
-/// Buffers a pair loop accumulates into. Each buffer names the storage level it is added to
-/// after the loop: the value (OrderEnum::ZERO), dt (FIRST) or d2t (SECOND) of its quantity.
+/// Buffers a pair loop accumulates into. Each buffer names the storage level it goes to after
+/// the loop: the value (OrderEnum::ZERO) of its quantity is replaced by the sum; dt (FIRST) or
+/// d2t (SECOND) is added to (the solver zeroes the highest derivatives before initialize, so
+/// the terms' own contributions and the pair sums add up whatever their order).
 template <int Dim>
 class Accumulated {
-public:
+  public:
     template <class T>
     void insert(QuantityId id, OrderEnum target = OrderEnum::ZERO) {
         for (auto& b : buffers_)
@@ -62,11 +68,12 @@ public:
     void reset(Size n) {
         size_ = n;
         for (auto& b : buffers_)
-            std::visit([&](auto& v) { v.assign(n, typename std::decay_t<decltype(v)>::value_type{}); },
-                       b.data);
+            std::visit(
+                [&](auto& v) { v.assign(n, typename std::decay_t<decltype(v)>::value_type{}); },
+                b.data);
     }
 
-    /// Zeroes the storage levels these buffers are added to.
+    /// Zeroes the storage levels these buffers go to.
     void zeroTargets(Storage<Dim>& storage) const {
         for (const auto& b : buffers_)
             std::visit(
@@ -77,7 +84,18 @@ public:
                 b.data);
     }
 
-    /// storage targets += sum over blocks, block 0 first: the order never depends on threads.
+    /// Number of buffers.
+    Size bufferCount() const { return Size(buffers_.size()); }
+    /// True if a buffer for `id` exists.
+    bool has(QuantityId id) const {
+        for (const auto& b : buffers_)
+            if (b.id == id) return true;
+        return false;
+    }
+
+    /// Moves the sum over blocks into the storage, block 0 first, so that the order of the
+    /// additions never depends on threads: value targets become the sum, dt and d2t targets
+    /// get the sum added. Every block must have been created by the same derivatives.
     static void addInto(Storage<Dim>& storage, std::span<const Accumulated> blocks) {
         if (blocks.empty()) return;
         for (std::size_t k = 0; k < blocks[0].buffers_.size(); ++k) {
@@ -86,6 +104,11 @@ public:
                 [&](const auto& v0) {
                     using T = typename std::decay_t<decltype(v0)>::value_type;
                     ArrayView<T> dst = target<T>(storage, b0);
+                    if (v0.size() != dst.size())
+                        throw std::logic_error("accumulated quantity " +
+                                               std::to_string(int(b0.id)) +
+                                               " does not match the particle count");
+                    if (b0.target == OrderEnum::ZERO) std::fill(dst.begin(), dst.end(), T{});
                     for (const Accumulated& blk : blocks) {
                         const auto& v = std::get<std::vector<T>>(blk.buffers_[k].data);
                         for (std::size_t i = 0; i < dst.size(); ++i) dst[i] += v[i];
@@ -95,7 +118,7 @@ public:
         }
     }
 
-private:
+  private:
     struct Buffer {
         QuantityId id;
         OrderEnum target;
@@ -104,9 +127,12 @@ private:
     template <class T>
     static ArrayView<T> target(Storage<Dim>& s, const Buffer& b) {
         switch (b.target) {
-            case OrderEnum::ZERO: return s.template getValue<T>(b.id);
-            case OrderEnum::FIRST: return s.template getDt<T>(b.id);
-            default: return s.template getD2t<T>(b.id);
+            case OrderEnum::ZERO:
+                return s.template getValue<T>(b.id);
+            case OrderEnum::FIRST:
+                return s.template getDt<T>(b.id);
+            default:
+                return s.template getD2t<T>(b.id);
         }
     }
     std::vector<Buffer> buffers_;
@@ -122,7 +148,7 @@ private:
 /// periodic boundaries need.)
 template <int Dim>
 class IDerivative {
-public:
+  public:
     virtual ~IDerivative() = default;
     virtual void create(Accumulated<Dim>& results) = 0;
     virtual void initialize(const Storage<Dim>& input, Accumulated<Dim>& results) = 0;
@@ -141,7 +167,7 @@ public:
 /// per-pair call inlined.
 template <class Derived, int Dim>
 class DerivativeTemplate : public IDerivative<Dim> {
-public:
+  public:
     void evalSymmetric(Size i, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>> grads,
                        const NeighbourGeometry<Dim>& geometry) final {
         evalAll<true>(i, neighs, grads, geometry);
@@ -161,7 +187,7 @@ public:
             d.template eval<Symmetric>(i, j, grad);
     }
 
-private:
+  private:
     template <bool Symmetric>
     void evalAll(Size i, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>> grads,
                  const NeighbourGeometry<Dim>& geometry) {
@@ -174,7 +200,7 @@ private:
 /// composed at compile time, so a fused loop costs no virtual call per pair.
 template <int Dim, class... Parts>
 class FusedDerivative : public DerivativeTemplate<FusedDerivative<Dim, Parts...>, Dim> {
-public:
+  public:
     explicit FusedDerivative(Parts... parts) : parts_(std::move(parts)...) {}
     void create(Accumulated<Dim>& r) override {
         std::apply([&](auto&... p) { (p.create(r), ...); }, parts_);
@@ -191,14 +217,14 @@ public:
                    parts_);
     }
 
-private:
+  private:
     std::tuple<Parts...> parts_;
 };
 
 /// The derivatives of one block. `require` keeps one derivative per type.
 template <int Dim>
 class DerivativeHolder {
-public:
+  public:
     void require(std::unique_ptr<IDerivative<Dim>> derivative) {
         const std::type_index type(typeid(*derivative));
         for (const auto& d : derivatives_)
@@ -231,7 +257,7 @@ public:
         for (auto& d : derivatives_) d->evalAsymmetric(i, n, g, geo);
     }
 
-private:
+  private:
     std::vector<std::unique_ptr<IDerivative<Dim>>> derivatives_;
 };
 

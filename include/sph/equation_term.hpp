@@ -3,10 +3,12 @@
 // Order of the hooks in one evaluation (Solver::evaluate):
 //   1. the highest time derivative of every quantity is set to zero;
 //   2. initialize() of every term, in the order the terms were added;
-//   3. the pair loop: the derivatives each term required (setDerivatives) are evaluated;
-//   4. the accumulated sums are added to the storage;
+//   3. neighbour search, then initialize() of every derivative and the pair loop over the
+//      derivatives the terms required (setDerivatives, once per block when the solver is made);
+//   4. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
+//      d2t target gets its sum added;
 //   5. finalize() of every term, in the order the terms were added.
-// create() runs once, when the solver is set up, before the first evaluation.
+// create() runs once, from Solver::create, before the first evaluation.
 // Terms add to derivatives (+=); a term never assigns a derivative another term writes.
 #pragma once
 
@@ -23,7 +25,7 @@ namespace num::sph {
 
 /// The time-step limits offered by terms; the step is their minimum.
 class TimeStepLimits {
-public:
+  public:
     /// Offers dt for the named criterion (ignored unless positive and finite).
     void offer(const std::string& criterion, Float dt) {
         if (!(dt > 0) || dt == std::numeric_limits<Float>::infinity()) return;
@@ -32,18 +34,32 @@ public:
     Float dt() const { return dt_; }
     const std::string& criterion() const { return criterion_; }
 
-private:
+  private:
     Float dt_ = std::numeric_limits<Float>::infinity();
     std::string criterion_ = "none";
 };
 
+/// The usual time-step criteria (each with its factor from RunSettings); offer them with
+/// TimeStepLimits::offer under the names "courant", "viscous", "diffusion".
+/// Courant: dt <= C h / (c + |v|_max) (Monaghan 1992, sec. 10).
+inline Float courantTimeStep(Float cfl, Float h, Float soundSpeed, Float maxSpeed) {
+    return cfl * h / (soundSpeed + maxSpeed);
+}
+/// Viscous diffusion: dt <= f h^2 / nu (Morris, Fox & Zhu 1997, eq. 23 with f = 0.125).
+inline Float viscousTimeStep(Float factor, Float h, Float nu) { return factor * h * h / nu; }
+/// Heat diffusion: dt <= f h^2 / alpha (Cleary & Monaghan 1999).
+inline Float diffusionTimeStep(Float factor, Float h, Float alpha) {
+    return factor * h * h / alpha;
+}
+
 template <int Dim>
 class IEquationTerm {
-public:
+  public:
     static constexpr int dim = Dim;
     virtual ~IEquationTerm() = default;
     /// Requires the derivatives (pairwise sums) the term needs. Called once per block.
-    virtual void setDerivatives(DerivativeHolder<Dim>& derivatives, const RunSettings& settings) = 0;
+    virtual void setDerivatives(DerivativeHolder<Dim>& derivatives,
+                                const RunSettings& settings) = 0;
     /// Runs before the pair loop, e.g. to compute pressure from density.
     virtual void initialize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
     /// Runs after the pair loop; adds the term's contribution to the derivatives.
@@ -57,7 +73,7 @@ public:
 /// An ordered set of terms, built with makeTerm and + / +=.
 template <int Dim>
 class EquationHolder {
-public:
+  public:
     EquationHolder() = default;
     explicit EquationHolder(std::shared_ptr<IEquationTerm<Dim>> term) {
         terms_.push_back(std::move(term));
@@ -94,7 +110,7 @@ public:
         return nullptr;
     }
 
-private:
+  private:
     std::vector<std::shared_ptr<IEquationTerm<Dim>>> terms_;
 };
 

@@ -24,10 +24,14 @@ inline KernelType kernelFromName(const std::string& name) {
 template <int Dim, class F>
 decltype(auto) withKernel(KernelType type, F&& f) {
     switch (type) {
-        case KernelType::CUBIC_SPLINE: return f(kernels::CubicSpline<Dim, Float>{});
-        case KernelType::WENDLAND_C4: return f(kernels::WendlandC4<Dim, Float>{});
-        case KernelType::QUINTIC_SPLINE: return f(kernels::QuinticSpline<Dim, Float>{});
-        default: return f(kernels::WendlandC2<Dim, Float>{});
+        case KernelType::CUBIC_SPLINE:
+            return f(kernels::CubicSpline<Dim, Float>{});
+        case KernelType::WENDLAND_C4:
+            return f(kernels::WendlandC4<Dim, Float>{});
+        case KernelType::QUINTIC_SPLINE:
+            return f(kernels::QuinticSpline<Dim, Float>{});
+        default:
+            return f(kernels::WendlandC2<Dim, Float>{});
     }
 }
 
@@ -38,7 +42,8 @@ struct RunKernel {
     Float h;
 
     explicit RunKernel(const RunSettings& s)
-        : type(kernelFromName(s.get<std::string>("kernel"))), h(s.get<double>("smoothing_length")) {}
+        : type(kernelFromName(s.get<std::string>("kernel"))),
+          h(s.get<double>("smoothing_length")) {}
 
     Float W(Float r) const {
         return withKernel<Dim>(type, [&](auto k) { return k.W(r, h); });

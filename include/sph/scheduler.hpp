@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "sph/types.hpp"
@@ -12,7 +13,7 @@
 namespace num::sph {
 
 class IScheduler {
-public:
+  public:
     virtual ~IScheduler() = default;
     /// Number of threads the scheduler runs tasks on.
     virtual Size threadCount() const = 0;
@@ -24,7 +25,7 @@ public:
 
 /// Runs every chunk in order on the calling thread.
 class SequentialScheduler final : public IScheduler {
-public:
+  public:
     Size threadCount() const override { return 1; }
     void parallelFor(Size n, Size granularity,
                      const std::function<void(Size, Size)>& task) override {
@@ -35,20 +36,22 @@ public:
 
 /// Runs chunks on a team of OpenMP threads (dynamic schedule).
 class ParallelScheduler final : public IScheduler {
-public:
+  public:
     explicit ParallelScheduler(Size threads);
     Size threadCount() const override { return threads_; }
     void parallelFor(Size n, Size granularity,
                      const std::function<void(Size, Size)>& task) override;
 
-private:
+  private:
     Size threads_;
 };
 
-/// The scheduler for a backend name: "seq" or "omp".
+/// The scheduler for a backend name: "seq" (sequential) or "omp" (also "openmp", "parallel").
 inline std::unique_ptr<IScheduler> makeScheduler(const std::string& backend, Size threads) {
-    if (backend == "seq") return std::make_unique<SequentialScheduler>();
-    return std::make_unique<ParallelScheduler>(threads);
+    if (backend == "seq" || backend == "sequential") return std::make_unique<SequentialScheduler>();
+    if (backend == "omp" || backend == "openmp" || backend == "parallel")
+        return std::make_unique<ParallelScheduler>(threads);
+    throw std::invalid_argument("unknown backend '" + backend + "' (expected seq or omp)");
 }
 
 }  // namespace num::sph

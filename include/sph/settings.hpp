@@ -3,6 +3,7 @@
 // range is a SettingsError whose message names the key and what was expected.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -10,7 +11,6 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
-#include <algorithm>
 #include <variant>
 #include <vector>
 
@@ -46,7 +46,7 @@ struct SettingSpec {
 
 /// A set of declared keys and their current values.
 class ParameterSet {
-public:
+  public:
     ParameterSet() = default;
     explicit ParameterSet(const std::vector<SettingSpec>& schema) {
         for (const auto& s : schema) declare(s);
@@ -87,10 +87,14 @@ public:
     /// Sets a bool, an integer, a real or a string (see setValue).
     template <class T>
     ParameterSet& set(const std::string& key, const T& value) {
-        if constexpr (std::is_same_v<T, bool>) return setValue(key, SettingValue(value));
-        else if constexpr (std::is_integral_v<T>) return setValue(key, std::int64_t(value));
-        else if constexpr (std::is_floating_point_v<T>) return setValue(key, double(value));
-        else return setValue(key, SettingValue(std::string(value)));
+        if constexpr (std::is_same_v<T, bool>)
+            return setValue(key, SettingValue(value));
+        else if constexpr (std::is_integral_v<T>)
+            return setValue(key, std::int64_t(value));
+        else if constexpr (std::is_floating_point_v<T>)
+            return setValue(key, double(value));
+        else
+            return setValue(key, SettingValue(std::string(value)));
     }
 
     template <class T>
@@ -112,7 +116,7 @@ public:
 
     const std::map<std::string, SettingSpec>& specs() const { return specs_; }
 
-private:
+  private:
     const SettingSpec& specOf(const std::string& key) const {
         auto it = specs_.find(key);
         if (it != specs_.end()) return it->second;
@@ -127,9 +131,8 @@ private:
     }
     static void checkRange(const SettingSpec& s, double v) {
         if (!(v >= s.min && v <= s.max))
-            throw SettingsError("setting '" + s.key + "' = " + std::to_string(v) +
-                                " is outside [" + std::to_string(s.min) + ", " +
-                                std::to_string(s.max) + "]");
+            throw SettingsError("setting '" + s.key + "' = " + std::to_string(v) + " is outside [" +
+                                std::to_string(s.min) + ", " + std::to_string(s.max) + "]");
     }
     static std::string typeName(const SettingValue& v) {
         static const char* names[] = {"boolean", "integer", "number", "string"};
@@ -156,19 +159,26 @@ private:
 
 /// Settings of a run: kernel, smoothing length, time-step factors, threads, evaluation mode.
 class RunSettings : public ParameterSet {
-public:
+  public:
     RunSettings() : ParameterSet(schema()) {}
 
     static std::vector<SettingSpec> schema() {
         const double inf = std::numeric_limits<double>::infinity();
         return {
-            {"kernel", std::string("wendland_c2"), "smoothing kernel", 0, 0,
+            {"kernel",
+             std::string("wendland_c2"),
+             "smoothing kernel",
+             0,
+             0,
              {"cubic_spline", "wendland_c2", "wendland_c4", "quintic_spline"}},
             {"smoothing_length", 0.013, "smoothing length h [m]", 1e-300, inf},
             {"threads", std::int64_t(1), "worker threads of the parallel scheduler", 1, 1024},
-            {"evaluation", std::string("asymmetric"),
-             "pair evaluation: asymmetric (gather per particle) or symmetric (each pair once)", 0,
-             0, {"asymmetric", "symmetric"}},
+            {"evaluation",
+             std::string("asymmetric"),
+             "pair evaluation: asymmetric (gather per particle) or symmetric (each pair once)",
+             0,
+             0,
+             {"asymmetric", "symmetric"}},
             {"blocks", std::int64_t(4),
              "particle blocks of the pair loop; results depend on it, never on threads", 1, 4096},
             {"cfl", 0.25, "Courant factor C in dt <= C h / (c + |v|)", 1e-6, 1.0},
@@ -185,7 +195,7 @@ public:
 
 /// A material: a name and its parameters.
 class IMaterial {
-public:
+  public:
     virtual ~IMaterial() = default;
     virtual const std::string& name() const = 0;
     virtual const ParameterSet& params() const = 0;
@@ -194,7 +204,7 @@ public:
 
 /// The default material with the parameters of the built-in physics.
 class Material : public IMaterial {
-public:
+  public:
     explicit Material(std::string name = "water") : name_(std::move(name)), params_(schema()) {}
 
     const std::string& name() const override { return name_; }
@@ -215,7 +225,7 @@ public:
         };
     }
 
-private:
+  private:
     std::string name_;
     ParameterSet params_;
 };

@@ -19,7 +19,7 @@ namespace num::sph {
 
 template <int Dim>
 class Solver {
-public:
+  public:
     using Vec = Vector<Dim>;
 
     Solver(IScheduler& scheduler, const RunSettings& settings, EquationHolder<Dim> equations,
@@ -52,7 +52,6 @@ public:
         if (domain_.anyPeriodic())
             for (Vec& p : x) p = domain_.wrap(p);
         zeroHighestDerivatives(storage);
-        accumulated_[0].zeroTargets(storage);
         equations_.initialize(scheduler_, storage, t);
 
         grid_.build(x, kernel_.supportRadius(), domain_);
@@ -92,7 +91,7 @@ public:
     const RunKernel<Dim>& kernel() const { return kernel_; }
     IScheduler& scheduler() { return scheduler_; }
 
-private:
+  private:
     struct Scratch {
         std::vector<Size> neighs;
         std::vector<Vec> grads, dx;
@@ -105,7 +104,8 @@ private:
             if (q.order() == OrderEnum::ZERO) return;
             q.visit([&](auto& b) {
                 auto& top = b.level(int(q.order()));
-                std::fill(top.begin(), top.end(), typename std::decay_t<decltype(top)>::value_type{});
+                std::fill(top.begin(), top.end(),
+                          typename std::decay_t<decltype(top)>::value_type{});
             });
         });
     }
@@ -125,7 +125,7 @@ private:
                     sc.neighs.clear();
                     sc.dx.clear();
                     sc.r.clear();
-                    grid_.forEachNeighbour(x[i], [&](Size j, const Vec& dx, Float r2) {
+                    grid_.forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
                         if (symmetric_ ? j > i : j != i) {
                             sc.neighs.push_back(j);
                             sc.dx.push_back(dx);
@@ -136,12 +136,14 @@ private:
                     sc.pairs += m;
                     sc.grads.resize(m);
                     for (std::size_t k = 0; k < m; ++k)
-                        sc.grads[k] = sc.dx[k] * (Kernel::dW_dr(sc.r[k], h) / sc.r[k]);
+                        sc.grads[k] = sc.dx[k] * Kernel::gradFactor(sc.r[k], h);
                     sc.w.resize(needsW_ ? m : 0);
                     for (std::size_t k = 0; k < sc.w.size(); ++k) sc.w[k] = Kernel::W(sc.r[k], h);
                     const NeighbourGeometry<Dim> geo{sc.dx, sc.r, sc.w};
-                    if (symmetric_) holders_[b].evalSymmetric(i, sc.neighs, sc.grads, geo);
-                    else holders_[b].evalAsymmetric(i, sc.neighs, sc.grads, geo);
+                    if (symmetric_)
+                        holders_[b].evalSymmetric(i, sc.neighs, sc.grads, geo);
+                    else
+                        holders_[b].evalAsymmetric(i, sc.neighs, sc.grads, geo);
                 }
             }
         });

@@ -29,9 +29,9 @@ struct QuantityBuffers {
 
 template <int Dim>
 class Quantity {
-public:
-    using Data = std::variant<QuantityBuffers<Float>, QuantityBuffers<Vector<Dim>>,
-                              QuantityBuffers<int>>;
+  public:
+    using Data =
+        std::variant<QuantityBuffers<Float>, QuantityBuffers<Vector<Dim>>, QuantityBuffers<int>>;
 
     Quantity(OrderEnum order, Data data) : order_(order), data_(std::move(data)) {}
 
@@ -39,7 +39,9 @@ public:
     int levels() const { return int(order_) + 1; }
 
     template <class T>
-    bool holds() const { return std::holds_alternative<QuantityBuffers<T>>(data_); }
+    bool holds() const {
+        return std::holds_alternative<QuantityBuffers<T>>(data_);
+    }
 
     template <class T>
     QuantityBuffers<T>& buffers() {
@@ -62,18 +64,22 @@ public:
 
     /// Calls f(buffers) with the typed buffers.
     template <class F>
-    decltype(auto) visit(F&& f) { return std::visit(std::forward<F>(f), data_); }
+    decltype(auto) visit(F&& f) {
+        return std::visit(std::forward<F>(f), data_);
+    }
     template <class F>
-    decltype(auto) visit(F&& f) const { return std::visit(std::forward<F>(f), data_); }
+    decltype(auto) visit(F&& f) const {
+        return std::visit(std::forward<F>(f), data_);
+    }
 
-private:
+  private:
     OrderEnum order_;
     Data data_;
 };
 
 template <int Dim>
 class Storage {
-public:
+  public:
     using Vec = Vector<Dim>;
 
     /// Number of particles.
@@ -112,17 +118,29 @@ public:
     }
 
     template <class T>
-    ArrayView<T> getValue(QuantityId id) { return level<T>(id, 0); }
+    ArrayView<T> getValue(QuantityId id) {
+        return level<T>(id, 0);
+    }
     template <class T>
-    ArrayView<const T> getValue(QuantityId id) const { return level<T>(id, 0); }
+    ArrayView<const T> getValue(QuantityId id) const {
+        return level<T>(id, 0);
+    }
     template <class T>
-    ArrayView<T> getDt(QuantityId id) { return level<T>(id, 1); }
+    ArrayView<T> getDt(QuantityId id) {
+        return level<T>(id, 1);
+    }
     template <class T>
-    ArrayView<const T> getDt(QuantityId id) const { return level<T>(id, 1); }
+    ArrayView<const T> getDt(QuantityId id) const {
+        return level<T>(id, 1);
+    }
     template <class T>
-    ArrayView<T> getD2t(QuantityId id) { return level<T>(id, 2); }
+    ArrayView<T> getD2t(QuantityId id) {
+        return level<T>(id, 2);
+    }
     template <class T>
-    ArrayView<const T> getD2t(QuantityId id) const { return level<T>(id, 2); }
+    ArrayView<const T> getD2t(QuantityId id) const {
+        return level<T>(id, 2);
+    }
 
     /// Several values of one type at once: `std::tie(u, m, rho) = s.getValues<Float>(...)`.
     template <class T, class... Ids>
@@ -153,8 +171,11 @@ public:
         for (const auto& [id, q] : quantities_) f(id, q);
     }
 
-    /// Appends the particles of `other`, which must have the same quantities and types.
+    /// Appends the particles of `other`, which must have the same quantities and types (halo
+    /// particles, a new inlet...). Its materials join this storage's table (a material both
+    /// share is kept once) and the appended QuantityId::MATERIAL indices are renumbered.
     void append(const Storage& other) {
+        if (other.quantities_.empty()) return;
         if (quantities_.empty()) {
             *this = other;
             return;
@@ -176,13 +197,26 @@ public:
                 for (int k = 0; k < q.levels(); ++k) {
                     auto& dst = b.level(k);
                     const auto& src = ob.level(k);
-                    if (src.empty()) dst.resize(dst.size() + other.size_);
-                    else dst.insert(dst.end(), src.begin(), src.end());
+                    if (src.empty())
+                        dst.resize(dst.size() + other.size_);
+                    else
+                        dst.insert(dst.end(), src.begin(), src.end());
                 }
             });
         }
+        std::vector<int> materialIndex(other.materials_.size());
+        for (std::size_t m = 0; m < other.materials_.size(); ++m) {
+            auto it = std::find(materials_.begin(), materials_.end(), other.materials_[m]);
+            materialIndex[m] = int(it - materials_.begin());
+            if (it == materials_.end()) materials_.push_back(other.materials_[m]);
+        }
+        if (has(QuantityId::MATERIAL) && !materialIndex.empty()) {
+            auto& ids = get(QuantityId::MATERIAL).template buffers<int>().value;
+            for (std::size_t i = size_; i < ids.size(); ++i)
+                if (ids[i] >= 0 && std::size_t(ids[i]) < materialIndex.size())
+                    ids[i] = materialIndex[ids[i]];
+        }
         size_ += other.size_;
-        materials_.insert(materials_.end(), other.materials_.begin(), other.materials_.end());
     }
 
     /// Removes the particles whose indices are listed (any order, duplicates ignored).
@@ -203,11 +237,19 @@ public:
     void reorder(const std::vector<Size>& permutation) {
         if (permutation.size() != size_)
             throw std::invalid_argument("reorder: permutation has the wrong length");
+        std::vector<char> seen(size_, 0);
+        for (Size p : permutation) {
+            if (p >= size_ || seen[p])
+                throw std::invalid_argument("reorder: not a permutation of the particles");
+            seen[p] = 1;
+        }
         gather(permutation);
     }
 
-    /// Keeps the particles listed, in the order listed.
+    /// Keeps the particles listed, in the order listed (indices may repeat: copies).
     void gather(const std::vector<Size>& order) {
+        for (Size i : order)
+            if (i >= size_) throw std::out_of_range("gather: particle index out of range");
         for (auto& [id, q] : quantities_) {
             q.visit([&](auto& b) {
                 for (int k = 0; k < q.levels(); ++k) {
@@ -225,7 +267,7 @@ public:
     std::vector<std::shared_ptr<IMaterial>>& materials() { return materials_; }
     const std::vector<std::shared_ptr<IMaterial>>& materials() const { return materials_; }
 
-private:
+  private:
     template <class T>
     ArrayView<T> level(QuantityId id, int k) {
         Quantity<Dim>& q = get(id);

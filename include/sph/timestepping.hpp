@@ -3,9 +3,12 @@
 // order FIRST (density, temperature...) are advanced with their dt.
 #pragma once
 
+#include <limits>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "sph/solver.hpp"
 
@@ -27,45 +30,58 @@ void forEachEvolved(Storage<Dim>& s, F&& f) {
 
 template <int Dim>
 class ITimeStepping {
-public:
+  public:
     virtual ~ITimeStepping() = default;
     /// Advances the storage from t to t + dt. Derivatives at t must be current (see prime()).
     virtual void step(Solver<Dim>& solver, Storage<Dim>& storage, Float t, Float dt) = 0;
     virtual std::string name() const = 0;
 };
 
-/// Kick-drift-kick leapfrog (velocity Verlet); symplectic and second order for positions.
-/// First-order quantities get the same two half kicks: q += dt/2 (dq_n + dq_{n+1}).
+/// Kick-drift-kick leapfrog (velocity Verlet) for second-order quantities: symplectic and
+/// second order (Hairer, Lubich & Wanner 2003, sec. I.1.4):
+///     v += dt/2 a_n;  x += dt v;  evaluate;  v += dt/2 a_{n+1}.
+/// First-order quantities (density, energy...) are advanced with Heun's rule, also second
+/// order: predicted q* = q_n + dt dq_n at evaluation, then q_{n+1} = q_n + dt/2 (dq_n + dq*).
 template <int Dim>
 class LeapfrogKDK final : public ITimeStepping<Dim> {
-public:
+  public:
     void step(Solver<Dim>& solver, Storage<Dim>& s, Float t, Float dt) override {
-        halfKick(s, dt);
+        const Float half = 0.5 * dt;
+        saved_.clear();
         detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
-            if (o == OrderEnum::SECOND)
+            if (o == OrderEnum::SECOND) {
+                for (std::size_t i = 0; i < b.value.size(); ++i) {
+                    b.dt[i] += b.d2t[i] * half;
+                    b.value[i] += b.dt[i] * dt;
+                }
+            } else {
+                saved_.emplace_back(b.dt);
                 for (std::size_t i = 0; i < b.value.size(); ++i) b.value[i] += b.dt[i] * dt;
+            }
         });
         solver.evaluate(s, t + dt);
-        halfKick(s, dt);
+        std::size_t k = 0;
+        detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            if (o == OrderEnum::SECOND) {
+                for (std::size_t i = 0; i < b.value.size(); ++i) b.dt[i] += b.d2t[i] * half;
+            } else {
+                const auto& old = std::get<std::decay_t<decltype(b.dt)>>(saved_[k++]);
+                for (std::size_t i = 0; i < b.value.size(); ++i)
+                    b.value[i] += (b.dt[i] - old[i]) * half;
+            }
+        });
     }
     std::string name() const override { return "leapfrog"; }
 
-private:
-    static void halfKick(Storage<Dim>& s, Float dt) {
-        const Float half = 0.5 * dt;
-        detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
-            auto& target = o == OrderEnum::SECOND ? b.dt : b.value;
-            const auto& rate = o == OrderEnum::SECOND ? b.d2t : b.dt;
-            for (std::size_t i = 0; i < target.size(); ++i) target[i] += rate[i] * half;
-        });
-    }
+  private:
+    std::vector<std::variant<std::vector<Float>, std::vector<Vector<Dim>>>> saved_;
 };
 
 /// Predictor-corrector: predict with the derivatives at t, evaluate, correct with the change
 /// of the highest derivative (v += dt/2 da, x += dt^2/6 da; first order q += dt/2 dq).
 template <int Dim>
 class PredictorCorrector final : public ITimeStepping<Dim> {
-public:
+  public:
     void step(Solver<Dim>& solver, Storage<Dim>& s, Float t, Float dt) override {
         saved_.clear();
         detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
@@ -97,7 +113,7 @@ public:
     }
     std::string name() const override { return "predictor_corrector"; }
 
-private:
+  private:
     std::vector<std::variant<std::vector<Float>, std::vector<Vector<Dim>>>> saved_;
 };
 
@@ -105,7 +121,7 @@ private:
 /// for tests and comparisons.
 template <int Dim>
 class ExplicitEuler final : public ITimeStepping<Dim> {
-public:
+  public:
     void step(Solver<Dim>& solver, Storage<Dim>& s, Float t, Float dt) override {
         detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
             for (std::size_t i = 0; i < b.value.size(); ++i) {
@@ -130,7 +146,7 @@ std::unique_ptr<ITimeStepping<Dim>> makeIntegrator(const std::string& name) {
 /// The run loop: adaptive step from the solver's limits, reordering by cell every few steps.
 template <int Dim>
 class Run {
-public:
+  public:
     Run(Storage<Dim>& storage, Solver<Dim>& solver, ITimeStepping<Dim>& integrator, Float t0 = 0)
         : storage_(storage), solver_(solver), integrator_(integrator), time_(t0) {
         reorderEvery_ = Size(solver.settings().template get<std::int64_t>("reorder_every"));
@@ -155,7 +171,8 @@ public:
         criterion_ = limits.criterion();
         if (!(dt < std::numeric_limits<Float>::infinity()))
             throw std::runtime_error(
-                "no time-step criterion applies (no forces, no sound speed): set dt_fixed or dt_max");
+                "no time-step criterion applies (no forces, no sound speed): set dt_fixed or "
+                "dt_max");
         if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
         integrator_.step(solver_, storage_, time_, dt);
         time_ += dt;
@@ -176,7 +193,7 @@ public:
     void setTime(Float t, Size steps) { time_ = t, steps_ = steps; }
     void markPrimed(bool p) { primed_ = p; }
 
-private:
+  private:
     Storage<Dim>& storage_;
     Solver<Dim>& solver_;
     ITimeStepping<Dim>& integrator_;

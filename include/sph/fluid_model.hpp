@@ -60,6 +60,7 @@
 #include "sph/terms/particle_shifting.hpp"
 #include "sph/terms/pressure_gradient.hpp"
 #include "sph/terms/summation_density.hpp"
+#include "sph/terms/heat_model.hpp"
 
 namespace num::sph {
 
@@ -118,6 +119,10 @@ struct FluidModel {
     /// Terms appended after the fluid terms, before boundaries are held and particles
     /// contained: heat conduction, buoyancy, user terms.
     EquationHolder<Dim> extraTerms;
+
+    /// Heat: conduction, thermal walls and bodies, buoyancy, temperature-dependent viscosity
+    /// (terms/heat_model.hpp). Everything off by default.
+    HeatModel<Dim> heat;
 
     /// The storage's material table (MATERIAL indexes it); empty: one "water" made from the
     /// fields above.
@@ -200,7 +205,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     for (int k = 0; k < Dim; ++k) boundaries |= geometry.hasWall(k, 0) || geometry.hasWall(k, 1);
     const bool summation = model.density == DensityMode::SUMMATION;
 
-    EquationHolder<Dim> eq;
+    EquationHolder<Dim> eq = makeHeatPreEquations(model.heat);
     auto gather = std::make_shared<NeighbourGather<Dim>>(geometry.domain);
     if (summation || boundaries) eq += makeTerm<NeighbourRefresh<Dim>>(gather);
     if (summation) eq += makeTerm<SummationDensity<Dim>>(gather);
@@ -220,6 +225,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     if (model.bodyForce) eq += makeTerm<BodyForceTerm<Dim>>(model.bodyForce);
     if (model.shifting)
         eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, model.maxVelocity);
+    eq += makeHeatEquations(model.heat, model.bodyForce);
     eq += model.extraTerms;
     eq += makeTerm<BoundaryHold<Dim>>();
     if (model.containParticles && boundaries) eq += makeTerm<ParticleContainment<Dim>>(geometry);

@@ -11,6 +11,7 @@
 // every particle when the storage has no KIND) feel it.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "sph/equation_term.hpp"
@@ -21,13 +22,17 @@ namespace num::sph {
 template <int Dim>
 class BoussinesqBuoyancy : public IEquationTerm<Dim> {
   public:
-    /// gravity: the gravitational acceleration vector g [m/s^2] (e.g. (0, -9.81)).
-    explicit BoussinesqBuoyancy(Vector<Dim> gravity) : g_(gravity) {}
+    /// gravity: the gravitational acceleration g [m/s^2] (e.g. (0, -9.81)), constant or of
+    /// time (the same ramp as the gravity term).
+    explicit BoussinesqBuoyancy(Vector<Dim> gravity) : g_([gravity](Float) { return gravity; }) {}
+    explicit BoussinesqBuoyancy(std::function<Vector<Dim>(Float)> gravity)
+        : g_(std::move(gravity)) {}
 
     void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
 
-    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
+        const Vector<Dim> g = g_(t);
         const std::vector<ThermalMaterial> table = thermalMaterials(s);
         const auto T = s.template getValue<Float>(QuantityId::TEMPERATURE);
         const auto a = s.template getD2t<Vector<Dim>>(QuantityId::POSITION);
@@ -40,7 +45,7 @@ class BoussinesqBuoyancy : public IEquationTerm<Dim> {
             for (Size i = b; i < e; ++i) {
                 if (hasKind && kind[i] != int(ParticleKind::FLUID)) continue;
                 const ThermalMaterial& m = table[hasMat ? mat[i] : 0];
-                a[i] += g_ * (-m.expansion * (T[i] - m.referenceTemperature));
+                a[i] += g * (-m.expansion * (T[i] - m.referenceTemperature));
             }
         });
     }
@@ -50,10 +55,10 @@ class BoussinesqBuoyancy : public IEquationTerm<Dim> {
                                        material.params().get<double>("reference_temperature"));
     }
 
-    const Vector<Dim>& gravity() const { return g_; }
+    Vector<Dim> gravity(Float t) const { return g_(t); }
 
   private:
-    Vector<Dim> g_;
+    std::function<Vector<Dim>(Float)> g_;
 };
 
 }  // namespace num::sph

@@ -7,10 +7,11 @@
 //   Water (Vogel 1921 fit, T in degC):  mu(T) = A exp(B / (T + 273.15 - C)),
 //       A = 2.939e-5 Pa s, B = 507.88 K, C = 149.3 K (mu(20 degC) = 1.003e-3 Pa s),
 //       nu = mu / rho0.
-// Boundary particles keep their value (their viscosity is that of the wall condition).
+// Boundary particles keep their value (their viscosity is that of the wall condition). Runs
+// in initialize, so it must come before the viscous terms (makeHeatPreEquations); their
+// time-step limit reads the updated values.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -69,17 +70,6 @@ class TemperatureViscosity : public IEquationTerm<Dim> {
                                        p.get<double>("reference_temperature"));
         storage.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO,
                                        p.get<double>("viscosity"));
-    }
-
-    /// The viscous limit dt <= viscous_factor h^2 / nu_max at the current temperatures.
-    void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,
-                       TimeStepLimits& limits) const override {
-        Float numax = 0;
-        for (Float v : s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY))
-            numax = std::max(numax, v);
-        const Float h = settings.get<double>("smoothing_length");
-        if (numax > 0)
-            limits.offer("viscous", settings.get<double>("viscous_factor") * h * h / numax);
     }
 
   private:

@@ -173,9 +173,10 @@ class Run {
             throw std::runtime_error(
                 "no time-step criterion applies (no forces, no sound speed): set dt_fixed or "
                 "dt_max");
+        const bool last = time_ + dt >= tEnd;
         if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
         integrator_.step(solver_, storage_, time_, dt);
-        time_ += dt;
+        time_ = last ? tEnd : time_ + dt;
         ++steps_;
         lastDt_ = dt;
         return dt;

@@ -73,7 +73,7 @@ void runPulse(const std::string& name, double dx) {
         maxErr = std::max(maxErr, err);
         if (norm(xs[i]) < 3 * sigma) sumErr += err, ++inside;
         bool onAxis = true;  // the line of particles next to the x axis
-        for (int k = 1; k < Dim; ++k) onAxis &= std::abs(xs[i][k] - 0.5 * dx) < 1e-9;
+        for (int k = 1; k < Dim; ++k) onAxis &= xs[i][k] > -1e-9 && xs[i][k] < 0.5 * dx + 1e-9;
         if (onAxis) result.profile.push_back({xs[i][0], T[i], Ta, tEnd});
     }
     std::sort(result.profile.begin(), result.profile.end(),

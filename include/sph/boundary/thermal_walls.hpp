@@ -7,7 +7,7 @@
 //   ADIABATIC          Neumann, zero flux: the conduction pair sum skips every pair with them.
 //   HEAT_FLUX          prescribed flux q'' [W/m^2]: the particles conduct and receive
 //                      dT/dt += s / c with s = heat_ids::HEAT_SOURCE [W/kg]; setHeatFlux gives
-//                      a layer of them the source s_b = q'' A_b / m_b with sum_b A_b = A, so the
+//                      a layer of them of mass M the source s = q'' A / M, so the
 //                      power q'' A enters the domain exactly and reaches the fluid by conduction
 //                      (a heater plate; in steady state the flux into the fluid is q'').
 //   CONDUCTING         a solid (or fluid) with its own material: conjugate heat transfer.
@@ -87,8 +87,8 @@ class ThermalBoundary : public IEquationTerm<Dim> {
     }
 
     /// Makes the selected particles a heater delivering `flux` [W/m^2] through `area` [m^2]
-    /// (in 2D a length, per unit depth): each gets the source q'' A m_b / (M sum) so that the
-    /// total power is flux * area whatever the particle masses.
+    /// (in 2D a length, per unit depth): each gets the source s = q'' A / M [W/kg], M the mass
+    /// of the selected particles, so that the total power is flux * area.
     static void setHeatFlux(Storage<Dim>& s, Float flux, Float area,
                             const std::function<bool(Size)>& select) {
         setThermalCondition(s, ThermalCondition::HEAT_FLUX, select);

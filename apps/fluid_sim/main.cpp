@@ -1,16 +1,9 @@
-// fluid_sim (2D). Until the scene runner lands: prints the seed kernel table the app uses.
-#include <cstdio>
+// fluid_sim: 2D water with heat transfer. Without a scene file it runs its built-in scene, a dam
+// break of 20 C water past a hot (90 C) and a cold (0 C) body (scenes/dam_break_hot_cold_2d.json).
+// Everything else is shared with fluid_sim_3d: num::io::runApp (include/io/app.hpp).
+#include "default_scene.hpp"
+#include "io/app.hpp"
 
-#include "kernel.hpp"
-
-int main() {
-    const float h = 0.013f;
-    std::printf("fluid_sim 0.1.0: 2D cubic spline kernel, h = %g\n", h);
-    std::printf("%8s %14s %14s %14s\n", "r/h", "W", "dW_dr", "Spiky_dW_dr");
-    for (int k = 0; k <= 8; ++k) {
-        const float r = 0.25f * float(k) * h;
-        std::printf("%8.2f %14.6g %14.6g %14.6g\n", r / h, physics::Kernel::W(r, h),
-                    physics::Kernel::dW_dr(r, h), physics::Kernel::Spiky_dW_dr(r, h));
-    }
-    return 0;
+int main(int argc, char** argv) {
+    return num::io::runApp<2>(argc, argv, {"fluid_sim", kDefaultScene, kDefaultSceneName, {}});
 }

@@ -93,7 +93,9 @@ struct PhysicsSpec {
     std::string density = "continuity";  ///< continuity or summation
     double densityDiffusion = 0.1;       ///< delta-SPH coefficient
     bool shifting = true;
-    double gravityRamp = 0;  ///< seconds over which gravity rises from 0
+    double gravityRamp = 0;         ///< seconds over which gravity rises from 0
+    std::string eos = "tait";       ///< tait or linear
+    double backgroundPressure = 0;  ///< [Pa]
 };
 
 template <int Dim>

@@ -120,7 +120,7 @@ Image renderParticles(const sph::Storage<Dim>& s, const RenderSettings<Dim>& r, 
         img.line(px(boxEdges[e][0]), py(boxEdges[e][1]), px(boxEdges[e + 1][0]),
                  py(boxEdges[e + 1][1]), kWall);
     for (const auto& p : parts) img.fillDisc(px(p.u), py(p.v), radius, p.c);
-    img.text(margin, 12, "t = " + format("%.3f", time) + " s", kText, 2);
+    img.text(margin, 12, "time " + format("%.3f", time) + " s", kText, 2);
     if (!r.title.empty()) img.text(margin + 200, 12, r.title, kText, 2);
     colourBar(img, margin + plotW + 30, top + 20, std::min(top + plotH - 10, top + 20 + 300),
               r.colorMin, r.colorMax);

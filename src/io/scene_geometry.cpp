@@ -141,6 +141,18 @@ void checkSceneGeometry(const Scene<Dim>& s) {
                              "a periodic axis at least twice the kernel support (" +
                                  std::to_string(2 * support) + " m) long",
                              std::to_string(s.domainMax[k] - s.domainMin[k]) + " m");
+    for (int k = 0; k < Dim; ++k) {
+        const double cells = (s.domainMax[k] - s.domainMin[k]) / s.spacing;
+        if (s.sides[k][0].type == SideType::PERIODIC &&
+            std::abs(cells - std::round(cells)) > 1e-6 * cells)
+            throw sceneError(file, "particles.spacing",
+                             "a spacing that divides the periodic length " +
+                                 std::to_string(s.domainMax[k] - s.domainMin[k]) + " m of axis " +
+                                 std::to_string(k),
+                             std::to_string(s.spacing),
+                             "use " + std::to_string((s.domainMax[k] - s.domainMin[k]) /
+                                                     std::max(1.0, std::round(cells))));
+    }
 }
 
 template void checkSceneGeometry<2>(const Scene<2>&);

@@ -54,8 +54,7 @@ MaterialSpec readMaterial(const At& a, const std::string& name) {
     m.artificialViscosity = a.number("artificial_viscosity", m.artificialViscosity, 0, 10);
     m.conductivity = a.number("conductivity", m.conductivity, 0, 1e6, false, "W/(m K)");
     m.heatCapacity = a.number("heat_capacity", m.heatCapacity, 0, 1e7, true, "J/(kg K)");
-    m.thermalExpansion =
-        a.number("thermal_expansion", m.thermalExpansion, -0.01, 0.01, false, "1/K");
+    m.thermalExpansion = a.number("thermal_expansion", m.thermalExpansion, 0, 0.01, false, "1/K");
     m.referenceTemperature =
         a.number("reference_temperature", m.referenceTemperature, -273.15, 1e4, false, "degC");
     return m;
@@ -330,6 +329,8 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
         s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
         s.maxSpeed = ph.number("max_speed", 0, 0, 1e6, false, "m/s");
+        if (ph.has("eos")) s.physics.eos = ph["eos"].choice({"tait", "linear"});
+        s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
     }
     checkSceneGeometry(s);
     return s;

@@ -1,0 +1,23 @@
+// The command line shared by fluid_sim (Dim = 2) and fluid_sim_3d (Dim = 3): options, the
+// built-in default scene, and the mapping of every error to its message and exit code.
+#pragma once
+
+#include <string>
+
+#include "io/fields.hpp"
+
+namespace num::io {
+
+struct AppInfo {
+    std::string name;          ///< program name
+    std::string defaultScene;  ///< the built-in scene's JSON text
+    std::string
+        defaultSceneName;   ///< its file name (for messages), e.g. dam_break_hot_cold_2d.json
+    FieldNames fieldNames;  ///< names of user quantities in the outputs
+};
+
+/// Parses the command line and runs; returns the process exit code (docs/scenes.md).
+template <int Dim>
+int runApp(int argc, char** argv, const AppInfo& info);
+
+}  // namespace num::io

@@ -1,0 +1,58 @@
+// From a checked Scene to what the engine runs: run settings, the fluid model (with heat and
+// buoyancy terms), the geometry, the initial particles, and emitters that add particles.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/scene.hpp"
+#include "sph/fluid_model.hpp"
+
+namespace num::io {
+
+template <int Dim>
+struct SceneSetup {
+    sph::RunSettings settings;
+    sph::FluidModel<Dim> model;
+    sph::FluidGeometry<Dim> geometry;
+    std::map<std::string, int> materialIndex;  ///< scene material name -> storage table index
+    int fluidMaterial = 0;                     ///< the material of the equation of state
+    int wallLayers = 1;
+    double velocityScale = 1;  ///< U of the "auto" sound speed [m/s]
+    /// One particle per emitter with every quantity set, to be copied when emitting.
+    std::vector<sph::Storage<Dim>> emitterTemplates;
+    /// Gravity at time t (expressions of t; x, y, z = 0), ramp included.
+    sph::BodyForce<Dim> gravity;
+};
+
+/// Builds settings, model and geometry. `threads` goes into the settings.
+template <int Dim>
+SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads);
+
+/// The initial particles: the model's particles, then the scene's per-particle expressions
+/// (temperature, pressure, velocity of fluid blocks) and thermal conditions of walls and bodies.
+template <int Dim>
+sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& setup);
+
+/// Emitter state: the layers of particles each emitter has injected so far.
+template <int Dim>
+class Emitters {
+  public:
+    Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup);
+    /// Adds the layers due by time t; returns the number of particles added.
+    std::size_t emit(sph::Storage<Dim>& storage, double t);
+    std::vector<std::uint64_t>& layers() { return layers_; }
+    std::size_t emitted() const { return emitted_; }
+    void setEmitted(std::size_t n) { emitted_ = n; }
+
+  private:
+    const Scene<Dim>& scene_;
+    const SceneSetup<Dim>& setup_;
+    std::vector<std::vector<sph::Vector<Dim>>> discs_;  ///< lattice offsets of each nozzle
+    std::vector<std::uint64_t> layers_;
+    std::size_t emitted_ = 0;
+};
+
+}  // namespace num::io

@@ -1,0 +1,138 @@
+#include "io/app.hpp"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+
+#include "io/errors.hpp"
+#include "io/simulation.hpp"
+#include "sph/settings.hpp"
+
+namespace num::io {
+
+namespace {
+
+std::string examples(const std::string& name, int dim) {
+    const std::string other = dim == 2 ? "hoses_3d.json" : "dam_break_hot_cold_2d.json";
+    const std::string scene =
+        dim == 2 ? "scenes/dam_break_hot_cold_2d.json" : "scenes/dam_break_3d.json";
+    return "Examples:\n"
+           "  " +
+           name +
+           "                               run the built-in default scene\n"
+           "  " +
+           name + " " + scene +
+           "\n"
+           "  " +
+           name + " " + scene +
+           " --out out/mine --end-time 0.5\n"
+           "  " +
+           name + " " + scene +
+           " --set particles.spacing=0.01 --set time.cfl=0.2\n"
+           "  " +
+           name +
+           " --threads 2 --backend omp --checkpoint-every 0.5\n"
+           "  " +
+           name +
+           " --restart out/<dir>/checkpoint_0001.chk\n"
+           "  " +
+           name +
+           " --print-scene > my_scene.json   start a scene of your own\n"
+           "Scene format and exit codes: docs/scenes.md. Outputs: a ParaView series (.pvd), PNG\n"
+           "pictures, probes.csv and summary.json in the output directory.\n"
+           "(" +
+           other + " is a " + std::to_string(5 - dim) + "D scene: run it with " +
+           (dim == 2 ? "fluid_sim_3d" : "fluid_sim") + ".)";
+}
+
+}  // namespace
+
+template <int Dim>
+int runApp(int argc, char** argv, const AppInfo& info) {
+    CLI::App app{"Smoothed Particle Hydrodynamics of water with heat transfer in " +
+                     std::to_string(Dim) + "D (numerics 0.1.0).",
+                 info.name};
+    std::string sceneFile;
+    std::vector<std::string> sets;
+    RunOptions opt;
+    opt.program = info.name;
+    opt.fieldNames = info.fieldNames;
+    std::string out, restart;
+    double endTime = 0;
+    bool printScene = false;
+    app.add_option(
+        "scene", sceneFile,
+        "scene file (JSON); without it the built-in scene " + info.defaultSceneName + " runs");
+    app.add_option("--out", out, "output directory (default: the scene's output.directory)");
+    app.add_option("--threads", opt.threads, "threads of the omp backend (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--backend", opt.backend, "seq (one thread) or omp (default)")
+        ->check(CLI::IsMember({"seq", "omp"}));
+    app.add_option("--end-time", endTime, "end time [s] (default: the scene's time.end)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--set", sets,
+                   "override a scene value by its dotted path, e.g.\n"
+                   "--set particles.spacing=0.01 --set fluids.0.temperature=30 "
+                   "(repeatable)");
+    app.add_option("--restart", restart, "continue from a checkpoint file");
+    app.add_option("--checkpoint-every", opt.checkpointEvery,
+                   "write a checkpoint every T simulated seconds")
+        ->check(CLI::PositiveNumber);
+    app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors");
+    app.add_flag("--print-scene", printScene, "print the scene (after --set) as JSON and exit");
+    app.set_version_flag("--version", info.name + " (numerics) 0.1.0");
+    app.footer(examples(info.name, Dim));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "%s: error: %s\nRun '%s --help' for the options and examples.\n",
+                     info.name.c_str(), e.what(), info.name.c_str());
+        return int(ExitCode::USAGE);
+    }
+    if (!out.empty()) opt.outDir = out;
+    if (endTime > 0) opt.endTime = endTime;
+    if (!restart.empty()) opt.restart = restart;
+    try {
+        SceneDocument doc = !sceneFile.empty() ? SceneDocument::fromFile(sceneFile)
+                            : opt.restart
+                                ? sceneOfCheckpoint(*opt.restart, Dim)
+                                : SceneDocument::fromText(info.defaultScene, info.defaultSceneName);
+        for (const std::string& s : sets) doc.set(s);
+        const int dim = doc.dimension();
+        if (dim != Dim)
+            throw AppError(ExitCode::SCENE, doc.file() + ": dimension: this is a " +
+                                                std::to_string(dim) + "D scene, " + info.name +
+                                                " runs " + std::to_string(Dim) +
+                                                "D scenes: run it with " +
+                                                (dim == 2 ? "fluid_sim" : "fluid_sim_3d"));
+        if (printScene) {
+            std::cout << doc.dump() << "\n";
+            return 0;
+        }
+        return runSimulation<Dim>(doc, opt);
+    } catch (const AppError& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "%s: error: %s\n", info.name.c_str(), e.what());
+        return int(e.code());
+    } catch (const sph::SettingsError& e) {
+        std::fprintf(stderr, "%s: error: scene setting: %s\n", info.name.c_str(), e.what());
+        return int(ExitCode::SCENE);
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "%s: error: out of memory (try a larger particles.spacing)\n",
+                     info.name.c_str());
+        return int(ExitCode::INTERNAL);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s: internal error: %s (please report it)\n", info.name.c_str(),
+                     e.what());
+        return int(ExitCode::INTERNAL);
+    }
+}
+
+template int runApp<2>(int, char**, const AppInfo&);
+template int runApp<3>(int, char**, const AppInfo&);
+
+}  // namespace num::io

@@ -1,0 +1,167 @@
+#include "io/outputs.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "io/diagnostics.hpp"
+#include "io/file.hpp"
+
+namespace num::io {
+
+using sph::QuantityId;
+
+bool onPath(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    if (!path) return false;
+    std::stringstream dirs(path);
+    std::string d;
+    while (std::getline(dirs, d, ':'))
+        if (!d.empty() && ::access((d + "/" + program).c_str(), X_OK) == 0) return true;
+    return false;
+}
+
+template <int Dim>
+Outputs<Dim>::Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std::string directory,
+                      const sph::Storage<Dim>& initial, FieldNames names)
+    : scene_(scene), setup_(setup), dir_(std::move(directory)), names_(std::move(names)) {
+    while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
+    // Pictures: the domain (2D with its wall layers), colours over the scene's temperatures.
+    render_.min = scene.domainMin, render_.max = scene.domainMax;
+    if constexpr (Dim == 2) {
+        for (int k = 0; k < Dim; ++k)
+            for (int hi = 0; hi < 2; ++hi)
+                if (setup.geometry.hasWall(k, hi))
+                    (hi ? render_.max[k] : render_.min[k]) +=
+                        (hi ? 1 : -1) * setup.wallLayers * scene.spacing;
+    }
+    render_.spacing = scene.spacing;
+    render_.width = scene.output.imageWidth;
+    render_.title = scene.name;
+    const sph::Vector<Dim> g = setup.gravity(1e300);
+    for (int k = 0; k < Dim; ++k)
+        if (std::abs(g[k]) > std::abs(g[render_.upAxis]) + 1e-300) render_.upAxis = k;
+    double lo = 1e300, hi = -1e300;
+    const auto T = initial.template getValue<double>(QuantityId::TEMPERATURE);
+    const auto kind = initial.template getValue<int>(QuantityId::KIND);
+    for (sph::Size i = 0; i < initial.size(); ++i)
+        if (kind[i] != int(sph::ParticleKind::WALL))
+            lo = std::min(lo, T[i]), hi = std::max(hi, T[i]);
+    for (int k = 0; k < Dim; ++k)
+        for (int h = 0; h < 2; ++h)
+            if (scene.sides[k][h].thermal.kind == ThermalCondition::Kind::TEMPERATURE)
+                lo = std::min(lo, scene.sides[k][h].thermal.value),
+                hi = std::max(hi, scene.sides[k][h].thermal.value);
+    for (const auto& e : scene.emitters)
+        lo = std::min(lo, e.temperature), hi = std::max(hi, e.temperature);
+    if (!(hi > lo)) lo = (lo < 1e299 ? lo : 20) - 1, hi = lo + 2;
+    render_.colorMin = scene.output.colorMin.value_or(lo);
+    render_.colorMax = scene.output.colorMax.value_or(hi);
+}
+
+template <int Dim>
+std::string Outputs<Dim>::fileName(int index, const std::string& extension) const {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "_%04d.", index);
+    return scene_.output.prefix + buf + extension;
+}
+
+template <int Dim>
+void Outputs<Dim>::start() {
+    makeOutputDirectory(dir_);
+    if (scene_.probes.empty()) return;
+    std::string header = "time";
+    const char* axes = "xyz";
+    for (const auto& p : scene_.probes)
+        for (const auto& f : p.fields) {
+            if (f == "velocity")
+                for (int k = 0; k < Dim; ++k) header += "," + p.name + ".v" + axes[k];
+            else
+                header += "," + p.name + "." + f;
+        }
+    writeFileAtomically(path("probes.csv"), header + "\n");
+}
+
+template <int Dim>
+void Outputs<Dim>::resume(double t, std::vector<std::pair<double, std::string>> series) {
+    makeOutputDirectory(dir_);
+    for (auto& [time, file] : series) series_.add(time, file);
+    series_.truncateAfter(t);
+    pictures_ = int(series_.entries().size());
+    if (scene_.probes.empty()) return;
+    std::ifstream in(path("probes.csv"));
+    if (!in) return start();
+    std::string line, kept;
+    bool header = true;
+    while (std::getline(in, line)) {
+        if (!header && std::strtod(line.c_str(), nullptr) > t * (1 + 1e-12)) break;
+        kept += line + "\n";
+        header = false;
+    }
+    writeFileAtomically(path("probes.csv"), kept);
+}
+
+template <int Dim>
+void Outputs<Dim>::write(const sph::Storage<Dim>& s, double t, int index) {
+    const std::vector<OutputField> fields = outputFields(s, names_);
+    const OutputSpec& o = scene_.output;
+    if (o.vtu) {
+        writeVtu(path(fileName(index, "vtu")), s, fields, t);
+        series_.truncateAfter(t - 1e-12 * std::max(1.0, std::abs(t)));
+        series_.add(t, fileName(index, "vtu"));
+        series_.write(path(o.prefix + ".pvd"));
+    }
+    if (o.csv) writeCsv(path(fileName(index, "csv")), s, fields);
+    if (o.images) {
+        writePng(path(fileName(index, "png")), renderParticles(s, render_, t));
+        pictures_ = index + 1;
+    }
+    writeProbes(s, t);
+}
+
+template <int Dim>
+void Outputs<Dim>::writeProbes(const sph::Storage<Dim>& s, double t) {
+    if (scene_.probes.empty()) return;
+    const sph::RunKernel<Dim> kernel(setup_.settings);
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", t);
+    std::string row = buf;
+    for (const auto& p : scene_.probes)
+        for (const auto& f : p.fields)
+            for (double v : probe(s, kernel, p.point, f)) {
+                std::snprintf(buf, sizeof buf, ",%.10g", v);
+                row += buf;
+            }
+    row += "\n";
+    std::FILE* out = std::fopen(path("probes.csv").c_str(), "ab");
+    const bool ok = out && std::fwrite(row.data(), 1, row.size(), out) == row.size();
+    if (!out || std::fclose(out) != 0 || !ok)
+        throw AppError(ExitCode::OUTPUT, path("probes.csv") + ": write failed (disk full?)");
+}
+
+template <int Dim>
+std::string Outputs<Dim>::makeVideo(bool quiet) const {
+    if (!scene_.output.images || !scene_.output.video || pictures_ < 2 || !onPath("ffmpeg"))
+        return "";
+    auto quote = [](const std::string& s) {
+        std::string q = "'";
+        for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return q + "'";
+    };
+    const int fps = std::clamp(pictures_ / 8, 5, 30);
+    const std::string video = path(scene_.output.prefix + ".mp4");
+    const std::string cmd = "ffmpeg -y -loglevel error -framerate " + std::to_string(fps) + " -i " +
+                            quote(path(scene_.output.prefix + "_%04d.png")) +
+                            " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p " +
+                            quote(video) + (quiet ? " >/dev/null 2>&1" : "");
+    return std::system(cmd.c_str()) == 0 ? video : "";
+}
+
+template class Outputs<2>;
+template class Outputs<3>;
+
+}  // namespace num::io

@@ -1,0 +1,206 @@
+// The pieces of the time loop (internal to numerics_io): the state a checkpoint keeps besides
+// the particles, health checks, open boundaries, reordering, summary.json and the final report.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "io/checkpoint.hpp"
+#include "io/diagnostics.hpp"
+#include "io/outputs.hpp"
+#include "sph/solver.hpp"
+
+namespace num::io {
+
+template <int Dim>
+struct RunState {
+    double time = 0;
+    std::uint64_t steps = 0;
+    std::int64_t outputIndex = 0, checkpointCount = 0;
+    std::vector<std::uint64_t> emitterLayers;
+    std::uint64_t emitted = 0, removed = 0;
+    std::vector<double> start;  ///< conservation at t = 0 (see conservationVector)
+    std::vector<std::pair<double, std::string>> series;
+
+    void write(ByteWriter& w) const {
+        w.put(time), w.put(steps), w.put(outputIndex), w.put(checkpointCount);
+        w.putVector(emitterLayers), w.put(emitted), w.put(removed), w.putVector(start);
+        w.put<std::uint64_t>(series.size());
+        for (const auto& [t, f] : series) w.put(t), w.putString(f);
+    }
+    void read(ByteReader& r) {
+        time = r.get<double>(), steps = r.get<std::uint64_t>();
+        outputIndex = r.get<std::int64_t>(), checkpointCount = r.get<std::int64_t>();
+        emitterLayers = r.getVector<std::uint64_t>();
+        emitted = r.get<std::uint64_t>(), removed = r.get<std::uint64_t>();
+        start = r.getVector<double>();
+        const auto n = r.get<std::uint64_t>();
+        for (std::uint64_t k = 0; k < n; ++k) {
+            const double t = r.get<double>();
+            series.emplace_back(t, r.getString());
+        }
+    }
+};
+
+/// mass, momentum (Dim values), kinetic, potential and thermal energy of the fluid.
+template <int Dim>
+std::vector<double> conservationVector(const sph::Storage<Dim>& s, const sph::Vector<Dim>& g) {
+    const Conservation<Dim> c = conservation(s, g);
+    std::vector<double> v{c.mass};
+    for (int k = 0; k < Dim; ++k) v.push_back(c.momentum[k]);
+    v.push_back(c.kinetic), v.push_back(c.potential), v.push_back(c.thermal);
+    return v;
+}
+
+/// Reorders particles by cell so neighbours are near in memory. Depends on positions only, so
+/// a restarted run reorders exactly as the uninterrupted one.
+template <int Dim>
+void reorderByCell(sph::Storage<Dim>& s, const sph::Solver<Dim>& solver) {
+    CellGrid<Dim> grid;
+    grid.build(s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION),
+               solver.kernel().supportRadius(), solver.domain());
+    s.reorder(std::vector<sph::Size>(grid.sortedOrder().begin(), grid.sortedOrder().end()));
+}
+
+/// Stops the run (AppError UNSTABLE) on non-finite values, fluid beyond a wall, or a collapsed
+/// time step, naming the time, the step and the likely cause.
+template <int Dim>
+void checkHealth(const sph::Storage<Dim>& s, const Scene<Dim>& scene, double t, std::uint64_t step,
+                 double dt, const std::string& criterion) {
+    using sph::QuantityId;
+    const auto x = s.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto v = s.template getDt<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto rho = s.template getValue<double>(QuantityId::DENSITY);
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
+    char where[160];
+    std::snprintf(where, sizeof where,
+                  "the run went unstable at t = %.6g s (step %llu, dt = %.3g s limited by %s): ", t,
+                  (unsigned long long)step, dt, criterion.c_str());
+    const std::string cause =
+        ". Likely cause: the time step is too large or the sound speed too low for this flow; "
+        "lower time.cfl, raise the material's sound_speed, or refine particles.spacing";
+    for (sph::Size i = 0; i < s.size(); ++i) {
+        bool finite = std::isfinite(rho[i]) && rho[i] > 0;
+        for (int k = 0; k < Dim; ++k)
+            finite = finite && std::isfinite(x[i][k]) && std::isfinite(v[i][k]);
+        if (!finite)
+            throw AppError(ExitCode::UNSTABLE,
+                           where + std::string("particle ") + std::to_string(i) +
+                               " has a non-finite position, velocity or density" + cause);
+        if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+        for (int k = 0; k < Dim; ++k)
+            for (int hi = 0; hi < 2; ++hi) {
+                if (scene.sides[k][hi].type != SideType::WALL) continue;
+                const double beyond =
+                    hi ? x[i][k] - scene.domainMax[k] : scene.domainMin[k] - x[i][k];
+                if (beyond > scene.spacing)
+                    throw AppError(
+                        ExitCode::UNSTABLE,
+                        where + std::string("a fluid particle left the domain through the ") +
+                            sideName(k, hi) + " wall" + cause);
+            }
+    }
+    if (criterion != "end time" && dt < 1e-9 * scene.endTime)
+        throw AppError(ExitCode::UNSTABLE, where + std::string("the time step collapsed") + cause);
+}
+
+/// Removes fluid particles beyond open sides; returns how many.
+template <int Dim>
+std::size_t removeOutflow(sph::Storage<Dim>& s, const Scene<Dim>& scene) {
+    bool anyOpen = false;
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) anyOpen |= scene.sides[k][hi].type == SideType::OPEN;
+    if (!anyOpen) return 0;
+    const auto x = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+    const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
+    std::vector<sph::Size> out;
+    for (sph::Size i = 0; i < s.size(); ++i) {
+        if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+        for (int k = 0; k < Dim; ++k)
+            if ((scene.sides[k][0].type == SideType::OPEN && x[i][k] < scene.domainMin[k]) ||
+                (scene.sides[k][1].type == SideType::OPEN && x[i][k] > scene.domainMax[k])) {
+                out.push_back(i);
+                break;
+            }
+    }
+    if (!out.empty()) s.remove(out);
+    return out.size();
+}
+
+template <int Dim>
+nlohmann::json summaryJson(const Scene<Dim>& scene, const sph::Storage<Dim>& s,
+                           const SceneSetup<Dim>& setup, const RunState<Dim>& state, double t,
+                           std::uint64_t steps, std::uint64_t runSteps, double wall,
+                           double particleSteps, int threads, const std::string& backend,
+                           const std::string& status, const std::string& message,
+                           double neighbours) {
+    const std::vector<double> end = conservationVector(s, setup.gravity(t));
+    const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
+    std::size_t fluid = 0;
+    for (int k : kind) fluid += k == int(sph::ParticleKind::FLUID);
+    nlohmann::json c;
+    auto pair = [&](std::size_t i) {
+        return nlohmann::json{{"start", state.start.at(i)}, {"end", end.at(i)}};
+    };
+    nlohmann::json mStart = nlohmann::json::array(), mEnd = nlohmann::json::array();
+    for (int k = 0; k < Dim; ++k)
+        mStart.push_back(state.start.at(1 + k)), mEnd.push_back(end.at(1 + k));
+    c["mass"] = pair(0);
+    c["momentum"] = {{"start", mStart}, {"end", mEnd}};
+    c["kinetic_energy"] = pair(Dim + 1);
+    c["potential_energy"] = pair(Dim + 2);
+    c["thermal_energy"] = pair(Dim + 3);
+    c["note"] =
+        "sums over fluid particles; mass changes only by emitters and open sides; thermal "
+        "energy is sum m c T with T in degC";
+    return {{"dimension", Dim},
+            {"scene", scene.file},
+            {"name", scene.name},
+            {"status", status},
+            {"message", message},
+            {"particles", s.size()},
+            {"fluid_particles", fluid},
+            {"steps", steps},
+            {"steps_this_run", runSteps},
+            {"final_time", t},
+            {"end_time", scene.endTime},
+            {"wall_seconds", wall},
+            {"particle_steps_per_second", wall > 0 ? particleSteps / wall : 0.0},
+            {"mean_neighbours", neighbours},
+            {"threads", threads},
+            {"backend", backend},
+            {"smoothing_length", setup.settings.template get<double>("smoothing_length")},
+            {"sound_speed", setup.model.c0()},
+            {"emitted_particles", state.emitted},
+            {"removed_particles", state.removed},
+            {"outputs", state.outputIndex},
+            {"conservation", c}};
+}
+
+template <int Dim>
+void printReport(const std::string& program, const Outputs<Dim>& out, const Scene<Dim>& scene,
+                 double t, std::uint64_t steps, double wall, double particleSteps,
+                 const std::string& video, const std::string& status) {
+    std::printf("%s: %s at t = %.4g s after %llu steps in %.1f s (%.2f million particle-steps/s)\n",
+                program.c_str(), status == "completed" ? "finished" : "stopped (Ctrl-C)", t,
+                (unsigned long long)steps, wall, wall > 0 ? particleSteps / wall * 1e-6 : 0.0);
+    std::printf("Output written to %s/\n", out.directory().c_str());
+    if (scene.output.vtu)
+        std::printf("  %-22s open in ParaView (File > Open, Apply) to play the series\n",
+                    (scene.output.prefix + ".pvd").c_str());
+    if (scene.output.images)
+        std::printf("  %-22s pictures, one per output time (%d)\n",
+                    (scene.output.prefix + "_*.png").c_str(), out.pictures());
+    if (!video.empty())
+        std::printf("  %-22s the run as a video\n", (scene.output.prefix + ".mp4").c_str());
+    if (scene.output.csv)
+        std::printf("  %-22s fluid particles as CSV\n", (scene.output.prefix + "_*.csv").c_str());
+    if (!scene.probes.empty()) std::printf("  %-22s probe values over time\n", "probes.csv");
+    std::printf("  %-22s run statistics and conservation diagnostics\n", "summary.json");
+    std::fflush(stdout);
+}
+
+}  // namespace num::io

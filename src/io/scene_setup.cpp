@@ -1,0 +1,347 @@
+// Scene -> engine: settings, fluid model with heat terms, geometry, initial particles, emitters.
+#include "io/scene_setup.hpp"
+
+#include <cmath>
+#include <mutex>
+
+#include "sph/boundary/thermal_walls.hpp"
+
+namespace num::io {
+
+using sph::Float;
+using sph::QuantityId;
+using sph::Size;
+
+namespace {
+
+template <int Dim>
+sph::Shape<Dim> shapeOf(Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
+                        const SceneVec<Dim>& c, double r) {
+    return shape == Shape::BOX ? sph::Shape<Dim>::box(mn, mx) : sph::Shape<Dim>::ball(c, r);
+}
+
+template <int Dim>
+double at(const Expression& e, const sph::Vector<Dim>& x, double t) {
+    return e(x[0], Dim > 1 ? x[1] : 0.0, Dim > 2 ? x[Dim - 1] : 0.0, t);
+}
+
+template <int Dim>
+sph::Vector<Dim> at(const VectorField<Dim>& f, const sph::Vector<Dim>& x, double t) {
+    sph::Vector<Dim> v;
+    for (int k = 0; k < Dim; ++k) v[k] = at<Dim>(f[k], x, t);
+    return v;
+}
+
+std::shared_ptr<sph::Material> makeMaterial(const MaterialSpec& m, double c0) {
+    auto mat = std::make_shared<sph::Material>(m.name);
+    mat->params()
+        .set("density", m.density)
+        .set("sound_speed", m.soundSpeed ? *m.soundSpeed : c0)
+        .set("viscosity", m.viscosity)
+        .set("artificial_viscosity", m.artificialViscosity)
+        .set("conductivity", m.conductivity)
+        .set("heat_capacity", m.heatCapacity)
+        .set("thermal_expansion", m.thermalExpansion)
+        .set("reference_temperature", m.referenceTemperature);
+    return mat;
+}
+
+/// The particles one emitter injects per layer: offsets across its nozzle, on the lattice.
+template <int Dim>
+std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
+    std::vector<sph::Vector<Dim>> out;
+    const int m = std::max(1, int(std::lround(2 * e.radius / dx)));
+    auto offset = [&](int j) { return (j + 0.5 - 0.5 * m) * dx; };
+    if constexpr (Dim == 2) {
+        const sph::Vector<2> across{{-e.direction[1], e.direction[0]}};
+        for (int j = 0; j < m; ++j) out.push_back(across * offset(j));
+    } else {
+        // An orthonormal pair across the direction d.
+        sph::Vector<3> a{{1, 0, 0}};
+        if (std::abs(e.direction[0]) > 0.9) a = {{0, 1, 0}};
+        sph::Vector<3> e1 = a - e.direction * dot(a, e.direction);
+        e1 /= norm(e1);
+        const sph::Vector<3> e2{{e.direction[1] * e1[2] - e.direction[2] * e1[1],
+                                 e.direction[2] * e1[0] - e.direction[0] * e1[2],
+                                 e.direction[0] * e1[1] - e.direction[1] * e1[0]}};
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; j < m; ++j)
+                if (offset(i) * offset(i) + offset(j) * offset(j) <= e.radius * e.radius + 1e-12)
+                    out.push_back(e1 * offset(i) + e2 * offset(j));
+        if (out.empty()) out.push_back({});
+    }
+    return out;
+}
+
+}  // namespace
+
+template <int Dim>
+SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads) {
+    SceneSetup<Dim> setup;
+    const double dx = scene.spacing;
+    // Materials in name order; the first fluid's material sets the equation of state.
+    int index = 0;
+    for (const auto& [name, m] : scene.materials) setup.materialIndex[name] = index++;
+    const std::string fluidName =
+        !scene.fluids.empty() ? scene.fluids[0].material : scene.emitters[0].material;
+    const MaterialSpec& fluid = scene.materials.at(fluidName);
+    setup.fluidMaterial = setup.materialIndex[fluidName];
+    auto sameFluid = [&](const std::string& name, const std::string& path) {
+        const MaterialSpec& m = scene.materials.at(name);
+        if (m.density != fluid.density || m.soundSpeed != fluid.soundSpeed ||
+            m.viscosity != fluid.viscosity || m.artificialViscosity != fluid.artificialViscosity)
+            throw sceneError(scene.file, path,
+                             "a material with the density, sound_speed, viscosity and "
+                             "artificial_viscosity of \"" +
+                                 fluidName +
+                                 "\" (the fluid is one phase; thermal properties may differ)",
+                             "\"" + name + "\"");
+    };
+    for (std::size_t i = 0; i < scene.fluids.size(); ++i)
+        sameFluid(scene.fluids[i].material, "fluids[" + std::to_string(i) + "].material");
+    for (std::size_t i = 0; i < scene.emitters.size(); ++i)
+        sameFluid(scene.emitters[i].material, "emitters[" + std::to_string(i) + "].material");
+
+    // Gravity as a function of time (expressions in t), with the optional ramp.
+    auto mutex = std::make_shared<std::mutex>();
+    const VectorField<Dim> g = scene.gravity;
+    const double ramp = scene.physics.gravityRamp;
+    setup.gravity = [g, ramp, mutex](Float t) {
+        std::lock_guard<std::mutex> lock(*mutex);
+        sph::Vector<Dim> v = at<Dim>(g, sph::Vector<Dim>{}, t);
+        if (ramp > 0 && t < ramp) v *= 0.5 * (1 - std::cos(M_PI * std::max(t, 0.0) / ramp));
+        return v;
+    };
+    const sph::Vector<Dim> g0 = at<Dim>(g, sph::Vector<Dim>{}, std::max(ramp, 0.0));
+
+    // Velocity scale U for "auto" sound speeds: free fall over the domain height along g,
+    // initial block velocities and emitter speeds.
+    double U = 0;
+    if (norm(g0) > 0) {
+        double height = 0;
+        for (int k = 0; k < Dim; ++k)
+            height += std::abs(g0[k]) / norm(g0) * (scene.domainMax[k] - scene.domainMin[k]);
+        U = std::sqrt(2 * norm(g0) * height);
+    }
+    for (const auto& f : scene.fluids) {
+        const sph::Vector<Dim> c = f.shape == Shape::BOX ? (f.min + f.max) * 0.5 : f.center;
+        U = std::max(U, norm(at<Dim>(f.velocity, c, 0.0)));
+    }
+    for (const auto& e : scene.emitters) U = std::max(U, e.speed);
+    if (scene.maxSpeed > 0) U = scene.maxSpeed;
+    if (!(U > 0)) U = 1;
+    setup.velocityScale = U;
+
+    sph::FluidModel<Dim>& m = setup.model;
+    m.restDensity = fluid.density;
+    m.maxVelocity = U;
+    m.soundSpeed = fluid.soundSpeed ? *fluid.soundSpeed : 0.0;
+    m.eos = scene.physics.eos == "linear" ? sph::EosType::LINEAR : sph::EosType::TAIT;
+    m.backgroundPressure = scene.physics.backgroundPressure;
+    m.density = scene.physics.density == "summation" ? sph::DensityMode::SUMMATION
+                                                     : sph::DensityMode::CONTINUITY;
+    m.deltaSph = scene.physics.densityDiffusion;
+    m.viscosity = fluid.viscosity;
+    m.artificialViscosity = fluid.artificialViscosity;
+    m.shifting = scene.physics.shifting;
+    bool gravityOn = false;
+    for (int k = 0; k < Dim; ++k)
+        gravityOn |= !scene.gravity[k].isConstant() || scene.gravity[k](0, 0, 0, 0) != 0;
+    if (gravityOn) m.bodyForce = setup.gravity;
+    for (const auto& [name, spec] : scene.materials)
+        m.materials.push_back(makeMaterial(spec, m.c0()));
+    if (scene.physics.heat) {
+        m.heat.conduction = true;
+        m.heat.walls = sph::ThermalCondition::ADIABATIC;
+        m.heat.bodies = sph::ThermalCondition::FIXED_TEMPERATURE;
+        bool expands = false;
+        for (const auto& [name, spec] : scene.materials) expands |= spec.thermalExpansion != 0;
+        m.heat.buoyancy = scene.physics.buoyancy && expands && gravityOn;
+    }
+
+    sph::RunSettings& s = setup.settings;
+    s.set("kernel", scene.kernel);
+    s.set("smoothing_length", scene.hOverSpacing * dx);
+    s.set("threads", std::int64_t(threads));
+    s.set("cfl", scene.cfl);
+    if (scene.dtMax > 0) s.set("dt_max", scene.dtMax);
+    s.set("reorder_every", std::int64_t(0));  // the app reorders (restart-safe)
+
+    sph::FluidGeometry<Dim>& geo = setup.geometry;
+    geo.spacing = dx;
+    geo.domain.min = scene.domainMin, geo.domain.max = scene.domainMax;
+    for (int k = 0; k < Dim; ++k) {
+        geo.domain.periodic[k] = scene.sides[k][0].type == SideType::PERIODIC;
+        for (int hi = 0; hi < 2; ++hi) {
+            const BoundarySide<Dim>& side = scene.sides[k][hi];
+            sph::WallSide<Dim>& w = geo.walls[k][hi];
+            w.present = side.type == SideType::WALL;
+            w.velocity = side.velocity;
+            w.slip = side.slip ? sph::WallSlip::FREE_SLIP : sph::WallSlip::NO_SLIP;
+            w.temperature = side.thermal.kind == ThermalCondition::Kind::TEMPERATURE
+                                ? side.thermal.value
+                                : fluid.referenceTemperature;
+            w.material = setup.fluidMaterial;
+        }
+    }
+    for (const FluidBlock<Dim>& f : scene.fluids) {
+        sph::FluidRegion<Dim> r;
+        r.shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
+        r.temperature = at<Dim>(
+            f.temperature,
+            r.shape.type == sph::Shape<Dim>::Type::BOX ? (f.min + f.max) * 0.5 : f.center, 0.0);
+        r.material = setup.materialIndex[f.material];
+        const VectorField<Dim> v = f.velocity;
+        r.velocity = [v](const sph::Vector<Dim>& x) { return at<Dim>(v, x, 0.0); };
+        geo.fluid.push_back(r);
+    }
+    for (const Body<Dim>& b : scene.bodies) {
+        sph::SolidBody<Dim> body;
+        body.shape = shapeOf<Dim>(b.shape, b.min, b.max, b.center, b.radius);
+        body.temperature = b.temperature;
+        body.material = b.material.empty() ? setup.fluidMaterial : setup.materialIndex[b.material];
+        geo.bodies.push_back(body);
+    }
+    setup.wallLayers = sph::wallLayersFor(sph::RunKernel<Dim>(s).supportRadius(), dx);
+
+    // One template particle per emitter, made by the model itself so it has every quantity.
+    for (const Emitter<Dim>& e : scene.emitters) {
+        sph::FluidGeometry<Dim> tiny;
+        tiny.spacing = dx;
+        tiny.domain.max = sph::Vector<Dim>::filled(2 * dx);
+        for (auto& axis : tiny.walls)
+            for (auto& w : axis) w.present = false;
+        sph::FluidRegion<Dim> r;
+        r.shape = sph::Shape<Dim>::box(tiny.domain.min, tiny.domain.max);
+        r.temperature = e.temperature;
+        r.material = setup.materialIndex[e.material];
+        tiny.fluid.push_back(r);
+        sph::Storage<Dim> t = sph::makeFluidStorage(m, tiny, s);
+        t.gather({0});
+        t.materials().clear();
+        setup.emitterTemplates.push_back(std::move(t));
+    }
+    return setup;
+}
+
+template <int Dim>
+sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& setup) {
+    sph::Storage<Dim> st = sph::makeFluidStorage(setup.model, setup.geometry, setup.settings);
+    const auto x = st.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto kind = st.template getValue<int>(QuantityId::KIND);
+    const auto T = st.template getValue<Float>(QuantityId::TEMPERATURE);
+    const auto rho = st.template getValue<Float>(QuantityId::DENSITY);
+    const auto p = st.template getValue<Float>(QuantityId::PRESSURE);
+    const sph::EquationOfState eos = setup.model.equationOfState();
+    const double dx = scene.spacing;
+    for (Size i = 0; i < st.size(); ++i) {
+        if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+        for (std::size_t b = 0; b < scene.fluids.size(); ++b) {
+            if (!setup.geometry.fluid[b].shape.contains(x[i])) continue;
+            const FluidBlock<Dim>& f = scene.fluids[b];
+            if (!f.temperature.isConstant()) T[i] = at<Dim>(f.temperature, x[i], 0.0);
+            if (!f.pressure.isConstant() || f.pressure(0, 0, 0, 0) != 0) {
+                p[i] = at<Dim>(f.pressure, x[i], 0.0);
+                rho[i] = eos.density(p[i]);
+            }
+            break;
+        }
+    }
+    if (!scene.physics.heat || !st.has(sph::heat_ids::THERMAL_CONDITION)) return st;
+    // Thermal conditions: walls by the side they lie beyond, bodies by their material.
+    using TC = sph::ThermalCondition;
+    const auto cond = st.template getValue<int>(sph::heat_ids::THERMAL_CONDITION);
+    std::array<std::array<std::vector<Size>, 2>, Dim> fluxLayer;
+    for (Size i = 0; i < st.size(); ++i) {
+        if (kind[i] == int(sph::ParticleKind::BODY)) {
+            int body = -1;
+            for (std::size_t b = 0; b < scene.bodies.size() && body < 0; ++b)
+                if (setup.geometry.bodies[b].shape.contains(x[i])) body = int(b);
+            cond[i] =
+                int(body >= 0 && !scene.bodies[body].material.empty() ? TC::CONDUCTING
+                                                                      : TC::FIXED_TEMPERATURE);
+            continue;
+        }
+        if (kind[i] != int(sph::ParticleKind::WALL)) continue;
+        double depth = 0;
+        int axis = -1, hi = 0;
+        for (int k = 0; k < Dim; ++k) {
+            if (setup.geometry.domain.periodic[k]) continue;
+            const double below = scene.domainMin[k] - x[i][k], above = x[i][k] - scene.domainMax[k];
+            if (below > depth) depth = below, axis = k, hi = 0;
+            if (above > depth) depth = above, axis = k, hi = 1;
+        }
+        if (axis < 0) continue;
+        const ThermalCondition& tc = scene.sides[axis][hi].thermal;
+        cond[i] = int(tc.kind == ThermalCondition::Kind::TEMPERATURE ? TC::FIXED_TEMPERATURE
+                      : tc.kind == ThermalCondition::Kind::HEAT_FLUX ? TC::CONDUCTING
+                                                                     : TC::ADIABATIC);
+        if (tc.kind == ThermalCondition::Kind::HEAT_FLUX && depth < dx)
+            fluxLayer[axis][hi].push_back(i);
+    }
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) {
+            const ThermalCondition& tc = scene.sides[k][hi].thermal;
+            if (tc.kind != ThermalCondition::Kind::HEAT_FLUX || fluxLayer[k][hi].empty()) continue;
+            double area = 1;
+            for (int j = 0; j < Dim; ++j)
+                if (j != k) area *= scene.domainMax[j] - scene.domainMin[j];
+            std::vector<char> selected(st.size(), 0);
+            for (Size i : fluxLayer[k][hi]) selected[i] = 1;
+            sph::ThermalBoundary<Dim>::setHeatFlux(st, tc.value, area,
+                                                   [&](Size i) { return selected[i] != 0; });
+        }
+    return st;
+}
+
+template <int Dim>
+Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
+    : scene_(scene), setup_(setup), layers_(scene.emitters.size(), 0) {
+    for (const auto& e : scene.emitters) discs_.push_back(nozzle<Dim>(e, scene.spacing));
+}
+
+template <int Dim>
+std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t) {
+    const double dx = scene_.spacing;
+    std::size_t added = 0;
+    for (std::size_t e = 0; e < scene_.emitters.size(); ++e) {
+        const Emitter<Dim>& em = scene_.emitters[e];
+        if (t < em.start) continue;
+        const double te = std::min(t, em.end);
+        const auto due = std::uint64_t(std::floor((te - em.start) * em.speed / dx)) + 1;
+        if (due <= layers_[e]) continue;
+        const std::size_t count = (due - layers_[e]) * discs_[e].size();
+        sph::Storage<Dim> batch;
+        setup_.emitterTemplates[e].forEach([&](QuantityId id, const sph::Quantity<Dim>& q) {
+            q.visit([&](const auto& b) {
+                using T = typename std::decay_t<decltype(b.value)>::value_type;
+                batch.template insert<T>(id, q.order(), std::vector<T>(count, b.value[0]));
+            });
+        });
+        auto x = batch.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+        auto v = batch.template getDt<sph::Vector<Dim>>(QuantityId::POSITION);
+        std::size_t n = 0;
+        for (std::uint64_t k = layers_[e]; k < due; ++k) {
+            const double travelled = (t - (em.start + double(k) * dx / em.speed)) * em.speed;
+            for (const auto& off : discs_[e]) {
+                x[n] = em.position + off + em.direction * travelled;
+                v[n] = em.direction * em.speed;
+                ++n;
+            }
+        }
+        storage.append(batch);
+        layers_[e] = due;
+        added += count;
+    }
+    emitted_ += added;
+    return added;
+}
+
+template SceneSetup<2> makeSceneSetup<2>(const Scene<2>&, int);
+template SceneSetup<3> makeSceneSetup<3>(const Scene<3>&, int);
+template sph::Storage<2> makeInitialStorage<2>(const Scene<2>&, SceneSetup<2>&);
+template sph::Storage<3> makeInitialStorage<3>(const Scene<3>&, SceneSetup<3>&);
+template class Emitters<2>;
+template class Emitters<3>;
+
+}  // namespace num::io

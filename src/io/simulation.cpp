@@ -1,0 +1,190 @@
+// The time loop of the apps.
+#include "io/simulation.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "io/checkpoint.hpp"
+#include "io/diagnostics.hpp"
+#include "io/file.hpp"
+#include "io/outputs.hpp"
+#include "io/progress.hpp"
+#include "run_state.hpp"
+#include "sph/timestepping.hpp"
+
+namespace num::io {
+
+using sph::QuantityId;
+using sph::Size;
+
+namespace {
+
+volatile std::sig_atomic_t gStop = 0;
+
+extern "C" void onSignal(int sig) {
+    gStop = sig;
+    std::signal(sig, SIG_DFL);  // a second Ctrl-C ends the program at once
+}
+
+std::string fmt(const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return buf;
+}
+
+}  // namespace
+
+SceneDocument sceneOfCheckpoint(const std::string& path, int dimension) {
+    const std::string payload = readCheckpointFile(path, dimension);
+    ByteReader r(payload, path);
+    return SceneDocument::fromText(r.getString(), path + " (scene stored in the checkpoint)");
+}
+
+template <int Dim>
+int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
+    const auto wallStart = std::chrono::steady_clock::now();
+    Scene<Dim> scene = readScene<Dim>(doc);
+    if (opt.endTime) scene.endTime = *opt.endTime;
+    if (opt.outDir) scene.output.directory = *opt.outDir;
+    const int threads = opt.backend == "seq" ? 1
+                        : opt.threads > 0    ? opt.threads
+                                          : int(std::max(1u, std::thread::hardware_concurrency()));
+    SceneSetup<Dim> setup = makeSceneSetup(scene, threads);
+    sph::Storage<Dim> initial = makeInitialStorage(scene, setup);
+    const std::string dir = scene.output.directory;
+
+    RunState<Dim> state;
+    sph::Storage<Dim> storage;
+    if (opt.restart) {
+        const std::string payload = readCheckpointFile(*opt.restart, Dim);
+        ByteReader r(payload, *opt.restart);
+        r.getString();  // the scene, read by the caller
+        state.read(r);
+        storage = readStorage<Dim>(r, initial);
+        if (state.time >= scene.endTime)
+            throw AppError(ExitCode::USAGE,
+                           *opt.restart + ": the checkpoint is at t = " + fmt("%g", state.time) +
+                               " s, at or after the end time " + fmt("%g", scene.endTime) +
+                               " s (raise it with --end-time)");
+    } else {
+        storage = initial;
+    }
+    Emitters<Dim> emitters(scene, setup);
+    emitters.layers() = state.emitterLayers.empty() ? emitters.layers() : state.emitterLayers;
+    emitters.setEmitted(state.emitted);
+
+    Outputs<Dim> outputs(scene, setup, dir, initial, opt.fieldNames);
+    auto scheduler = sph::makeScheduler(opt.backend, Size(threads));
+    sph::Solver<Dim> solver(*scheduler, setup.settings,
+                            sph::makeFluidEquations(setup.model, setup.geometry),
+                            setup.geometry.domain);
+    auto integrator = sph::makeIntegrator<Dim>(scene.integrator);
+    sph::Run<Dim> run(storage, solver, *integrator, state.time);
+    sph::Storage<Dim> warmup;
+    if (opt.restart) {
+        // Terms keep the time of their last evaluation (e.g. particle shifting): evaluate a copy
+        // at the restart time so they continue exactly as the uninterrupted run.
+        warmup = storage;
+        solver.evaluate(warmup, state.time);
+        run.setTime(state.time, Size(state.steps));
+        run.markPrimed(true);
+        outputs.resume(state.time, state.series);
+    } else {
+        outputs.start();
+        emitters.emit(storage, 0.0);
+        run.prime();
+        state.start = conservationVector(storage, setup.gravity(0.0));
+    }
+    const double every = scene.output.every;
+    auto nextOutputTime = [&] { return state.outputIndex * every; };
+    auto reached = [](double t, double target) {
+        return t >= target - 1e-9 * std::max(1e-300, std::abs(target)) - 1e-300;
+    };
+
+    gStop = 0;
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    Progress progress(opt.quiet                  ? Progress::Mode::QUIET
+                      : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
+                                                 : Progress::Mode::PLAIN,
+                      run.time(), scene.endTime);
+    std::vector<std::pair<double, std::string>> checkpoints;
+    auto writeCheckpoint = [&](const std::string& name) {
+        state.time = run.time(), state.steps = run.steps();
+        state.emitterLayers = emitters.layers(), state.emitted = emitters.emitted();
+        state.series = outputs.series().entries();
+        ByteWriter w;
+        w.putString(doc.dump());
+        state.write(w);
+        writeStorage(w, storage);
+        writeCheckpointFile(outputs.path(name), Dim, w.bytes());
+        checkpoints.emplace_back(run.time(), name);
+    };
+    auto output = [&] {
+        outputs.write(storage, run.time(), state.outputIndex);
+        ++state.outputIndex;
+    };
+    double lastOutput = -1;
+    if (!opt.restart) output(), lastOutput = 0;
+
+    std::string status = "completed", message;
+    double particleSteps = 0;
+    const std::uint64_t startSteps = run.steps();
+    try {
+        while (!reached(run.time(), scene.endTime) && !gStop) {
+            if (run.steps() > 0 && run.steps() % 25 == 0) reorderByCell(storage, solver);
+            const double stop = std::min(scene.endTime, nextOutputTime());
+            const double dt = run.step(stop);
+            particleSteps += double(storage.size());
+            checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion());
+            state.removed += removeOutflow(storage, scene);
+            emitters.emit(storage, run.time());
+            progress.update(run.time(), dt, storage.size(), run.steps());
+            if (reached(run.time(), nextOutputTime())) output(), lastOutput = run.time();
+            if (opt.checkpointEvery > 0 &&
+                reached(run.time(), (state.checkpointCount + 1) * opt.checkpointEvery)) {
+                while (reached(run.time(), (state.checkpointCount + 1) * opt.checkpointEvery))
+                    ++state.checkpointCount;
+                writeCheckpoint(fmt("checkpoint_%04.0f.chk", double(state.checkpointCount)));
+            }
+        }
+        if (gStop) status = "interrupted";
+        if (run.time() != lastOutput) output();
+        if (gStop) writeCheckpoint("checkpoint_interrupted.chk");
+    } catch (const AppError& e) {
+        if (e.code() != ExitCode::UNSTABLE) throw;
+        status = "unstable", message = e.what();
+    }
+    progress.finish(run.time(), run.lastDt(), storage.size(), run.steps());
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+    const std::string video = status == "completed" ? outputs.makeVideo(opt.quiet) : "";
+    nlohmann::json summary = summaryJson(scene, storage, setup, state, run.time(), run.steps(),
+                                         run.steps() - startSteps, wall, particleSteps, threads,
+                                         opt.backend, status, message, solver.meanNeighbours());
+    for (const auto& [t, f] : checkpoints)
+        summary["checkpoints"].push_back({{"time", t}, {"file", f}});
+    summary["video"] = video;
+    writeFileAtomically(outputs.path("summary.json"), summary.dump(2) + "\n");
+
+    if (status == "unstable")
+        throw AppError(ExitCode::UNSTABLE, message + " (last good output kept in " + dir + ")");
+    if (!opt.quiet)
+        printReport(std::string(opt.program), outputs, scene, run.time(), run.steps() - startSteps,
+                    wall, particleSteps, video, status);
+    return status == "interrupted" ? int(ExitCode::INTERRUPTED) : 0;
+}
+
+template int runSimulation<2>(const SceneDocument&, const RunOptions&);
+template int runSimulation<3>(const SceneDocument&, const RunOptions&);
+
+}  // namespace num::io

@@ -180,7 +180,9 @@ class RunSettings : public ParameterSet {
              0,
              {"asymmetric", "symmetric"}},
             {"blocks", std::int64_t(4),
-             "particle blocks of the pair loop; results depend on it, never on threads", 1, 4096},
+             "particle blocks of the symmetric pair loop (at least 8 per thread when asymmetric); "
+             "results may depend on it, never on threads",
+             1, 4096},
             {"cfl", 0.25, "Courant factor C in dt <= C h / (c + |v|)", 1e-6, 1.0},
             {"acceleration_factor", 0.25, "factor in dt <= f sqrt(h / |a|)", 1e-6, 1.0},
             {"viscous_factor", 0.125, "factor in dt <= f h^2 / nu", 1e-6, 1.0},

@@ -1,10 +1,11 @@
 // The solver: one evaluation of all derivatives (neighbour search, terms' initialize, the pair
 // loop over blocks, the sum of the blocks' buffers, terms' finalize), and the time-step limits.
 //
-// Reproducibility: particles are split into a fixed number of blocks (setting "blocks"); each
-// block is evaluated by one thread in particle order into its own buffers (symmetric mode) or
-// into disjoint entries (asymmetric mode), and blocks are summed in block order. The result is
-// bitwise the same for any number of threads.
+// Reproducibility: particles are split into blocks, each evaluated by one thread in particle
+// order with its own derivative objects. Symmetric mode: a fixed number of blocks (setting
+// "blocks"), each with its own buffers, summed in block order. Asymmetric mode: each particle
+// gathers its own sum into its own entry, whatever the split. Either way the result is bitwise
+// the same for any number of threads.
 #pragma once
 
 #include <cmath>
@@ -30,7 +31,7 @@ class Solver {
           domain_(domain),
           kernel_(settings),
           symmetric_(settings.get<std::string>("evaluation") == "symmetric"),
-          holders_(Size(settings.get<std::int64_t>("blocks"))),
+          holders_(blockCount(settings, symmetric_, scheduler.threadCount())),
           scratch_(holders_.size()),
           accumulated_(symmetric_ ? holders_.size() : 1) {
         for (std::size_t b = 0; b < holders_.size(); ++b) {
@@ -92,6 +93,14 @@ class Solver {
     IScheduler& scheduler() { return scheduler_; }
 
   private:
+    /// Symmetric mode: the "blocks" setting (each block has buffers of every particle, and the
+    /// results depend on the split). Asymmetric mode: every particle gathers its own sum, so
+    /// the split never changes a result; at least 8 blocks per thread balance the load.
+    static std::size_t blockCount(const RunSettings& s, bool symmetric, Size threads) {
+        const auto blocks = std::size_t(s.get<std::int64_t>("blocks"));
+        return symmetric ? blocks : std::max<std::size_t>(blocks, 8 * std::size_t(threads));
+    }
+
     struct Scratch {
         std::vector<Size> neighs;
         std::vector<Vec> grads, dx;

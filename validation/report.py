@@ -58,11 +58,12 @@ def plot_case(name, profile, plot_dir):
     times = profile.get("time")
     order = np.argsort(x, kind="stable")
     if times is not None and len(np.unique(times)) > 1 and name != "heat_buoyancy_blob":
-        for t in np.unique(times):
+        for n, t in enumerate(np.unique(times)):
             sel = times == t
             o = np.argsort(x[sel])
-            ax.plot(x[sel][o], ana[sel][o], "-", lw=1, label=f"analytic t = {t:g}")
-            ax.plot(x[sel][o], num[sel][o], "o", ms=3, label=f"numeric t = {t:g}")
+            color = f"C{n % 10}"
+            ax.plot(x[sel][o], ana[sel][o], "-", lw=1, color=color, label=f"analytic t = {t:g}")
+            ax.plot(x[sel][o], num[sel][o], "o", ms=3, color=color, label=f"numeric t = {t:g}")
     else:
         ax.plot(x[order], ana[order], "-", lw=1.5, label="analytic / reference")
         ax.plot(x[order], num[order], "o", ms=3, label="numeric")

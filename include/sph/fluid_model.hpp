@@ -55,12 +55,12 @@
 #include "sph/terms/continuity_density.hpp"
 #include "sph/terms/delta_sph.hpp"
 #include "sph/terms/equation_of_state.hpp"
+#include "sph/terms/heat_model.hpp"
 #include "sph/terms/laminar_viscosity.hpp"
 #include "sph/terms/neighbour_gather.hpp"
 #include "sph/terms/particle_shifting.hpp"
 #include "sph/terms/pressure_gradient.hpp"
 #include "sph/terms/summation_density.hpp"
-#include "sph/terms/heat_model.hpp"
 
 namespace num::sph {
 
@@ -107,8 +107,8 @@ struct FluidModel {
     Float artificialViscosity = 0;  ///< Monaghan's alpha; 0: off
 
     // Particle regularity.
-    bool shifting = false;          ///< particle shifting (Lind et al. 2012)
-    Float shiftingCoefficient = 2;  ///< A in dr = -A h U dt grad C
+    bool shifting = false;           ///< particle shifting (Lind et al. 2012)
+    Float shiftingCoefficient = 20;  ///< A in dr = -A h U dt grad C (see particle_shifting.hpp)
 
     // Forces.
     BodyForce<Dim> bodyForce;  ///< acceleration of time (gravity, a ramp); empty: none

@@ -24,6 +24,10 @@ inline constexpr QuantityId KINEMATIC_VISCOSITY = QuantityId(102);
 inline constexpr QuantityId KERNEL_SUM = QuantityId(103);
 /// Gradient of the kernel sum, sum_j V_j grad_i W_ij (Vector), from particle shifting.
 inline constexpr QuantityId KERNEL_SUM_GRADIENT = QuantityId(104);
+/// Column b of the velocity gradient, sum_j V_j (v_j - v_i) d_b W_ij (Vector), b = 0..Dim-1,
+/// and the density gradient (Vector), from particle shifting (for its Taylor correction).
+inline constexpr QuantityId VELOCITY_GRADIENT_0 = QuantityId(105);
+inline constexpr QuantityId DENSITY_GRADIENT = QuantityId(108);
 }  // namespace FluidId
 
 enum class WallSlip : int { NO_SLIP = 0, FREE_SLIP = 1 };

@@ -89,7 +89,7 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "%s: error: %s\nRun '%s --help' for the options and examples.\n",
+        std::fprintf(stderr, "%s: error: %s (run '%s --help' for the options and examples)\n",
                      info.name.c_str(), e.what(), info.name.c_str());
         return int(ExitCode::USAGE);
     }

@@ -98,7 +98,7 @@ Image renderParticles(const sph::Storage<Dim>& s, const RenderSettings<Dim>& r, 
                 }
         }
         scale = plotW / (uMax - uMin);
-        radius = 0.6 * r.spacing * scale;
+        radius = 0.5 * r.spacing * scale;
         double dMin = 1e300, dMax = -1e300;
         for (Size i = 0; i < s.size(); ++i) {
             if (kind && kind[i] == int(sph::ParticleKind::WALL)) continue;

@@ -1,6 +1,7 @@
 // Scene files as JSON documents: reading, syntax errors with line and column, overrides.
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -10,6 +11,9 @@
 namespace num::io {
 
 SceneDocument SceneDocument::fromFile(const std::string& path) {
+    if (std::filesystem::is_directory(path))
+        throw AppError(ExitCode::SCENE_FILE,
+                       path + ": cannot read the scene file: it is a directory, not a JSON file");
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         const std::string why = std::strerror(errno);

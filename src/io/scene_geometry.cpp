@@ -66,9 +66,9 @@ void checkSceneGeometry(const Scene<Dim>& s) {
         return true;
     };
     for (int k = 0; k < Dim; ++k)
-        if (s.domainMax[k] - s.domainMin[k] < 4 * s.spacing)
+        if (s.domainMax[k] - s.domainMin[k] < 2 * s.spacing)
             throw sceneError(file, "particles.spacing",
-                             "a spacing at most a quarter of the domain's extent on every axis",
+                             "a spacing at most half the domain's extent on every axis",
                              std::to_string(s.spacing));
     double estimate = 0;
     for (std::size_t i = 0; i < s.fluids.size(); ++i) {

@@ -165,6 +165,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     std::signal(SIGINT, SIG_DFL);
     std::signal(SIGTERM, SIG_DFL);
 
+    state.emitted = emitters.emitted();
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     const std::string video = status == "completed" ? outputs.makeVideo(opt.quiet) : "";

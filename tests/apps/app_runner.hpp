@@ -1,0 +1,61 @@
+// Running the apps from tests: a command line in, exit code and output (stdout + stderr) out;
+// fresh work directories; small file helpers.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace apptest {
+
+struct Result {
+    int code = -1;
+    std::string output;
+};
+
+/// Runs `program args` with the shell in `dir`, capturing stdout and stderr.
+inline Result run(const std::string& program, const std::string& args, const std::string& dir) {
+    const std::string cmd = "cd '" + dir + "' && '" + program + "' " + args + " 2>&1";
+    Result r;
+    std::FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) r.output.append(buf, n);
+    const int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+/// An empty directory for one test.
+inline std::string freshDir(const std::string& name) {
+    const std::string dir = std::string(APP_TEST_WORK) + "/" + name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+inline std::string scene(const std::string& name) {
+    return std::string(APP_TEST_SCENES) + "/" + name;
+}
+
+inline std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+inline void writeFile(const std::string& path, const std::string& text) {
+    std::ofstream(path, std::ios::binary) << text;
+}
+
+inline bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+}  // namespace apptest

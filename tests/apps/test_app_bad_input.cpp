@@ -1,0 +1,185 @@
+// Bad input: each case gets one clear message (file, key path, expected, found, a hint for a
+// misspelt key) and its documented exit code (docs/scenes.md), never a crash or a hang.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "app_runner.hpp"
+
+using namespace apptest;
+using nlohmann::json;
+
+namespace {
+
+// Exit codes documented in docs/scenes.md.
+constexpr int kUsage = 2, kSceneFile = 3, kJson = 4, kScene = 5, kExpression = 6, kOutput = 7,
+              kCheckpoint = 8;
+
+json tiny() { return json::parse(readFile(scene("tiny_2d.json"))); }
+
+/// Runs fluid_sim on the scene text written to <dir>/scene.json.
+Result runScene(const std::string& name, const std::string& text, const std::string& extra = "") {
+    const std::string dir = freshDir("bad_" + name);
+    writeFile(dir + "/scene.json", text);
+    return run(FLUID_SIM, "scene.json --quiet --out out " + extra, dir);
+}
+
+void expectMessage(const Result& r, int code, std::initializer_list<const char*> parts) {
+    EXPECT_EQ(r.code, code) << r.output;
+    for (const char* p : parts)
+        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
+    // One message, on one line.
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+}  // namespace
+
+TEST(BadInput, MissingSceneFile) {
+    const Result r = run(FLUID_SIM, "no_such_scene.json", freshDir("bad_missing"));
+    expectMessage(r, kSceneFile, {"no_such_scene.json", "No such file"});
+}
+
+TEST(BadInput, UnreadableSceneFile) {
+    const std::string dir = freshDir("bad_unreadable");
+    std::filesystem::create_directory(dir + "/a_directory.json");
+    expectMessage(run(FLUID_SIM, "a_directory.json", dir), kSceneFile, {"a_directory.json"});
+}
+
+TEST(BadInput, MalformedJsonGivesLineAndColumn) {
+    const Result r =
+        runScene("malformed",
+                 "{\n  \"dimension\": 2,\n  \"domain\": { \"min\": [0, 0] \"max\": [1, 1] }\n}");
+    expectMessage(r, kJson, {"scene.json:3:", "malformed JSON"});
+}
+
+TEST(BadInput, UnknownKeySuggestsTheRightOne) {
+    json j = tiny();
+    j["particles"]["spacnig"] = j["particles"]["spacing"];
+    j["particles"].erase("spacing");
+    expectMessage(runScene("unknown", j.dump()), kScene,
+                  {"scene.json", "particles.spacnig", "did you mean 'spacing'?"});
+}
+
+TEST(BadInput, WrongType) {
+    json j = tiny();
+    j["time"]["end"] = "soon";
+    expectMessage(
+        runScene("type", j.dump()), kScene,
+        {"scene.json", "time.end", "expected a positive number", "found the string \"soon\""});
+}
+
+TEST(BadInput, NegativeSpacing) {
+    json j = tiny();
+    j["particles"]["spacing"] = -0.01;
+    expectMessage(runScene("negative", j.dump()), kScene,
+                  {"particles.spacing", "expected a positive number [m]", "found -0.01"});
+}
+
+TEST(BadInput, ZeroSpacing) {
+    json j = tiny();
+    j["particles"]["spacing"] = 0;
+    expectMessage(runScene("zero", j.dump()), kScene, {"particles.spacing", "positive", "found 0"});
+}
+
+TEST(BadInput, FluidBlockOutsideTheDomain) {
+    json j = tiny();
+    j["fluids"][0]["max"] = {0.1, 0.5};
+    expectMessage(runScene("outside", j.dump()), kScene, {"fluids[0]", "inside the domain"});
+}
+
+TEST(BadInput, FluidBlockOverlappingABody) {
+    json j = tiny();
+    j["fluids"][0]["max"] = {0.17, 0.12};
+    expectMessage(runScene("overlap", j.dump()), kScene, {"fluids[0]", "overlap", "bodies[0]"});
+}
+
+TEST(BadInput, EmptyScene) {
+    json j = tiny();
+    j["fluids"] = json::array();
+    expectMessage(runScene("empty", j.dump()), kScene, {"fluids", "no fluid particles"});
+}
+
+TEST(BadInput, PeriodicOnOneSideOnly) {
+    json j = tiny();
+    j["boundaries"]["left"] = {{"type", "periodic"}};
+    expectMessage(runScene("periodic", j.dump()), kScene,
+                  {"boundaries.right.type", "periodic", "both sides"});
+}
+
+TEST(BadInput, MissingSide) {
+    json j = tiny();
+    j["boundaries"].erase("top");
+    expectMessage(runScene("side", j.dump()), kScene, {"boundaries.top", "missing"});
+}
+
+TEST(BadInput, ExpressionThatDoesNotParse) {
+    json j = tiny();
+    j["fluids"][0]["temperature"] = "20 + sin(x";
+    expectMessage(runScene("expression", j.dump()), kExpression,
+                  {"fluids[0].temperature", "expression", "20 + sin(x"});
+}
+
+TEST(BadInput, UnwritableOutputDirectory) {
+    const std::string dir = freshDir("bad_unwritable");
+    writeFile(dir + "/plain_file", "not a directory");
+    const Result r =
+        run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out plain_file/out", dir);
+    expectMessage(r, kOutput, {"plain_file/out", "cannot create the output directory"});
+}
+
+TEST(BadInput, DiskFull) {
+    // /dev/full fails every write with ENOSPC: an output file that leads there behaves like a
+    // full disk.
+    ASSERT_TRUE(std::filesystem::exists("/dev/full"));
+    const std::string dir = freshDir("bad_full");
+    std::filesystem::create_directories(dir + "/out");
+    std::filesystem::create_symlink("/dev/full", dir + "/out/particles_0000.vtu");
+    const Result r = run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out out", dir);
+    expectMessage(r, kOutput, {"particles_0000.vtu", "No space left on device", "disk is full"});
+}
+
+TEST(BadInput, ThreeDSceneGivenToTheTwoDApp) {
+    const Result r = run(FLUID_SIM, "'" + scene("tiny_3d.json") + "' --quiet", freshDir("bad_dim"));
+    expectMessage(r, kScene, {"3D scene", "fluid_sim_3d"});
+    const Result r3 =
+        run(FLUID_SIM_3D, "'" + scene("tiny_2d.json") + "' --quiet", freshDir("bad_dim3"));
+    expectMessage(r3, kScene, {"2D scene", "run it with fluid_sim"});
+}
+
+TEST(BadInput, UnknownMaterialSuggestsName) {
+    json j = tiny();
+    j["fluids"][0]["material"] = "watr";
+    expectMessage(runScene("material", j.dump()), kScene,
+                  {"fluids[0].material", "did you mean \"water\"?"});
+}
+
+TEST(BadInput, BadCommandLine) {
+    const std::string dir = freshDir("bad_cli");
+    expectMessage(run(FLUID_SIM, "--backend gpu", dir), kUsage, {"--backend"});
+    const Result r = run(FLUID_SIM, "--set particles.spacing", dir);
+    expectMessage(r, kUsage, {"KEY=VALUE"});
+}
+
+TEST(BadInput, CorruptedAndTruncatedCheckpoints) {
+    const std::string dir = freshDir("bad_checkpoint");
+    const Result ok =
+        run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out out --checkpoint-every 0.01",
+            dir);
+    ASSERT_EQ(ok.code, 0) << ok.output;
+    const std::string good = readFile(dir + "/out/checkpoint_0001.chk");
+    ASSERT_GT(good.size(), 100u);
+    std::string flipped = good;
+    flipped[flipped.size() / 2] ^= 0x10;
+    writeFile(dir + "/corrupted.chk", flipped);
+    expectMessage(run(FLUID_SIM, "--quiet --restart corrupted.chk", dir), kCheckpoint,
+                  {"corrupted.chk", "checksum", "corrupted"});
+    writeFile(dir + "/truncated.chk", good.substr(0, good.size() - 100));
+    expectMessage(run(FLUID_SIM, "--quiet --restart truncated.chk", dir), kCheckpoint,
+                  {"truncated.chk", "truncated"});
+    writeFile(dir + "/other.chk", "{\"dimension\": 2}");
+    expectMessage(run(FLUID_SIM, "--quiet --restart other.chk", dir), kCheckpoint,
+                  {"other.chk", "not a numerics checkpoint"});
+    expectMessage(run(FLUID_SIM_3D, "--quiet --restart out/checkpoint_0001.chk", dir), kCheckpoint,
+                  {"2D checkpoint", "fluid_sim"});
+}

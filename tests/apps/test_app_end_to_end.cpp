@@ -1,0 +1,138 @@
+// End to end: the apps run tiny 2D and 3D scenes with both backends and write every output the
+// scene asks for (VTU + PVD series, CSV, PNG, probes.csv, summary.json).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "app_runner.hpp"
+#include "vtu_reader.hpp"
+
+using namespace apptest;
+
+struct Case {
+    int dim;
+    std::string backend;
+};
+
+class EndToEnd : public ::testing::TestWithParam<Case> {};
+
+TEST_P(EndToEnd, WritesEveryOutput) {
+    const Case c = GetParam();
+    const std::string app = c.dim == 2 ? FLUID_SIM : FLUID_SIM_3D;
+    const std::string dir = freshDir("e2e_" + std::to_string(c.dim) + "d_" + c.backend);
+    const Result r = run(app,
+                         "'" + scene(c.dim == 2 ? "tiny_2d.json" : "tiny_3d.json") +
+                             "' --out out --backend " + c.backend + " --threads 2",
+                         dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "particles.pvd")) << r.output;  // tells what to open
+    const std::string out = dir + "/out/";
+
+    // Outputs at t = 0, 0.01, 0.02: three VTU files listed in the series with their times.
+    const std::string pvd = readFile(out + "particles.pvd");
+    for (int k = 0; k < 3; ++k) {
+        const std::string name = "particles_000" + std::to_string(k);
+        EXPECT_TRUE(contains(pvd, "file=\"" + name + ".vtu\"")) << pvd;
+        const VtuFile v = readVtu(readFile(out + name + ".vtu"));
+        EXPECT_NEAR(v.time, 0.01 * k, 1e-12);
+        ASSERT_GT(v.points, 0u);
+        for (const char* field :
+             {"velocity", "density", "pressure", "temperature", "mass", "material"}) {
+            ASSERT_TRUE(v.arrays.count(field)) << field;
+            const VtuArray& a = v.arrays.at(field);
+            EXPECT_EQ(a.values.size(), v.points * a.components) << field;
+        }
+        EXPECT_EQ(v.arrays.at("velocity").components, 3);
+        // CSV named like the VTU: header, then fluid particles only (fewer rows than points).
+        const std::string csv = readFile(out + name + ".csv");
+        const std::string header = csv.substr(0, csv.find('\n'));
+        EXPECT_EQ(
+            header.rfind(c.dim == 2 ? "x,y,vx,vy,density,pressure,temperature,mass,material"
+                                    : "x,y,z,vx,vy,vz,density,pressure,temperature,mass,material",
+                         0),
+            0u)
+            << header;
+        const auto rows = std::count(csv.begin(), csv.end(), '\n') - 1;
+        EXPECT_GT(rows, 0);
+        EXPECT_LT(std::size_t(rows), v.points);
+        const std::string png = readFile(out + name + ".png");
+        ASSERT_GT(png.size(), 8u);
+        EXPECT_EQ(png.substr(1, 3), "PNG");
+    }
+    // probes.csv: a time column and <probe>.<field> columns, one row per output time.
+    const std::string probes = readFile(out + "probes.csv");
+    EXPECT_EQ(probes.substr(0, probes.find('\n')),
+              c.dim == 2 ? "time,p1.pressure,p1.vx,p1.vy" : "time,p.temperature");
+    EXPECT_EQ(std::count(probes.begin(), probes.end(), '\n'), 4);
+
+    const auto s = nlohmann::json::parse(readFile(out + "summary.json"));
+    for (const char* key : {"dimension", "particles", "steps", "final_time", "wall_seconds",
+                            "particle_steps_per_second", "threads", "backend", "conservation"})
+        EXPECT_TRUE(s.contains(key)) << key;
+    EXPECT_EQ(s["dimension"], c.dim);
+    EXPECT_EQ(s["backend"], c.backend);
+    EXPECT_EQ(s["threads"], c.backend == "seq" ? 1 : 2);
+    EXPECT_NEAR(s["final_time"].get<double>(), 0.02, 1e-12);
+    EXPECT_GT(s["steps"].get<int>(), 0);
+    for (const char* key :
+         {"mass", "momentum", "kinetic_energy", "potential_energy", "thermal_energy"})
+        EXPECT_TRUE(s["conservation"].contains(key)) << key;
+    // No emitter or outflow in the 2D scene: the fluid mass is conserved exactly.
+    if (c.dim == 2)
+        EXPECT_EQ(s["conservation"]["mass"]["start"], s["conservation"]["mass"]["end"]);
+    else
+        EXPECT_GT(s["emitted_particles"].get<int>(), 0);  // the 3D scene's emitter ran
+}
+
+INSTANTIATE_TEST_SUITE_P(Apps, EndToEnd,
+                         ::testing::Values(Case{2, "seq"}, Case{2, "omp"}, Case{3, "seq"},
+                                           Case{3, "omp"}),
+                         [](const auto& info) {
+                             return std::to_string(info.param.dim) + "D_" + info.param.backend;
+                         });
+
+TEST(Apps, HelpShowsExamplesAndVersionPrints) {
+    const std::string dir = freshDir("help");
+    const Result help = run(FLUID_SIM, "--help", dir);
+    EXPECT_EQ(help.code, 0);
+    for (const char* option :
+         {"--out", "--threads", "--backend", "--end-time", "--set", "--restart",
+          "--checkpoint-every", "--quiet", "--version", "Examples:"})
+        EXPECT_TRUE(contains(help.output, option)) << option;
+    const Result version = run(FLUID_SIM_3D, "--version", dir);
+    EXPECT_EQ(version.code, 0);
+    EXPECT_TRUE(contains(version.output, "0.1.0"));
+}
+
+TEST(Apps, QuietPrintsNothing) {
+    const std::string dir = freshDir("quiet");
+    const Result r =
+        run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --end-time 0.005", dir);
+    EXPECT_EQ(r.code, 0);
+    EXPECT_EQ(r.output, "");
+}
+
+TEST(Apps, SetOverridesSceneValues) {
+    const std::string dir = freshDir("set");
+    const Result r =
+        run(FLUID_SIM,
+            "'" + scene("tiny_2d.json") +
+                "' --print-scene --set particles.spacing=0.01 --set fluids.0.temperature=30",
+            dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    const auto j = nlohmann::json::parse(r.output);
+    EXPECT_EQ(j["particles"]["spacing"], 0.01);
+    EXPECT_EQ(j["fluids"][0]["temperature"], 30);
+}
+
+TEST(Apps, DefaultScenesAreBuiltIn) {
+    const std::string dir = freshDir("defaults");
+    const Result r2 = run(FLUID_SIM, "--print-scene", dir);
+    ASSERT_EQ(r2.code, 0);
+    EXPECT_EQ(nlohmann::json::parse(r2.output),
+              nlohmann::json::parse(readFile(scene("../../../scenes/dam_break_hot_cold_2d.json"))));
+    const Result r3 = run(FLUID_SIM_3D, "--print-scene", dir);
+    ASSERT_EQ(r3.code, 0);
+    EXPECT_EQ(nlohmann::json::parse(r3.output),
+              nlohmann::json::parse(readFile(scene("../../../scenes/hoses_3d.json"))));
+}

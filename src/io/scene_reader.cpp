@@ -319,7 +319,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     if (root.has("physics")) {
         const At ph = root["physics"];
         ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting", "gravity_ramp",
-                   "max_speed"});
+                   "max_speed", "eos", "background_pressure"});
         s.physics.heat = ph.boolean("heat", s.physics.heat);
         s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
         if (ph.has("density"))

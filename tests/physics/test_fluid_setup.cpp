@@ -1,0 +1,95 @@
+// Particle set-up and boundary bookkeeping of the fluid model: wall layers cover the kernel
+// support, kinds and normals are right, bodies displace fluid, periodic lengths are checked,
+// summation density of a full lattice is rho0 times the lattice sum, and boundary particles
+// stay fixed.
+#include <gtest/gtest.h>
+
+#include "fluid_test_support.hpp"
+
+using namespace num::sph;
+using namespace num::sph::fluid_test;
+
+namespace {
+FluidGeometry<2> boxWithBody(double dx) {
+    FluidGeometry<2> g;
+    g.spacing = dx;
+    g.domain.max = Vector<2>{{1, 1}};
+    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max)));
+    SolidBody<2> body;
+    body.shape = Shape<2>::ball(Vector<2>{{0.5, 0.5}}, 0.2);
+    g.bodies.push_back(body);
+    return g;
+}
+}  // namespace
+
+TEST(FluidSetup, WallLayersKindsAndNormals) {
+    const double dx = 0.05;
+    const FluidGeometry<2> g = boxWithBody(dx);
+    const RunSettings s = settingsFor(dx);  // cubic spline, support 2.6 dx -> 3 layers
+    FluidModel<2> model;
+    const Storage<2> st = makeFluidStorage(model, g, s);
+    const auto x = st.getValue<Vector<2>>(QuantityId::POSITION);
+    const auto kind = st.getValue<int>(QuantityId::KIND);
+    const auto normal = st.getValue<Vector<2>>(QuantityId::NORMAL);
+    int fluid = 0, wall = 0, body = 0;
+    for (Size i = 0; i < st.size(); ++i) {
+        if (kind[i] == int(ParticleKind::FLUID)) {
+            ++fluid;
+            EXPECT_GE(norm(x[i] - Vector<2>{{0.5, 0.5}}), 0.2);
+        } else if (kind[i] == int(ParticleKind::WALL)) {
+            ++wall;
+            // Below the bottom (and not in a corner): the normal points up, into the fluid.
+            if (x[i][1] < 0 && x[i][0] > 0 && x[i][0] < 1) {
+                EXPECT_EQ(normal[i][1], 1.0);
+            }
+            EXPECT_NEAR(norm(normal[i]), 1.0, 1e-12);
+        } else {
+            ++body;
+            EXPECT_LT(norm(x[i] - Vector<2>{{0.5, 0.5}}), 0.2);
+        }
+    }
+    // (20 + 2 * 3)^2 - 20^2 wall particles; body and fluid share the 400 interior points.
+    EXPECT_EQ(wall, 26 * 26 - 400);
+    EXPECT_EQ(fluid + body, 400);
+    EXPECT_GT(body, 0);
+}
+
+TEST(FluidSetup, PeriodicLengthMustBeMultipleOfSpacing) {
+    FluidGeometry<2> g;
+    g.spacing = 0.3;
+    g.domain.max = Vector<2>{{1, 1}};
+    g.domain.periodic = {true, false};
+    EXPECT_THROW(generateParticles(g, 3), std::invalid_argument);
+}
+
+TEST(FluidSetup, SummationDensityOfFullLatticeAndFixedBoundaries) {
+    const double dx = 0.05;
+    FluidGeometry<2> g = boxWithBody(dx);
+    FluidModel<2> model;
+    model.density = DensityMode::SUMMATION;
+    model.maxVelocity = 1;
+    model.bodyForce = constantForce(Vector<2>{{0, -9.81}});
+    FluidCase<2> c(model, g, settingsFor(dx));
+    // Boundary positions, sorted (the run reorders particles by cell).
+    auto boundaryPositions = [&] {
+        std::vector<std::array<double, 2>> out;
+        for (Size i = 0; i < c.storage.size(); ++i)
+            if (!isFluid(c.kind()[i])) out.push_back({c.x()[i][0], c.x()[i][1]});
+        std::sort(out.begin(), out.end());
+        return out;
+    };
+    const auto start = boundaryPositions();
+    c.run->prime();
+    const auto rho = c.storage.getValue<Float>(QuantityId::DENSITY);
+    const auto kind = c.kind();
+    // Every fluid particle has a full support (walls and body fill it): rho = rho0 times the
+    // cubic spline's 2D lattice sum at h = 1.3 dx, 0.999947 (validation.md sec. 1).
+    for (Size i = 0; i < c.storage.size(); ++i) {
+        if (isFluid(kind[i])) {
+            EXPECT_NEAR(rho[i] / 1000.0, 0.999947, 1e-5);
+        }
+    }
+    c.run->advanceTo(0.05);
+    EXPECT_GT(c.run->steps(), 25u);  // at least one reordering happened
+    EXPECT_EQ(boundaryPositions(), start);
+}

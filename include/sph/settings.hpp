@@ -14,6 +14,8 @@
 #include <variant>
 #include <vector>
 
+#include "sph/suggest.hpp"
+
 namespace num::sph {
 
 struct SettingsError : std::runtime_error {
@@ -120,12 +122,9 @@ class ParameterSet {
     const SettingSpec& specOf(const std::string& key) const {
         auto it = specs_.find(key);
         if (it != specs_.end()) return it->second;
-        std::string hint;
-        std::size_t best = 3;
-        for (const auto& [k, s] : specs_) {
-            const std::size_t d = editDistance(k, key);
-            if (d < best) best = d, hint = k;
-        }
+        std::vector<std::string> names;
+        for (const auto& [k, spec] : specs_) names.push_back(k);
+        const std::string hint = closestName(key, names);
         throw SettingsError("unknown setting '" + key + "'" +
                             (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
     }
@@ -137,20 +136,6 @@ class ParameterSet {
     static std::string typeName(const SettingValue& v) {
         static const char* names[] = {"boolean", "integer", "number", "string"};
         return names[v.index()];
-    }
-    static std::size_t editDistance(const std::string& a, const std::string& b) {
-        std::vector<std::size_t> row(b.size() + 1);
-        for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-        for (std::size_t i = 1; i <= a.size(); ++i) {
-            std::size_t diag = row[0];
-            row[0] = i;
-            for (std::size_t j = 1; j <= b.size(); ++j) {
-                const std::size_t up = row[j];
-                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
-                diag = up;
-            }
-        }
-        return row[b.size()];
     }
 
     std::map<std::string, SettingSpec> specs_;

@@ -14,8 +14,6 @@ namespace num::io::detail {
 
 using nlohmann::json;
 
-/// Levenshtein distance, for "did you mean" hints.
-std::size_t editDistance(const std::string& a, const std::string& b);
 /// The closest of `candidates` to `word` if close enough to be a likely misspelling, else "".
 std::string closest(const std::string& word, const std::vector<std::string>& candidates);
 /// A short description of a JSON value for "found ..." ("the string \"abc\"", "-0.01").

@@ -1,7 +1,5 @@
 // Shared set-up of the fluid validation tests: running a case built from FluidModel and
-// FluidGeometry, analytic channel solutions, and the validation output
-// (NUMERICS_VALIDATION_OUT names a directory for <case>.json and <case>_profile.csv;
-// NUMERICS_VALIDATION_FULL=1 asks for the documentation resolution).
+// FluidGeometry, and analytic channel solutions (output: tests/validation_output.hpp).
 #pragma once
 
 #include <cmath>
@@ -13,50 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "../validation_output.hpp"
 #include "sph/fluid_model.hpp"
 #include "sph/timestepping.hpp"
 
 namespace num::sph::fluid_test {
 
-inline bool fullResolution() {
-    const char* v = std::getenv("NUMERICS_VALIDATION_FULL");
-    return v && std::string(v) == "1";
-}
-
-/// One row of a profile; time < 0 means a case without a time column.
-struct ProfileRow {
-    double coordinate, numeric, analytic, time = -1;
-};
-
-struct ValidationResult {
-    std::string name, resolution, notes;
-    double error = 0, tolerance = 0;
-    bool passed = false;
-    std::vector<ProfileRow> profile;
-
-    /// Writes <name>.json and <name>_profile.csv when NUMERICS_VALIDATION_OUT is set.
-    void write() const {
-        const char* dir = std::getenv("NUMERICS_VALIDATION_OUT");
-        if (!dir || !*dir) return;
-        std::filesystem::create_directories(dir);
-        const std::filesystem::path base(dir);
-        std::ofstream json(base / (name + ".json"));
-        json.precision(10);
-        json << "{\"case\": \"" << name << "\", \"resolution\": \"" << resolution
-             << "\", \"error\": " << error << ", \"tolerance\": " << tolerance
-             << ", \"passed\": " << (passed ? "true" : "false") << ", \"notes\": \"" << notes
-             << "\"}\n";
-        std::ofstream csv(base / (name + "_profile.csv"));
-        csv.precision(10);
-        const bool timed = !profile.empty() && profile.front().time >= 0;
-        csv << "coordinate,numeric,analytic" << (timed ? ",time" : "") << "\n";
-        for (const ProfileRow& r : profile) {
-            csv << r.coordinate << "," << r.numeric << "," << r.analytic;
-            if (timed) csv << "," << r.time;
-            csv << "\n";
-        }
-    }
-};
+using validation::fullResolution;
+using validation::ProfileRow;
+using validation::ValidationResult;
 
 /// A fluid case ready to run: storage, solver and the leapfrog run loop.
 template <int Dim>

@@ -1,4 +1,6 @@
-// Neighbour search on a uniform cell grid (cell size >= search radius), built by counting sort.
+// Neighbour search on a uniform cell grid (cell size >= half the search radius, so a query visits
+// 5 cells per axis: 30 % fewer candidates than cells of one radius in 2D, 42 % fewer in 3D), built
+// by counting sort.
 // Copies the positions in cell order, knows nothing of physics. Periodic in any subset of axes: on
 // a periodic axis, pair vectors are the nearest image (the period must be at least twice the
 // radius).
@@ -53,8 +55,8 @@ class CellGrid {
     using Vector = Vec<double, Dim>;
     using Index = std::uint32_t;
 
-    /// Sorts the particles into cells of at least `radius`. Non-periodic axes span the particles'
-    /// bounding box; periodic axes span the domain.
+    /// Sorts the particles into cells of at least radius / reach. Non-periodic axes span the
+    /// particles' bounding box; periodic axes span the domain.
     void build(std::span<const Vector> x, double radius, const Domain<Dim>& domain) {
         if (!(radius > 0)) throw std::invalid_argument("cell grid: radius must be positive");
         radius_ = radius;
@@ -72,9 +74,9 @@ class CellGrid {
         // Never more than about 8 cells per particle: a stray particle far away enlarges the
         // cells rather than exhausting memory.
         const double maxCells = 8.0 * std::max<Index>(n, 64);
-        // Cells are a hair larger than the radius so that rounding in the cell coordinate of a
+        // Cells are a hair larger than radius / reach so that rounding in the cell coordinate of a
         // particle on a cell border can never put two neighbours two cells apart.
-        double cellSize = radius * (1 + 1e-8);
+        double cellSize = radius / reach * (1 + 1e-8);
         for (;;) {
             double total = 1;
             for (int k = 0; k < Dim; ++k) {
@@ -99,6 +101,11 @@ class CellGrid {
         }
         Index total = 1;
         for (int k = 0; k < Dim; ++k) total *= Index(cells_[k]);
+        anyPerPair_ = false;
+        for (int k = 0; k < Dim; ++k) {
+            perPair_[k] = domain.periodic[k] && cells_[k] < 2 * reach + 1;
+            anyPerPair_ |= perPair_[k];
+        }
 
         // Positions are copied in cell order, so that the search reads them contiguously. On
         // periodic axes each particle is placed at the image whose cell it is sorted into, so
@@ -148,6 +155,62 @@ class CellGrid {
         visitCells(sortedX_[slot_[i]], c, std::forward<F>(f));
     }
 
+    /// Neighbour lists in flat arrays, filled by collect(): j, dx = x_i - x_j and r2 = |dx|^2 of
+    /// the first `count` entries are valid (the arrays may be longer).
+    struct Neighbours {
+        std::vector<Index> j;
+        std::vector<Vector> dx;
+        std::vector<double> r2;
+        Index count = 0;
+        void reserve(std::size_t n) {
+            if (j.size() < n) j.resize(2 * n), dx.resize(2 * n), r2.resize(2 * n);
+        }
+    };
+
+    /// The neighbours j of particle i of the last build for which keep(j) holds, in the order of
+    /// forEachNeighbourOf, into `out`; returns their number. The hot path of the pair loop:
+    /// candidates are written unconditionally and kept by advancing the count, so the loop
+    /// has no branch per candidate.
+    template <class Keep>
+    Index collect(Index i, Keep&& keep, Neighbours& out) const {
+        std::array<int, Dim> c;
+        Index flat = cellOf_[i];
+        for (int k = 0; k < Dim; ++k) c[k] = int(flat % Index(cells_[k])), flat /= Index(cells_[k]);
+        const Vector p = sortedX_[slot_[i]];
+        const double r2max = radius_ * radius_;
+        Index n = 0;
+        if (anyPerPair_) {
+            visitCells(p, c, [&](Index j, const Vector& dx, double r2) {
+                if (!keep(j)) return;
+                out.reserve(n + 1);
+                out.j[n] = j, out.dx[n] = dx, out.r2[n] = r2;
+                ++n;
+            });
+            return out.count = n;
+        }
+        forEachRun(c, [&](Index b, Index e, const Vector& sh) {
+            out.reserve(n + (e - b));
+            Index* J = out.j.data();
+            Vector* DX = out.dx.data();
+            double* R2 = out.r2.data();
+            const Vector* X = sortedX_.data();
+            const Index* order = sorted_.data();
+            const Vector q = p;
+            auto keepJ = keep;
+            Index count = n;  // a local count: stores through J may not alias it
+            for (Index s = b; s < e; ++s) {
+                Vector dx;
+                for (int k = 0; k < Dim; ++k) dx[k] = (q[k] - X[s][k]) + sh[k];
+                const double r2 = normSqr(dx);
+                const Index j = order[s];
+                J[count] = j, DX[count] = dx, R2[count] = r2;
+                count += Index((r2 < r2max) & bool(keepJ(j)));
+            }
+            n = count;
+        });
+        return out.count = n;
+    }
+
     /// Particle indices ordered by cell: the permutation that makes neighbours near in memory.
     const std::vector<Index>& sortedOrder() const { return sorted_; }
     double radius() const { return radius_; }
@@ -175,17 +238,18 @@ class CellGrid {
         }
     }
 
-    template <class F>
-    void visitCells(const Vector& p, const std::array<int, Dim>& c, F&& f) const {
+    /// Calls g(begin, end, shift) for runs of slots [begin, end) of the cells around cell c, with
+    /// the image shift of the run; cells adjacent along axis 0 with the same shift form one run.
+    /// Runs come in the fixed cell order of visitCells.
+    template <class G>
+    void forEachRun(const std::array<int, Dim>& c, G&& g) const {
         // The cells to visit on each axis and the image shift of each: an axis with fewer than
-        // three cells may meet a cell from both sides, so its image is found per pair instead.
-        std::array<std::array<int, 3>, Dim> visit;
-        std::array<std::array<double, 3>, Dim> shift;
+        // 2 reach + 1 cells may meet a cell from both sides, so its image is found per pair.
+        std::array<std::array<int, 2 * reach + 1>, Dim> visit;
+        std::array<std::array<double, 2 * reach + 1>, Dim> shift;
         std::array<int, Dim> count{};
-        std::array<bool, Dim> perPair{};
         for (int k = 0; k < Dim; ++k) {
-            perPair[k] = domain_.periodic[k] && cells_[k] < 3;
-            for (int o = -1; o <= 1; ++o) {
+            for (int o = -reach; o <= reach; ++o) {
                 int cc = c[k] + o;
                 double s = 0;
                 if (domain_.periodic[k]) {
@@ -200,31 +264,52 @@ class CellGrid {
                 for (int m = 0; m < count[k]; ++m) seen |= visit[k][m] == cc;
                 if (seen) continue;
                 visit[k][count[k]] = cc;
-                shift[k][count[k]++] = perPair[k] ? 0.0 : s;
+                shift[k][count[k]++] = perPair_[k] ? 0.0 : s;
             }
         }
-        const double r2max = radius_ * radius_;
-        std::array<int, Dim> idx{};
+        // Runs along axis 0: consecutive cells with equal shifts.
+        std::array<int, 2 * reach + 1> runFirst{}, runLast{};
+        int runs = 0;
+        for (int m = 0; m < count[0]; ++m) {
+            if (runs > 0 && visit[0][m] == visit[0][runLast[runs - 1]] + 1 &&
+                shift[0][m] == shift[0][runLast[runs - 1]]) {
+                runLast[runs - 1] = m;
+                continue;
+            }
+            runFirst[runs] = runLast[runs] = m;
+            ++runs;
+        }
+        std::array<int, Dim> idx{};  // idx[0] counts runs
         for (;;) {
-            std::array<int, Dim> cell;
+            std::array<int, Dim> first, last;
             Vector sh;
-            for (int k = 0; k < Dim; ++k) cell[k] = visit[k][idx[k]], sh[k] = shift[k][idx[k]];
-            const Index ci = cellIndex(cell);
-            for (Index s = start_[ci]; s < start_[ci + 1]; ++s) {
+            first[0] = visit[0][runFirst[idx[0]]], last[0] = visit[0][runLast[idx[0]]];
+            sh[0] = shift[0][runFirst[idx[0]]];
+            for (int k = 1; k < Dim; ++k)
+                first[k] = last[k] = visit[k][idx[k]], sh[k] = shift[k][idx[k]];
+            g(start_[cellIndex(first)], start_[cellIndex(last) + 1], sh);
+            int k = 0;
+            while (k < Dim && ++idx[k] == (k == 0 ? runs : count[k])) idx[k++] = 0;
+            if (k == Dim) break;
+        }
+    }
+
+    template <class F>
+    void visitCells(const Vector& p, const std::array<int, Dim>& c, F&& f) const {
+        const double r2max = radius_ * radius_;
+        forEachRun(c, [&](Index b, Index e, const Vector& sh) {
+            for (Index s = b; s < e; ++s) {
                 const Vector& xj = sortedX_[s];
                 Vector dx;
                 for (int k = 0; k < Dim; ++k) {
                     dx[k] = (p[k] - xj[k]) + sh[k];
-                    if (perPair[k])
+                    if (perPair_[k])
                         dx[k] -= domain_.length(k) * std::nearbyint(dx[k] / domain_.length(k));
                 }
                 const double r2 = normSqr(dx);
                 if (r2 < r2max) f(sorted_[s], dx, r2);
             }
-            int k = 0;
-            while (k < Dim && ++idx[k] == count[k]) idx[k++] = 0;
-            if (k == Dim) break;
-        }
+        });
     }
 
     Index cellIndex(const std::array<int, Dim>& c) const {
@@ -233,12 +318,17 @@ class CellGrid {
         return id;
     }
 
+    /// Cells visited on each side of a particle's cell along each axis.
+    static constexpr int reach = 2;
     double radius_ = 0;
     Domain<Dim> domain_{};
     std::array<int, Dim> cells_{};
     Vector origin_{}, size_{};
     std::vector<Index> cellOf_, start_, sorted_, slot_;  // slot_: inverse of sorted_
     std::vector<Vector> sortedX_;  // positions in cell order, at the image of their cell
+    std::array<bool, Dim>
+        perPair_{};  // periodic axes of fewer than 2 reach + 1 cells: image per pair
+    bool anyPerPair_ = false;
 };
 
 }  // namespace num

@@ -114,6 +114,20 @@ class EquationHolder {
     std::vector<std::shared_ptr<IEquationTerm<Dim>>> terms_;
 };
 
+/// A term that only fuses the pair sums other terms required (DerivativeHolder::fuse): place it
+/// after them. Built-in and user derivatives fuse the same way, e.g.
+///     eq += makeTerm<FuseDerivatives<2, MyForce<2>, MyHeating<2>>>();
+template <int Dim, class... Parts>
+class FuseDerivatives : public IEquationTerm<Dim> {
+  public:
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings&) override {
+        d.template fuse<Parts...>();
+    }
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void create(Storage<Dim>&, IMaterial&) const override {}
+};
+
 /// An EquationHolder with one term of type T made from args.
 template <class T, class... Args>
 auto makeTerm(Args&&... args) {

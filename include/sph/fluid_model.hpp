@@ -229,6 +229,10 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     eq += model.extraTerms;
     eq += makeTerm<BoundaryHold<Dim>>();
     if (model.containParticles && boundaries) eq += makeTerm<ParticleContainment<Dim>>(geometry);
+    // The built-in pair sums in one pass over the pairs (DerivativeHolder::fuse).
+    eq += makeTerm<FuseDerivatives<Dim, ContinuityDensityPart<Dim>, DeltaSphPart<Dim>,
+                                   PressureGradientPart<Dim>, ArtificialViscosityPart<Dim>,
+                                   LaminarViscosityPart<Dim>, HeatConductionDerivative<Dim>>>();
     return eq;
 }
 

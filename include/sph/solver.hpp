@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -17,6 +18,31 @@
 #include "sph/kernel_choice.hpp"
 
 namespace num::sph {
+
+namespace detail {
+template <class Kernel>
+struct KernelShape {};
+template <class Shape, int Dim, class T>
+struct KernelShape<kernels::RadialKernel<Shape, Dim, T>> {
+    using type = Shape;
+};
+}  // namespace detail
+
+/// (1/r) dW/dr of a radial kernel for the pair loop, without branches or divisions other than
+/// by r, so that the loop over a particle's neighbours vectorises. Equals Kernel::gradFactor
+/// to round-off for 0 < r < support radius (every found neighbour), and gives 0 at r = 0 (where
+/// the smooth kernels' dW/dr vanishes).
+template <class Kernel>
+struct GradientFactor {
+    using Shape = typename detail::KernelShape<Kernel>::type;
+    Float invH, scale;
+    explicit GradientFactor(Float h)
+        : invH(1 / h), scale(Kernel::sigma / (Kernel::hPowDim(h) * h)) {}
+    Float factor(Float r) const {
+        const Float q = std::min(r * invH, Float(Kernel::support));
+        return scale * Shape::df(q) / std::max(r, std::numeric_limits<Float>::min());
+    }
+};
 
 template <int Dim>
 class Solver {
@@ -60,7 +86,9 @@ class Solver {
         for (std::size_t b = 0; b < holders_.size(); ++b)
             holders_[b].initialize(storage, accumulated_[symmetric_ ? b : 0]);
         withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k); });
-        Accumulated<Dim>::addInto(storage, std::span<const Accumulated<Dim>>(accumulated_));
+        Accumulated<Dim>::addInto(
+            storage, std::span<const Accumulated<Dim>>(accumulated_),
+            [&](Size n, const auto& range) { scheduler_.parallelFor(n, 8192, range); });
 
         equations_.finalize(scheduler_, storage, t);
     }
@@ -73,9 +101,16 @@ class Solver {
             return limits;
         }
         limits.offer("dt_max", settings_.get<double>("dt_max"));
+        const auto acc = storage.template getD2t<Vec>(QuantityId::POSITION);
+        const Size chunk = 8192;
+        std::vector<Float> chunkMax((acc.size() + chunk - 1) / chunk, 0.0);
+        scheduler_.parallelFor(Size(acc.size()), chunk, [&](Size b, Size e) {
+            Float m = 0;
+            for (Size i = b; i < e; ++i) m = std::max(m, normSqr(acc[i]));
+            chunkMax[b / chunk] = m;
+        });
         Float a2max = 0;
-        for (const Vec& a : storage.template getD2t<Vec>(QuantityId::POSITION))
-            a2max = std::max(a2max, normSqr(a));
+        for (Float m : chunkMax) a2max = std::max(a2max, m);
         if (a2max > 0)
             limits.offer("acceleration", settings_.get<double>("acceleration_factor") *
                                              std::sqrt(kernel_.h / std::sqrt(a2max)));
@@ -102,8 +137,8 @@ class Solver {
     }
 
     struct Scratch {
-        std::vector<Size> neighs;
-        std::vector<Vec> grads, dx;
+        typename CellGrid<Dim>::Neighbours found;
+        std::vector<Vec> grads;
         std::vector<Float> r, w;
         std::size_t pairs = 0;
     };
@@ -121,38 +156,42 @@ class Solver {
 
     template <class Kernel>
     void pairLoop(Storage<Dim>& storage, Kernel) {
-        const ArrayView<const Vec> x = storage.template getValue<Vec>(QuantityId::POSITION);
         const std::uint64_t n = storage.size();
         const std::uint64_t blocks = holders_.size();
         const Float h = kernel_.h;
+        const GradientFactor<Kernel> gradient(h);
         scheduler_.parallelFor(Size(blocks), 1, [&](Size b0, Size b1) {
             for (Size b = b0; b < b1; ++b) {
                 Scratch& sc = scratch_[b];
                 sc.pairs = 0;
                 const Size begin = Size(n * b / blocks), end = Size(n * (b + 1) / blocks);
                 for (Size i = begin; i < end; ++i) {
-                    sc.neighs.clear();
-                    sc.dx.clear();
-                    sc.r.clear();
-                    grid_.forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
-                        if (symmetric_ ? j > i : j != i) {
-                            sc.neighs.push_back(j);
-                            sc.dx.push_back(dx);
-                            sc.r.push_back(std::sqrt(r2));
-                        }
-                    });
-                    const std::size_t m = sc.neighs.size();
+                    const Size m = symmetric_ ? grid_.collect(
+                                                    i, [i](Size j) { return j > i; }, sc.found)
+                                              : grid_.collect(
+                                                    i, [i](Size j) { return j != i; }, sc.found);
                     sc.pairs += m;
-                    sc.grads.resize(m);
-                    for (std::size_t k = 0; k < m; ++k)
-                        sc.grads[k] = sc.dx[k] * Kernel::gradFactor(sc.r[k], h);
-                    sc.w.resize(needsW_ ? m : 0);
-                    for (std::size_t k = 0; k < sc.w.size(); ++k) sc.w[k] = Kernel::W(sc.r[k], h);
-                    const NeighbourGeometry<Dim> geo{sc.dx, sc.r, sc.w};
+                    if (sc.r.size() < m) {
+                        sc.r.resize(2 * m), sc.grads.resize(2 * m);
+                        if (needsW_) sc.w.resize(2 * m);
+                    }
+                    const Vec* dx = sc.found.dx.data();
+                    const double* r2 = sc.found.r2.data();
+                    Float* r = sc.r.data();
+                    Vec* grads = sc.grads.data();
+                    for (Size k = 0; k < m; ++k) r[k] = std::sqrt(r2[k]);
+                    for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradient.factor(r[k]);
+                    if (needsW_)
+                        for (Size k = 0; k < m; ++k) sc.w[k] = Kernel::W(r[k], h);
+                    const ArrayView<const Size> neighs(sc.found.j.data(), m);
+                    const ArrayView<const Vec> g(grads, m);
+                    const NeighbourGeometry<Dim> geo{
+                        ArrayView<const Vec>(dx, m), ArrayView<const Float>(r, m),
+                        ArrayView<const Float>(sc.w.data(), needsW_ ? m : 0)};
                     if (symmetric_)
-                        holders_[b].evalSymmetric(i, sc.neighs, sc.grads, geo);
+                        holders_[b].evalSymmetric(i, neighs, g, geo);
                     else
-                        holders_[b].evalAsymmetric(i, sc.neighs, sc.grads, geo);
+                        holders_[b].evalAsymmetric(i, neighs, g, geo);
                 }
             }
         });

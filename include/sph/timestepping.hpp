@@ -47,27 +47,45 @@ class LeapfrogKDK final : public ITimeStepping<Dim> {
   public:
     void step(Solver<Dim>& solver, Storage<Dim>& s, Float t, Float dt) override {
         const Float half = 0.5 * dt;
-        saved_.clear();
+        IScheduler& sch = solver.scheduler();
+        const Size grain = 8192;
+        std::size_t k = 0;
         detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            const Size n = Size(b.value.size());
             if (o == OrderEnum::SECOND) {
-                for (std::size_t i = 0; i < b.value.size(); ++i) {
-                    b.dt[i] += b.d2t[i] * half;
-                    b.value[i] += b.dt[i] * dt;
-                }
+                sch.parallelFor(n, grain, [&](Size i0, Size i1) {
+                    for (Size i = i0; i < i1; ++i) {
+                        b.dt[i] += b.d2t[i] * half;
+                        b.value[i] += b.dt[i] * dt;
+                    }
+                });
             } else {
-                saved_.emplace_back(b.dt);
-                for (std::size_t i = 0; i < b.value.size(); ++i) b.value[i] += b.dt[i] * dt;
+                using V = std::decay_t<decltype(b.dt)>;
+                if (k == saved_.size()) saved_.emplace_back(V{});
+                if (!std::holds_alternative<V>(saved_[k])) saved_[k] = V{};
+                V& old = std::get<V>(saved_[k++]);
+                old.resize(n);
+                sch.parallelFor(n, grain, [&](Size i0, Size i1) {
+                    for (Size i = i0; i < i1; ++i) {
+                        old[i] = b.dt[i];
+                        b.value[i] += b.dt[i] * dt;
+                    }
+                });
             }
         });
         solver.evaluate(s, t + dt);
-        std::size_t k = 0;
+        k = 0;
         detail::forEachEvolved(s, [&](auto& b, OrderEnum o) {
+            const Size n = Size(b.value.size());
             if (o == OrderEnum::SECOND) {
-                for (std::size_t i = 0; i < b.value.size(); ++i) b.dt[i] += b.d2t[i] * half;
+                sch.parallelFor(n, grain, [&](Size i0, Size i1) {
+                    for (Size i = i0; i < i1; ++i) b.dt[i] += b.d2t[i] * half;
+                });
             } else {
                 const auto& old = std::get<std::decay_t<decltype(b.dt)>>(saved_[k++]);
-                for (std::size_t i = 0; i < b.value.size(); ++i)
-                    b.value[i] += (b.dt[i] - old[i]) * half;
+                sch.parallelFor(n, grain, [&](Size i0, Size i1) {
+                    for (Size i = i0; i < i1; ++i) b.value[i] += (b.dt[i] - old[i]) * half;
+                });
             }
         });
     }

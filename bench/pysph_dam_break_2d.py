@@ -16,7 +16,6 @@ import numpy as np
 from pysph.base.kernels import WendlandQuintic
 from pysph.sph.scheme import WCSPHScheme
 from pysph.solver.application import Application
-from pysph.tools.geometry import get_2d_block, get_2d_tank
 from pysph.base.utils import get_particle_array
 
 G = 9.81
@@ -45,11 +44,18 @@ class DamBreakBench(Application):
                                      pfreq=10**9)
 
     def create_particles(self):
+        # The same lattice as numerics' fluid model (cell centres, x = (i + 1/2) dx): a 1 m x 2 m
+        # column of fluid and three wall layers outside the left, right and bottom sides of the
+        # 4 m x 4 m tank, so both codes step exactly the same particles.
         dx = self.dx
-        xt, yt = get_2d_tank(dx=dx, length=4.0, height=4.0, base_center=[2.0, 0.0],
-                             num_layers=3)
-        xf, yf = get_2d_block(dx=dx, length=1.0, height=H_COLUMN,
-                              center=[0.5 + 0.5 * dx, 1.0 + 0.5 * dx])
+        layers = 3
+        n_tank = int(round(4.0 / dx))
+        ix, iy = np.meshgrid(np.arange(-layers, n_tank + layers), np.arange(-layers, n_tank))
+        ix, iy = ix.ravel(), iy.ravel()
+        wall = (ix < 0) | (ix >= n_tank) | (iy < 0)
+        xt, yt = (ix[wall] + 0.5) * dx, (iy[wall] + 0.5) * dx
+        jx, jy = np.meshgrid(np.arange(int(round(1.0 / dx))), np.arange(int(round(H_COLUMN / dx))))
+        xf, yf = (jx.ravel() + 0.5) * dx, (jy.ravel() + 0.5) * dx
         m = RHO0 * dx * dx
         fluid = get_particle_array(name='fluid', x=xf, y=yf, h=self.h, m=m, rho=RHO0)
         boundary = get_particle_array(name='boundary', x=xt, y=yt, h=self.h, m=m, rho=RHO0)
@@ -70,7 +76,9 @@ def main():
     start = time.perf_counter()
     app.solver.solve(show_progress=False)
     seconds = time.perf_counter() - start
-    print(f"fluid_particles={n_fluid} steps={app.solver.count} seconds={seconds:.6f}")
+    n_all = n_fluid + app.particles[1].get_number_of_particles()
+    print(f"fluid_particles={n_fluid} particles={n_all} steps={app.solver.count} "
+          f"seconds={seconds:.6f} particle_steps_per_second={n_fluid * app.solver.count / seconds:.4e}")
 
 
 if __name__ == '__main__':

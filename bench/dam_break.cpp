@@ -2,6 +2,7 @@
 //
 //   bench_dam_break [--dim 2|3] [--dx D | --particles N] [--threads T] [--heat 0|1]
 //                   [--steps S] [--warmup W] [--repeats R] [--evaluation asymmetric|symmetric]
+//                   [--backend omp|threads]
 //
 // Builds the scene, primes it (first evaluation), runs W warm-up steps, then R timed runs of S
 // steps each. Prints one "run ..." line per timed run and a "result ..." line with medians:
@@ -66,6 +67,7 @@ struct Options {
     int threads = 1, steps = 20, warmup = 5, repeats = 5;
     bool heat = false;
     std::string evaluation = "asymmetric";
+    std::string backend = "omp";
 };
 
 template <int Dim>
@@ -76,6 +78,7 @@ int runCase(const Options& o) {
                 ? (Dim == 2 ? bench::spacingFor2D(o.particles) : std::cbrt(1.6 / o.particles))
                 : o.dx;
     so.heat = o.heat, so.threads = o.threads, so.evaluation = o.evaluation;
+    so.backend = o.backend;
     auto scene = bench::makeDamBreak<Dim>(so);
     const double fluid = scene->fluidParticles(), all = scene->storage.size();
     // Resets the high-water mark (Linux >= 4.0): the peak below is that of the time loop,
@@ -104,14 +107,14 @@ int runCase(const Options& o) {
     const double setupBytes = 1024.0 * double(std::max(setupPeak, hwm) - rssBefore) / all;
     const double mrate = median(rate);
     std::printf(
-        "result dim=%d dx=%.6g threads=%d heat=%d evaluation=%s fluid_particles=%.0f "
+        "result dim=%d dx=%.6g backend=%s threads=%d heat=%d evaluation=%s fluid_particles=%.0f "
         "particles=%.0f steps=%d repeats=%d particle_steps_per_second=%.4e "
         "ns_per_particle_step=%.2f ns_per_any_particle_step=%.2f neighbours=%.2f "
         "cpu_ns_per_particle_step=%.2f bytes_per_particle=%.0f setup_bytes_per_particle=%.0f "
         "load=%.2f sim_time=%.4g\n",
-        Dim, so.dx, o.threads, int(o.heat), o.evaluation.c_str(), fluid, all, o.steps, o.repeats,
-        mrate, 1e9 / mrate, median(perAny), median(neighbours), median(cpu), bytes, setupBytes,
-        loadAverage(), scene->run->time());
+        Dim, so.dx, o.backend.c_str(), o.threads, int(o.heat), o.evaluation.c_str(), fluid, all,
+        o.steps, o.repeats, mrate, 1e9 / mrate, median(perAny), median(neighbours), median(cpu),
+        bytes, setupBytes, loadAverage(), scene->run->time());
     return 0;
 }
 
@@ -139,6 +142,8 @@ int main(int argc, char** argv) {
             o.repeats = std::stoi(v);
         else if (k == "--evaluation")
             o.evaluation = v;
+        else if (k == "--backend")
+            o.backend = v;
         else {
             std::fprintf(stderr, "unknown option %s\n", k.c_str());
             return 2;

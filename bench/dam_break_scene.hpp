@@ -25,6 +25,8 @@ struct SceneOptions {
     bool heat = false;
     int threads = 1;
     std::string evaluation = "asymmetric";
+    std::string backend =
+        "omp";  ///< makeScheduler name: omp (OpenMP) or threads (std::thread pool)
 };
 
 template <int Dim>
@@ -81,7 +83,7 @@ std::unique_ptr<Scene<Dim>> makeDamBreak(const SceneOptions& o) {
         .set("threads", std::int64_t(o.threads))
         .set("evaluation", o.evaluation);
     s->storage = makeFluidStorage(m, geo, s->settings);
-    s->scheduler = makeScheduler("omp", Size(o.threads));
+    s->scheduler = makeScheduler(o.backend, Size(o.threads));
     s->solver = std::make_unique<Solver<Dim>>(*s->scheduler, s->settings,
                                               makeFluidEquations(m, geo), geo.domain);
     s->run = std::make_unique<Run<Dim>>(s->storage, *s->solver, s->integrator);

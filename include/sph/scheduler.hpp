@@ -46,11 +46,31 @@ class ParallelScheduler final : public IScheduler {
     Size threads_;
 };
 
+/// Runs chunks on a pool of persistent std::threads; the calling thread works too. Chunks are
+/// claimed one at a time from a shared counter, so a thread the operating system pauses (a busy
+/// shared machine) delays only the chunk it holds, and idle threads sleep instead of spinning.
+class ThreadPoolScheduler final : public IScheduler {
+  public:
+    explicit ThreadPoolScheduler(Size threads);
+    ~ThreadPoolScheduler() override;
+    ThreadPoolScheduler(const ThreadPoolScheduler&) = delete;
+    ThreadPoolScheduler& operator=(const ThreadPoolScheduler&) = delete;
+    Size threadCount() const override { return threads_; }
+    void parallelFor(Size n, Size granularity,
+                     const std::function<void(Size, Size)>& task) override;
+
+  private:
+    struct Pool;
+    Size threads_;
+    std::unique_ptr<Pool> pool_;
+};
+
 /// The scheduler for a backend name: "seq" (sequential) or "omp" (also "openmp", "parallel").
 inline std::unique_ptr<IScheduler> makeScheduler(const std::string& backend, Size threads) {
     if (backend == "seq" || backend == "sequential") return std::make_unique<SequentialScheduler>();
     if (backend == "omp" || backend == "openmp" || backend == "parallel")
         return std::make_unique<ParallelScheduler>(threads);
+    if (backend == "threads") return std::make_unique<ThreadPoolScheduler>(threads);
     throw std::invalid_argument("unknown backend '" + backend + "' (expected seq or omp)");
 }
 

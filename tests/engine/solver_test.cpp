@@ -2,6 +2,7 @@
 // number of threads, and the adaptive time step.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <vector>
 
@@ -72,7 +73,7 @@ TEST(Solver, PairForceConservesMomentumAndModesAgree3D) { checkMomentumAndModes<
 /// Several leapfrog steps of moving particles (pair force, heat diffusion, reordering every
 /// second step) on `threads` threads; returns the final storage.
 template <int Dim>
-Storage<Dim> runSteps(const std::string& mode, Size threads) {
+Storage<Dim> runSteps(const std::string& mode, Size threads, const std::string& backend = "omp") {
     RunSettings settings;
     settings.set("smoothing_length", 0.05)
         .set("evaluation", mode)
@@ -81,9 +82,9 @@ Storage<Dim> runSteps(const std::string& mode, Size threads) {
         .set("dt_fixed", 1e-3)
         .set("reorder_every", 2);
     Storage<Dim> s = enginetest::randomParticles<Dim>(1200, 99);
-    ParallelScheduler scheduler(threads);
+    const auto scheduler = makeScheduler(backend, threads);
     Solver<Dim> solver(
-        scheduler, settings,
+        *scheduler, settings,
         makeTerm<enginetest::PairForceTerm<Dim>>() + makeTerm<examples::HeatDiffusion<Dim>>(0.01),
         unitBox<Dim>(true));
     Material material;
@@ -122,6 +123,34 @@ TEST(Solver, BitwiseReproducibleForAnyThreadCount) {
                   start.getValue<Float>(QuantityId::ENERGY)[0]);
     }
     expectBitwiseEqual(runSteps<3>("symmetric", 1), runSteps<3>("symmetric", 4));
+}
+
+TEST(Solver, ThreadPoolBackendIsBitwiseTheSame) {
+    for (const std::string mode : {"symmetric", "asymmetric"}) {
+        SCOPED_TRACE(mode);
+        const Storage<2> one = runSteps<2>(mode, 1);
+        expectBitwiseEqual(one, runSteps<2>(mode, 2, "threads"));
+        expectBitwiseEqual(one, runSteps<2>(mode, 3, "threads"));
+    }
+}
+
+TEST(Scheduler, ThreadPoolRunsEveryChunkOnceAndPassesErrorsOn) {
+    ThreadPoolScheduler pool(3);
+    for (Size n : {0u, 1u, 7u, 1000u}) {
+        std::vector<std::atomic<int>> hits(n);
+        pool.parallelFor(n, 3, [&](Size b, Size e) {
+            EXPECT_LE(e - b, 3u);
+            for (Size i = b; i < e; ++i) hits[i]++;
+            // A nested call runs inline on the calling thread.
+            pool.parallelFor(4, 1, [](Size, Size) {});
+        });
+        for (Size i = 0; i < n; ++i) EXPECT_EQ(hits[i].load(), 1) << i;
+    }
+    EXPECT_THROW(pool.parallelFor(100, 1,
+                                  [](Size b, Size) {
+                                      if (b == 57) throw std::runtime_error("chunk 57");
+                                  }),
+                 std::runtime_error);
 }
 
 /// A term that offers the given limits.

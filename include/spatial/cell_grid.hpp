@@ -173,6 +173,30 @@ class CellGrid {
     /// has no branch per candidate.
     template <class Keep>
     Index collect(Index i, Keep&& keep, Neighbours& out) const {
+        return collectFrom(i, keep, out, 0);
+    }
+
+    /// The neighbours of particle i that come after it in cell order (sortedOrder()), into
+    /// `out`: every pair is found from exactly one of its particles, and only about half the
+    /// candidates are read (the cells before i's cell are skipped). For symmetric pair loops.
+    Index collectAfter(Index i, Neighbours& out) const {
+        const Index own = slot_[i];
+        if (anyPerPair_)
+            return collectFrom(
+                i, [&](Index j) { return slot_[j] > own; }, out, own + 1);
+        return collectFrom(
+            i, [](Index) { return true; }, out, own + 1);
+    }
+
+    /// Particle indices ordered by cell: the permutation that makes neighbours near in memory.
+    const std::vector<Index>& sortedOrder() const { return sorted_; }
+    double radius() const { return radius_; }
+
+  private:
+    /// collect() over the candidates of slot >= firstSlot only (all of them on axes whose
+    /// images are found per pair: keep must then do the filtering).
+    template <class Keep>
+    Index collectFrom(Index i, Keep&& keep, Neighbours& out, Index firstSlot) const {
         std::array<int, Dim> c;
         Index flat = cellOf_[i];
         for (int k = 0; k < Dim; ++k) c[k] = int(flat % Index(cells_[k])), flat /= Index(cells_[k]);
@@ -189,6 +213,8 @@ class CellGrid {
             return out.count = n;
         }
         forEachRun(c, [&](Index b, Index e, const Vector& sh) {
+            b = std::max(b, firstSlot);
+            if (b >= e) return;
             out.reserve(n + (e - b));
             Index* J = out.j.data();
             Vector* DX = out.dx.data();
@@ -211,11 +237,6 @@ class CellGrid {
         return out.count = n;
     }
 
-    /// Particle indices ordered by cell: the permutation that makes neighbours near in memory.
-    const std::vector<Index>& sortedOrder() const { return sorted_; }
-    double radius() const { return radius_; }
-
-  private:
     /// The cell of p; on periodic axes p is moved to the image that lies in that cell.
     void locate(Vector& p, std::array<int, Dim>& c) const {
         for (int k = 0; k < Dim; ++k) {

@@ -154,7 +154,8 @@ class Accumulated {
 
 /// A pairwise sum over neighbours. The solver calls create once per block, initialize once per
 /// evaluation, then evalSymmetric or evalAsymmetric for every particle of the block.
-/// Symmetric: `neighs` holds each pair once (j > i) and the derivative writes both i and j.
+/// Symmetric: `neighs` holds each pair once (j after i in the cell order of the neighbour search)
+/// and the derivative writes both i and j.
 /// Asymmetric: `neighs` holds all neighbours and the derivative writes only i.
 /// `grads[k]` = grad_i W(x_i - x_j); `geometry` carries x_i - x_j (nearest periodic image),
 /// distances and, if asked for, kernel values. (The seed's signature, plus the geometry that

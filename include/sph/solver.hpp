@@ -166,8 +166,7 @@ class Solver {
                 sc.pairs = 0;
                 const Size begin = Size(n * b / blocks), end = Size(n * (b + 1) / blocks);
                 for (Size i = begin; i < end; ++i) {
-                    const Size m = symmetric_ ? grid_.collect(
-                                                    i, [i](Size j) { return j > i; }, sc.found)
+                    const Size m = symmetric_ ? grid_.collectAfter(i, sc.found)
                                               : grid_.collect(
                                                     i, [i](Size j) { return j != i; }, sc.found);
                     sc.pairs += m;

@@ -53,11 +53,52 @@ std::vector<V<Dim>> makePositions(const num::Domain<Dim>& d, double radius, unsi
     return x;
 }
 
+/// The flat lists of the pair loop: collect() gives exactly forEachNeighbourOf's neighbours, in
+/// its order and bit for bit; collectAfter() finds every pair from exactly one of its particles.
+template <int Dim>
+void checkFlatLists(const num::CellGrid<Dim>& grid, const std::vector<V<Dim>>& x) {
+    typename num::CellGrid<Dim>::Neighbours list;
+    const std::uint32_t n = std::uint32_t(x.size());
+    std::vector<int> seen(std::size_t(n) * n, 0);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        std::vector<std::uint32_t> js;
+        std::vector<V<Dim>> dxs;
+        grid.forEachNeighbourOf(i, [&](std::uint32_t j, const V<Dim>& dx, double) {
+            if (j != i) js.push_back(j), dxs.push_back(dx);
+        });
+        const std::uint32_t m = grid.collect(
+            i, [i](std::uint32_t j) { return j != i; }, list);
+        ASSERT_EQ(m, js.size());
+        for (std::uint32_t k = 0; k < m; ++k) {
+            EXPECT_EQ(list.j[k], js[k]);
+            EXPECT_TRUE(list.dx[k] == dxs[k]);
+            EXPECT_EQ(list.r2[k], num::normSqr(dxs[k]));
+        }
+        const std::uint32_t after = grid.collectAfter(i, list);
+        for (std::uint32_t k = 0; k < after; ++k) {
+            const std::uint32_t j = list.j[k];
+            ASSERT_NE(j, i);
+            ++seen[std::size_t(std::min(i, j)) * n + std::max(i, j)];
+            EXPECT_TRUE(std::find(js.begin(), js.end(), j) != js.end());
+        }
+    }
+    for (std::uint32_t i = 0; i < n; ++i) {
+        std::size_t count = 0;
+        grid.forEachNeighbourOf(i, [&](std::uint32_t j, const V<Dim>&, double) {
+            if (j == i) return;
+            ++count;
+            EXPECT_EQ(seen[std::size_t(std::min(i, j)) * n + std::max(i, j)], 1)
+                << "pair " << i << "," << j << " not found exactly once by collectAfter";
+        });
+    }
+}
+
 template <int Dim>
 void checkAgainstOracle(const num::Domain<Dim>& domain, double radius, unsigned seed) {
     const std::vector<V<Dim>> x = makePositions(domain, radius, seed);
     num::CellGrid<Dim> grid;
     grid.build(x, radius, domain);
+    checkFlatLists(grid, x);
     const double r2max = radius * radius;
     // Pairs within a relative 1e-12 of the radius may go either way (the distance is rounded
     // differently); every other pair must match the oracle exactly.

@@ -50,23 +50,37 @@ header() {
 echo
 echo "## End to end: 2D dam break, dx = 0.01"
 header
-for heat in 0 1; do
-    for t in 1 2; do row "2D heat $heat" --dim 2 --dx 0.01 --heat $heat --threads $t --steps 20 --warmup 5; done
+for eval in symmetric asymmetric; do
+    for heat in 0 1; do
+        for t in 1 2; do
+            row "2D heat $heat $eval" --dim 2 --dx 0.01 --heat $heat --threads $t --steps 20 \
+                --warmup 5 --evaluation $eval
+        done
+    done
 done
+row "2D heat 1 symmetric, threads backend" --dim 2 --dx 0.01 --heat 1 --threads 2 --steps 20 \
+    --warmup 5 --evaluation symmetric --backend threads
 
 echo
 echo "## End to end: 3D dam break, dx = 0.02, h = 1.3 dx"
 header
-for t in 1 2; do row "3D heat 0" --dim 3 --dx 0.02 --threads $t --steps 5 --warmup 2; done
+for eval in symmetric asymmetric; do
+    for t in 1 2; do
+        row "3D heat 0 $eval" --dim 3 --dx 0.02 --threads $t --steps 5 --warmup 2 --evaluation $eval
+    done
+done
 
 echo
-echo "## Scaling: 2D dam break, heat on, 1e4 to 1e6 fluid particles"
+echo "## Scaling: 2D dam break, heat on, symmetric, 1e4 to 1e6 fluid particles"
 header
 for n in 1e4 3e4 1e5 3e5 1e6; do
     steps=20
     [ "$n" = 3e5 ] && steps=8
     [ "$n" = 1e6 ] && steps=4
-    for t in 1 2; do row "2D n=$n" --dim 2 --particles $n --heat 1 --threads $t --steps $steps --warmup 2; done
+    for t in 1 2; do
+        row "2D n=$n" --dim 2 --particles $n --heat 1 --threads $t --steps $steps --warmup 2 \
+            --evaluation symmetric
+    done
 done
 
 echo

@@ -44,7 +44,10 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
             k_[m] = table[m].conductivity;
             invC_[m] = 1.0 / table[m].heatCapacity;
         }
-        zeros_.assign(s.size(), 0);
+        // Zeros stand in for a missing material or condition quantity (kept empty otherwise:
+        // every block of the pair loop has its own copy of this derivative).
+        const bool needZeros = !s.has(QuantityId::MATERIAL) || !s.has(heat_ids::THERMAL_CONDITION);
+        zeros_.assign(needZeros ? s.size() : 0, 0);
         if (s.has(QuantityId::MATERIAL)) {
             mat_ = s.template getValue<int>(QuantityId::MATERIAL);
             for (int m : mat_)

@@ -5,7 +5,8 @@
 #
 #   bench/compare_pysph.sh [BUILD_DIR] [DX] [STEPS] [REPEATS]
 #   defaults: build/release 0.01 (20,000 fluid particles) 40 steps, 5 repeats
-#   EVALUATION=symmetric|asymmetric (default symmetric) picks numerics' pair evaluation.
+#   EVALUATION=symmetric|asymmetric (default symmetric) picks numerics' pair evaluation,
+#   BACKEND=threads|omp (default threads, the std::thread pool) its parallel backend.
 #
 # numerics runs the same case twice: without heat (the physics PySPH runs) and with heat
 # conduction on as well (more work per pair than PySPH does); both ratios are printed.
@@ -22,6 +23,7 @@ STEPS=${3:-40}
 REPEATS=${4:-5}
 PY=/usr/bin/python3
 EVALUATION=${EVALUATION:-symmetric}
+BACKEND=${BACKEND:-threads}
 OURS="$BUILD/bench/bench_dam_break"
 
 if ! "$PY" -c "import pysph" 2>/dev/null; then
@@ -45,7 +47,7 @@ pysph() {  # threads steps -> throughput
 }
 ours() {  # threads steps heat -> result line
     "$OURS" --dim 2 --dx "$DX" --threads "$1" --steps "$2" --warmup 0 --repeats 1 --heat "$3" \
-        --evaluation "$EVALUATION" | tail -1
+        --evaluation "$EVALUATION" --backend "$BACKEND" | tail -1
 }
 field() { grep -o "$1=[0-9.e+-]*" | cut -d= -f2; }
 median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
@@ -55,7 +57,7 @@ echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 # Warm-up: PySPH compiles its serial and OpenMP extension modules once (not timed).
 pysph 1 1 >/dev/null
 pysph 2 1 >/dev/null
-echo "numerics evaluation: $EVALUATION"
+echo "numerics evaluation: $EVALUATION, backend: $BACKEND"
 printf "%-8s %-10s %-12s %-12s %-8s %-12s %-8s %s\n" threads particles pysph numerics ratio \
     "num.+heat" ratio "(particle-steps/s, medians of $REPEATS)"
 for t in 1 2; do

@@ -11,6 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${1:-build/release}
 REPEATS=${REPEATS:-5}
+BACKEND=${BACKEND:-threads}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$BUILD" --target bench_dam_break bench_pair_loops bench_neighbours -j2 >/dev/null
 DAM="$BUILD/bench/bench_dam_break"
@@ -34,7 +35,7 @@ row() {  # label args...
     local label=$1
     shift
     local line
-    line=$("$DAM" --repeats "$REPEATS" "$@" | tail -1)
+    line=$("$DAM" --repeats "$REPEATS" --backend "$BACKEND" "$@" | tail -1)
     f() { echo "$line" | grep -o " $1=[^ ]*" | cut -d= -f2; }
     printf "| %s | %s | %s | %s | %.3g | %s | %s | %s | %s | %s |\n" "$label" "$(f threads)" \
         "$(f fluid_particles)" "$(f particles)" "$(f particle_steps_per_second)" \
@@ -43,7 +44,7 @@ row() {  # label args...
 }
 header() {
     echo
-    echo "| case | threads | fluid | all | particle-steps/s | ns/particle-step | CPU ns/particle-step | neighbours | bytes/particle | load |"
+    echo "| case ($BACKEND backend) | threads | fluid | all | particle-steps/s | ns/particle-step | CPU ns/particle-step | neighbours | bytes/particle | load |"
     echo "|---|---|---|---|---|---|---|---|---|---|"
 }
 
@@ -58,8 +59,8 @@ for eval in symmetric asymmetric; do
         done
     done
 done
-row "2D heat 1 symmetric, threads backend" --dim 2 --dx 0.01 --heat 1 --threads 2 --steps 20 \
-    --warmup 5 --evaluation symmetric --backend threads
+BACKEND=omp row "2D heat 1 symmetric, OpenMP backend" --dim 2 --dx 0.01 --heat 1 --threads 2 \
+    --steps 20 --warmup 5 --evaluation symmetric
 
 echo
 echo "## End to end: 3D dam break, dx = 0.02, h = 1.3 dx"

@@ -1,9 +1,9 @@
 // num::SPHKernel<Dim>: the seed kernel API of numerics 0.1.0, in float, exactly as documented.
 //
-//   W            cubic spline density kernel, support 2h, sigma = 10/(7 pi h^2) (2D), 1/(pi h^3) (3D)
-//   dW_dr        its radial derivative (<= 0)
-//   Spiky_dW_dr  spiky kernel slope: -15/(16 pi h^5) (2h-r)^2 (2D), -45/(pi (2h)^6) (2h-r)^2 (3D)
-//   Spiky_gradW  (dW/dr / r) r_vec, for the pressure gradient
+//   W            cubic spline density kernel, support 2h, sigma = 10/(7 pi h^2) (2D), 1/(pi h^3)
+//   (3D) dW_dr        its radial derivative (<= 0) Spiky_dW_dr  spiky kernel slope: -15/(16 pi h^5)
+//   (2h-r)^2 (2D), -45/(pi (2h)^6) (2h-r)^2 (3D) Spiky_gradW  (dW/dr / r) r_vec, for the pressure
+//   gradient
 //
 // Which derivative the Morris et al. (1997) Laplacian uses: the seed's formula and table say the
 // cubic spline's dW_dr, while its usage snippet wrote Spiky_dW_dr. We follow the formula:

@@ -64,10 +64,13 @@ int runApp(int argc, char** argv, const AppInfo& info) {
         "scene", sceneFile,
         "scene file (JSON); without it the built-in scene " + info.defaultSceneName + " runs");
     app.add_option("--out", out, "output directory (default: the scene's output.directory)");
-    app.add_option("--threads", opt.threads, "threads of the omp backend (default: all cores)")
+    app.add_option("--threads", opt.threads,
+                   "threads of the omp and threads backends (default: all cores)")
         ->check(CLI::Range(1, 1024));
-    app.add_option("--backend", opt.backend, "seq (one thread) or omp (default)")
-        ->check(CLI::IsMember({"seq", "omp"}));
+    app.add_option("--backend", opt.backend,
+                   "seq (one thread), omp (OpenMP, default) or threads (a pool of threads that\n"
+                   "sleep when idle: faster than omp on a machine busy with other work)")
+        ->check(CLI::IsMember({"seq", "omp", "threads"}));
     app.add_option("--end-time", endTime, "end time [s] (default: the scene's time.end)")
         ->check(CLI::PositiveNumber);
     app.add_option("--set", sets,

@@ -85,8 +85,8 @@ TEST_P(EndToEnd, WritesEveryOutput) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Apps, EndToEnd,
-                         ::testing::Values(Case{2, "seq"}, Case{2, "omp"}, Case{3, "seq"},
-                                           Case{3, "omp"}),
+                         ::testing::Values(Case{2, "seq"}, Case{2, "omp"}, Case{2, "threads"},
+                                           Case{3, "seq"}, Case{3, "omp"}, Case{3, "threads"}),
                          [](const auto& info) {
                              return std::to_string(info.param.dim) + "D_" + info.param.backend;
                          });

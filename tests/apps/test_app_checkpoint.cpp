@@ -40,10 +40,12 @@ INSTANTIATE_TEST_SUITE_P(Apps, Restart, ::testing::Values(2, 3));
 TEST(Interrupt, CtrlCWritesFinalOutputAndCheckpoint) {
     const std::string dir = freshDir("interrupt");
     // Runs for minutes unless interrupted: SIGINT once the second output exists (the time loop
-    // runs); `timeout` ends the test if the app ignored it.
+    // runs); `timeout` ends the test if the app ignored it. --foreground: without it, timeout
+    // passes the SIGINT on to the app and to its whole process group, so the app would get
+    // two, and a second Ctrl-C ends it at once, before the checkpoint (a race seen under load).
     writeFile(
         dir + "/interrupt.sh",
-        "timeout 120 '" + std::string(FLUID_SIM) + "' '" + scene("tiny_2d.json") +
+        "timeout --foreground 120 '" + std::string(FLUID_SIM) + "' '" + scene("tiny_2d.json") +
             "' --quiet --out out --end-time 1000 & pid=$!\n"
             "for i in $(seq 600); do [ -e out/particles_0001.vtu ] && break; sleep 0.1; done\n"
             "kill -INT $pid\nwait $pid\necho exit=$?\n");

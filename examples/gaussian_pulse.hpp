@@ -1,6 +1,6 @@
 // A Gaussian heat pulse on a periodic lattice of fixed particles, driven through the solver
 // with the HeatDiffusion example; shared by the example program and the tests.
-// Analytic solution in d dimensions (validation.md, sec. 5):
+// Analytic solution in d dimensions (reference_solutions.md, sec. 5):
 //     u(r, t) = (t0 / (t0 + t))^(d/2) exp(-r^2 / (4 alpha (t0 + t))).
 #pragma once
 
@@ -37,7 +37,7 @@ struct PulseResult {
     std::string criterion;  ///< the criterion that limited the last full step
 };
 
-/// The free-space pulse at x (validation.md, sec. 5).
+/// The free-space pulse at x (reference_solutions.md, sec. 5).
 template <int Dim>
 Float pulseFreeSpace(const PulseSetup& s, const num::sph::Vector<Dim>& x, Float t) {
     return std::pow(s.t0 / (s.t0 + t), 0.5 * Dim) *

@@ -1,6 +1,6 @@
 // Heat diffusion example: a Gaussian pulse spreads on a periodic lattice in 2D and 3D, compared
 // with the analytic solution. Exits with 1 if the error exceeds 1% of the initial peak
-// or the mean error 0.3% (the gates of validation.md, sec. 5).
+// or the mean error 0.3% (the gates of reference_solutions.md, sec. 5).
 #include <cstdio>
 
 #include "gaussian_pulse.hpp"
@@ -18,7 +18,7 @@ int main() {
     };
     report(2, examples::runGaussianPulse<2>(setup));
     // 3D: fewer particles per side; cubic spline with h = 1.5 dx, where its Laplacian on a
-    // lattice is consistent to 0.1% (validation.md, sec. 1).
+    // lattice is consistent to 0.1% (reference_solutions.md, sec. 1).
     setup.perSide = 20;
     setup.hOverDx = 1.5;
     report(3, examples::runGaussianPulse<3>(setup));

@@ -105,7 +105,7 @@ def main():
         "",
         "Every case of the ctest label `validation`, run at documentation resolution by",
         "`validation/run.sh` (`NUMERICS_VALIDATION_FULL=1`). Analytic solutions and gates come",
-        "from `reference/validation.md`; each test states where its tolerance comes from. Errors",
+        "from [reference_solutions.md](reference_solutions.md); each test states where its tolerance comes from. Errors",
         "are relative to the scale named in the notes (temperature jump, u_max, V0...).",
         "",
         f"{sum(c['passed'] for c in cases)} of {len(cases)} cases pass.",

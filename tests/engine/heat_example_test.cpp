@@ -1,5 +1,5 @@
 // The heat diffusion example through the solver: a Gaussian pulse on a periodic lattice against
-// the analytic solution of validation.md, sec. 5, in 2D and 3D.
+// the analytic solution of reference_solutions.md, sec. 5, in 2D and 3D.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,8 +9,8 @@
 
 namespace {
 
-// Gates of validation.md, sec. 5: max error below 1% of the temperature jump (here the initial
-// peak, 1), mean below 0.3%.
+// Gates of reference_solutions.md, sec. 5: max error below 1% of the temperature jump (here the
+// initial peak, 1), mean below 0.3%.
 constexpr double maxErrorGate = 0.01, meanErrorGate = 0.003;
 
 void expectPulse(const examples::PulseResult& r) {
@@ -74,7 +74,7 @@ double centreRate(double hOverDx) {
 }
 
 TEST(HeatExample, LaplacianHasThePhysicalSignAndLatticeValue) {
-    // validation.md, sec. 1: the Brookshaw Laplacian of |x|^2 over its exact value 2d with
+    // reference_solutions.md, sec. 1: the Brookshaw Laplacian of |x|^2 over its exact value 2d with
     // eta^2 = 0.01 h^2 is 1.000 (cubic, 2D, h = 1.3 dx) and 1.001 (3D, h = 1.5 dx); the
     // tolerance 0.002 covers the rounding of those table entries.
     EXPECT_NEAR(centreRate<2>(1.3) / (0.5 * 4), 1.000, 0.002);

@@ -1,5 +1,5 @@
-// Properties every SPH kernel must have (validation.md section 1; Monaghan 2005, section 2),
-// checked once for every kernel of num::kernels in 1D, 2D and 3D.
+// Properties every SPH kernel must have (reference_solutions.md section 1; Monaghan 2005, section
+// 2), checked once for every kernel of num::kernels in 1D, 2D and 3D.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,10 +19,10 @@ TYPED_TEST_SUITE(KernelFamily, AllKernels, KernelName);
 // Smoothing lengths at which every property is checked: the properties must hold for any h.
 constexpr double kLengths[] = {1.0, 0.05, 3.7};
 
-// validation.md 1: finite differences with step 1e-6 h agree with the analytic derivative to
-// 1e-6 relative. The absolute floor is the rounding error of a central difference,
-// ~ eps_machine * W(0) / step = 2.2e-16 / 1e-6 * W(0) = 2.2e-10 W(0); we allow 1e-9 W(0) / h,
-// which matters only where the slope itself vanishes (r -> 0 and r -> support).
+// reference_solutions.md 1: finite differences with step 1e-6 h agree with the analytic derivative
+// to 1e-6 relative. The absolute floor is the rounding error of a central difference, ~ eps_machine
+// * W(0) / step = 2.2e-16 / 1e-6 * W(0) = 2.2e-10 W(0); we allow 1e-9 W(0) / h, which matters only
+// where the slope itself vanishes (r -> 0 and r -> support).
 constexpr double kFdStep = 1e-6;
 constexpr double kFdRelative = 1e-6;
 constexpr double kFdFloor = 1e-9;
@@ -56,7 +56,7 @@ Vec<double, K::dim> randomInBall(std::mt19937& rng, double radius) {
     return x;
 }
 
-// validation.md 1: the radial integral S_d int W r^(d-1) dr equals 1 to 1e-10 in double.
+// reference_solutions.md 1: the radial integral S_d int W r^(d-1) dr equals 1 to 1e-10 in double.
 // The quadrature is Gauss-Legendre with 12 nodes on each polynomial piece (exact to degree 23;
 // the integrands here have degree <= 10), so the 1e-10 measures the normalisation alone.
 TYPED_TEST(KernelFamily, IntegratesToOne) {
@@ -74,7 +74,7 @@ TYPED_TEST(KernelFamily, IntegratesToOne) {
                 worst);
 }
 
-// validation.md 1: W and grad W are exactly 0 at and beyond the support radius.
+// reference_solutions.md 1: W and grad W are exactly 0 at and beyond the support radius.
 TYPED_TEST(KernelFamily, VanishesExactlyAtAndBeyondSupport) {
     using K = TypeParam;
     for (double h : kLengths) {
@@ -129,7 +129,7 @@ TYPED_TEST(KernelFamily, SymmetricInThePair) {
 }
 
 // W is non-increasing in r and dW/dr <= 0; dW/dr(0) = 0 for the smooth kernels, while the
-// spiky kernel is steepest at r = 0 on purpose (validation.md 1).
+// spiky kernel is steepest at r = 0 on purpose (reference_solutions.md 1).
 TYPED_TEST(KernelFamily, DecreasesMonotonically) {
     using K = TypeParam;
     for (double h : kLengths) {
@@ -207,7 +207,7 @@ TYPED_TEST(KernelFamily, GradientMatchesFiniteDifferenceOfW) {
     }
 }
 
-// Values at the origin for h = 1 (validation.md 1), and the 1/h^d scaling.
+// Values at the origin for h = 1 (reference_solutions.md 1), and the 1/h^d scaling.
 TEST(KernelOriginValues, MatchTheReferenceValues) {
     using std::numbers::pi;
     EXPECT_NEAR(CubicSpline<1>::W(0.0, 1.0), 2.0 / 3.0, 1e-15);

@@ -1,6 +1,6 @@
-// Lattice sums on an infinite Cartesian lattice (validation.md section 1, table "Lattice sums"):
-// partition of unity sum_j W_ij dx^d, the gradient of a linear field and the Brookshaw (1985)
-// Laplacian of |x|^2, for the particle at a lattice node.
+// Lattice sums on an infinite Cartesian lattice (reference_solutions.md section 1, table "Lattice
+// sums"): partition of unity sum_j W_ij dx^d, the gradient of a linear field and the Brookshaw
+// (1985) Laplacian of |x|^2, for the particle at a lattice node.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,7 +45,7 @@ void expectTable(const TableRow* partition, const TableRow* gradient, const Tabl
     }
 }
 
-// Reference values: validation.md section 1.
+// Reference values: reference_solutions.md section 1.
 TEST(KernelLatticeTable, CubicSpline1D) {
     const TableRow partition{{1.000000, 1.001800, 1.003466, 1.004115}};
     expectTable<CubicSpline<1>>(&partition, nullptr, nullptr);

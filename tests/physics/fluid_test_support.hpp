@@ -50,9 +50,9 @@ struct FluidCase {
 };
 
 /// Run settings with the given kernel and h = factor dx. The cubic spline at h = 1.3 dx is
-/// the default of the fluid tests: its lattice Laplacian is within 0.1 % (validation.md sec. 1),
-/// while Wendland C2 at h = 1.3 dx makes the Morris viscous force 4 % too weak (measured with
-/// the Poiseuille case: 4.1 % of u_max at h = 1.3 dx, 1.7 % at 2 dx; cubic spline 0.3 %).
+/// the default of the fluid tests: its lattice Laplacian is within 0.1 % (reference_solutions.md
+/// sec. 1), while Wendland C2 at h = 1.3 dx makes the Morris viscous force 4 % too weak (measured
+/// with the Poiseuille case: 4.1 % of u_max at h = 1.3 dx, 1.7 % at 2 dx; cubic spline 0.3 %).
 inline RunSettings settingsFor(double dx, double hFactor = 1.3,
                                const std::string& kernel = "cubic_spline") {
     RunSettings s;

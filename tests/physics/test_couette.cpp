@@ -9,7 +9,7 @@ using namespace num::sph;
 using namespace num::sph::fluid_test;
 
 TEST(FluidCouette, TransientAndSteadyProfiles2D) {
-    ChannelSpec spec;  // L = 1e-3, nu = 1e-6, rho = 1000 (validation.md sec. 3)
+    ChannelSpec spec;  // L = 1e-3, nu = 1e-6, rho = 1000 (reference_solutions.md sec. 3)
     spec.wallVelocity = 2.5e-5;
     spec.velocityScale = spec.wallVelocity;
     spec.cells = fullResolution() ? 60 : 30;
@@ -17,7 +17,7 @@ TEST(FluidCouette, TransientAndSteadyProfiles2D) {
     const double V0 = spec.wallVelocity;
     auto exact = [&](double y, double t) { return couette(y, t, V0, spec.nu, spec.L); };
 
-    // Issue 4 / validation.md sec. 3: transient within 2 % of V0, steady within 1 % of V0.
+    // Issue 4 / reference_solutions.md sec. 3: transient within 2 % of V0, steady within 1 % of V0.
     const double transientTolerance = 0.02, steadyTolerance = 0.01;
     ValidationResult result;
     result.name = "couette_2d";

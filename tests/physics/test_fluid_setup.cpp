@@ -83,7 +83,7 @@ TEST(FluidSetup, SummationDensityOfFullLatticeAndFixedBoundaries) {
     const auto rho = c.storage.getValue<Float>(QuantityId::DENSITY);
     const auto kind = c.kind();
     // Every fluid particle has a full support (walls and body fill it): rho = rho0 times the
-    // cubic spline's 2D lattice sum at h = 1.3 dx, 0.999947 (validation.md sec. 1).
+    // cubic spline's 2D lattice sum at h = 1.3 dx, 0.999947 (reference_solutions.md sec. 1).
     for (Size i = 0; i < c.storage.size(); ++i) {
         if (isFluid(kind[i])) {
             EXPECT_NEAR(rho[i] / 1000.0, 0.999947, 1e-5);

@@ -1,5 +1,5 @@
-// Conservation of heat by the conduction operator (validation.md section 5): the pair terms
-// are antisymmetric, so with adiabatic boundaries the total sum m c T changes only by
+// Conservation of heat by the conduction operator (reference_solutions.md section 5): the pair
+// terms are antisymmetric, so with adiabatic boundaries the total sum m c T changes only by
 // round-off; a flux wall adds exactly its power.
 #include <gtest/gtest.h>
 

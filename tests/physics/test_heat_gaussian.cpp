@@ -1,7 +1,8 @@
-// Validation: a Gaussian temperature pulse diffusing in 2D and 3D (validation.md section 5),
+// Validation: a Gaussian temperature pulse diffusing in 2D and 3D (reference_solutions.md section
+// 5),
 //   T(r, t) = (t0 / (t0 + t))^(d/2) exp(-r^2 / (4 alpha (t0 + t))),
 // on fixed particles filling a periodic box; the exact solution adds the periodic images.
-// Gate (validation.md section 5): max error below 1 % of the initial peak (the temperature
+// Gate (reference_solutions.md section 5): max error below 1 % of the initial peak (the temperature
 // jump), mean below 0.3 % over the particles where the pulse lives (r < 3 sigma(t)).
 #include <gtest/gtest.h>
 
@@ -50,7 +51,7 @@ void runPulse(const std::string& name, double dx) {
     domain.periodic.fill(true);
     SequentialScheduler scheduler;
     // Cubic spline with h = 1.3 dx in 2D and 1.5 dx in 3D, where its lattice Brookshaw Laplacian
-    // is exact to 1e-3 (validation.md section 1; at 1.3 dx in 3D it is 1.5 % low).
+    // is exact to 1e-3 (reference_solutions.md section 1; at 1.3 dx in 3D it is 1.5 % low).
     const double hOverDx = Dim == 3 ? 1.5 : 1.3;
     Solver<Dim> solver(scheduler, heatSettings(dx, hOverDx, "cubic_spline"),
                        makeTerm<HeatConduction<Dim>>(), domain);
@@ -93,7 +94,7 @@ void runPulse(const std::string& name, double dx) {
     result.notes = notes.str();
     result.write();
 
-    // Gate of validation.md section 5.
+    // Gate of reference_solutions.md section 5.
     EXPECT_LT(maxErr, 0.01);
     EXPECT_LT(meanErr, 0.003);
     // The peak decays (heat spreads from hot to cold) and stays above the analytic floor 0.

@@ -1,8 +1,8 @@
-// Validation: two semi-infinite slabs in contact (validation.md section 5). Particles fixed on a
-// lattice, 1D-like in 2D (periodic in y). T = T_L for x < 0 and T_R for x > 0 at t = 0; the
-// exact solution keeps the interface at T_c = (e_L T_L + e_R T_R) / (e_L + e_R), e = sqrt(k rho c),
-// with an erf profile on each side. Gate (validation.md section 5): max error below 1 % of the
-// jump |T_L - T_R|, mean below 0.3 %.
+// Validation: two semi-infinite slabs in contact (reference_solutions.md section 5). Particles
+// fixed on a lattice, 1D-like in 2D (periodic in y). T = T_L for x < 0 and T_R for x > 0 at t = 0;
+// the exact solution keeps the interface at T_c = (e_L T_L + e_R T_R) / (e_L + e_R), e = sqrt(k rho
+// c), with an erf profile on each side. Gate (reference_solutions.md section 5): max error below 1
+// % of the jump |T_L - T_R|, mean below 0.3 %.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,7 +37,7 @@ struct SlabErrors {
 
 /// Runs the slabs to t = 0.01 at spacing dx and returns errors relative to the jump.
 /// Kernel: the cubic spline with h = 1.3 dx, whose lattice Brookshaw Laplacian is exact to
-/// 1e-3 (validation.md section 1 table); Wendland C2 is checked at h = 2 dx.
+/// 1e-3 (reference_solutions.md section 1 table); Wendland C2 is checked at h = 2 dx.
 SlabErrors runSlabs(const std::string& name, const Slab& L, const Slab& R, double dx,
                     const std::string& kernel = "cubic_spline", double hOverDx = 1.3) {
     const double TL = 1, TR = 0, tEnd = 0.01, halfWidth = 0.6;
@@ -98,7 +98,7 @@ SlabErrors runSlabs(const std::string& name, const Slab& L, const Slab& R, doubl
 
 }  // namespace
 
-// The analytic reference itself reproduces the values of validation.md section 5.
+// The analytic reference itself reproduces the values of reference_solutions.md section 5.
 TEST(HeatSlabs, ExactSolutionMatchesReferenceValues) {
     const Slab unit{1, 1, 1}, doubled{2, 1, 1};
     EXPECT_NEAR(slabExact(-0.1, 0.01, unit, unit, 1, 0), 0.76025, 1e-5);
@@ -113,7 +113,7 @@ TEST(HeatSlabs, EqualMaterialsFollowErfProfile) {
     const double dx = fullResolution() ? 0.005 : 0.01;
     const Slab unit{1, 1, 1};
     const SlabErrors e = runSlabs("heat_slabs_equal", unit, unit, dx);
-    // Gate of validation.md section 5: max below 1 % of the jump, mean below 0.3 %.
+    // Gate of reference_solutions.md section 5: max below 1 % of the jump, mean below 0.3 %.
     EXPECT_LT(e.maxError, 0.01);
     EXPECT_LT(e.meanError, 0.003);
     // The interface stays at T_c = 1/2 (mean of the two columns beside it, which the erf
@@ -139,7 +139,7 @@ TEST(HeatSlabs, WendlandKernelMeetsGate) {
     const double dx = fullResolution() ? 0.005 : 0.01;
     const Slab unit{1, 1, 1};
     const SlabErrors e = runSlabs("heat_slabs_equal_wendland", unit, unit, dx, "wendland_c2", 2.0);
-    // Gate of validation.md section 5.
+    // Gate of reference_solutions.md section 5.
     EXPECT_LT(e.maxError, 0.01);
     EXPECT_LT(e.meanError, 0.003);
 }

@@ -33,10 +33,10 @@ TEST(HeatViscosity, ExponentialLawIsExactAtReference) {
 }
 
 TEST(HeatViscosity, WarmPoiseuilleFollowsViscosityAtItsTemperature) {
-    // Morris's channel (validation.md sec. 2) with fluid and walls at T = T0 + 20 K and the
-    // exponential law: nu(T) = nu0 exp(-0.4) = 0.670 nu0, so the flow is that of the analytic
+    // Morris's channel (reference_solutions.md sec. 2) with fluid and walls at T = T0 + 20 K and
+    // the exponential law: nu(T) = nu0 exp(-0.4) = 0.670 nu0, so the flow is that of the analytic
     // Poiseuille solution with nu(T). With the reference viscosity instead, the steady peak
-    // would be 33 % lower: a 2 % gate (validation.md sec. 2) tells the two apart.
+    // would be 33 % lower: a 2 % gate (reference_solutions.md sec. 2) tells the two apart.
     const double L = 1e-3, nu0 = 1e-6, F = 2e-4, T0 = 20, dT = 20;
     const int cells = 20;
     const double dx = L / cells;

@@ -1,8 +1,8 @@
-// Hydrostatic tank (validation.md sec. 6): water at rest in a 2D tank with no-slip walls on
-// three sides and a free surface, gravity ramped in over the first second. The generalised
-// wall condition (Adami, Hu & Adams 2012) must hold p = rho0 g (H - y) in the interior, with
-// no drift of the surface, kinetic energy settling, and no particle crossing a wall. The
-// containment safety net is switched off here, so the wall condition alone keeps the fluid in.
+// Hydrostatic tank (reference_solutions.md sec. 6): water at rest in a 2D tank with no-slip walls
+// on three sides and a free surface, gravity ramped in over the first second. The generalised wall
+// condition (Adami, Hu & Adams 2012) must hold p = rho0 g (H - y) in the interior, with no drift of
+// the surface, kinetic energy settling, and no particle crossing a wall. The containment safety net
+// is switched off here, so the wall condition alone keeps the fluid in.
 #include <gtest/gtest.h>
 
 #include "fluid_test_support.hpp"
@@ -76,8 +76,8 @@ TEST(FluidHydrostatic, TankPressureAfterGravityRamp) {
         result.profile = line;
     }
 
-    // validation.md sec. 6: interior pressure within 3 % of rho0 g H, mean within 1 %, surface
-    // drift below 1 % of H, no particle crossing a wall (x = 0, x = width, y = 0).
+    // reference_solutions.md sec. 6: interior pressure within 3 % of rho0 g H, mean within 1 %,
+    // surface drift below 1 % of H, no particle crossing a wall (x = 0, x = width, y = 0).
     EXPECT_LT(maxError, 0.03);
     EXPECT_LT(std::abs(meanError), 0.01);
     EXPECT_LT(surfaceDrift, 0.01);

@@ -1,5 +1,5 @@
 // Poiseuille flow in 2D (Morris, Fox & Zhu 1997, sec. 4.1): fluid at rest between no-slip
-// plates, driven by a body force; transient profiles at the times of validation.md and the
+// plates, driven by a body force; transient profiles at the times of reference_solutions.md and the
 // steady profile against the analytic series.
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@ TEST(FluidPoiseuille, TransientAndSteadyProfiles2D) {
     ChannelFlow<2> flow(spec);
     auto exact = [&](double y, double t) { return poiseuille(y, t, spec.force, spec.nu, spec.L); };
 
-    // validation.md sec. 2: good codes reach < 1 % of u_max with 20 to 60 particles across;
-    // the gate is 2 % of u_max, at every fluid particle, at every time.
+    // reference_solutions.md sec. 2: good codes reach < 1 % of u_max with 20 to 60 particles
+    // across; the gate is 2 % of u_max, at every fluid particle, at every time.
     const double tolerance = 0.02;
     ValidationResult result;
     result.name = "poiseuille_2d";

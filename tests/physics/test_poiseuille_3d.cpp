@@ -16,12 +16,12 @@ TEST(FluidPoiseuille, TransientAndSteadyProfiles3D) {
     spec.cells = fullResolution() ? 40 : 20;
     spec.periodicCells = 6;
     // In 3D the cubic spline's lattice Laplacian is 1.5 % low at h = 1.3 dx and exact to
-    // 0.1 % at h = 1.5 dx (validation.md sec. 1, Brookshaw Laplacian row).
+    // 0.1 % at h = 1.5 dx (reference_solutions.md sec. 1, Brookshaw Laplacian row).
     spec.hFactor = 1.5;
     ChannelFlow<3> flow(spec);
     auto exact = [&](double y, double t) { return poiseuille(y, t, spec.force, spec.nu, spec.L); };
 
-    // validation.md sec. 2: 2 % of u_max, as in 2D.
+    // reference_solutions.md sec. 2: 2 % of u_max, as in 2D.
     const double tolerance = 0.02;
     ValidationResult result;
     result.name = "poiseuille_3d";

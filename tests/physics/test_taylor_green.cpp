@@ -1,4 +1,4 @@
-// Taylor-Green vortex, Re = 100, on the periodic unit square (validation.md sec. 4): the
+// Taylor-Green vortex, Re = 100, on the periodic unit square (reference_solutions.md sec. 4): the
 // decay of max|v| and of the kinetic energy against U e^{bt} and E0 e^{2bt}, b = -8 pi^2 nu.
 // Weakly-compressible SPH with continuity + delta-SPH and particle shifting (Lind et al. 2012,
 // with Taylor correction): without shifting the lattice collapses at the hyperbolic
@@ -78,7 +78,8 @@ TaylorGreenErrors runTaylorGreen(int n, double tEnd) {
 }  // namespace
 
 TEST(FluidTaylorGreen, DecayRe100) {
-    // validation.md sec. 4 at t = 2 with 50 x 50: max|v| within 5 %, kinetic energy within 10 %.
+    // reference_solutions.md sec. 4 at t = 2 with 50 x 50: max|v| within 5 %, kinetic energy within
+    // 10 %.
     const double tEnd = 2.0, velocityTolerance = 0.05, energyTolerance = 0.10;
     const TaylorGreenErrors e50 = runTaylorGreen(50, tEnd);
     EXPECT_LT(e50.maxVelocity, velocityTolerance);
@@ -95,10 +96,10 @@ TEST(FluidTaylorGreen, DecayRe100) {
                    std::to_string(e50.energy) + " (tolerance 0.10); mean |v| error " +
                    std::to_string(e50.meanVelocity);
     if (fullResolution()) {
-        // validation.md: at 100 x 100 the errors must not grow. The integral measures (kinetic
-        // energy, mean |v| error) are the ones that converge; max|v| is one particle's value, a
-        // sum of a decay error and lattice noise of either sign (at 50 x 50 they cancel to
-        // 1e-4), so at 100 x 100 it is held to the gate of validation.md, 5 %.
+        // reference_solutions.md: at 100 x 100 the errors must not grow. The integral measures
+        // (kinetic energy, mean |v| error) are the ones that converge; max|v| is one particle's
+        // value, a sum of a decay error and lattice noise of either sign (at 50 x 50 they cancel to
+        // 1e-4), so at 100 x 100 it is held to the gate of reference_solutions.md, 5 %.
         const TaylorGreenErrors e100 = runTaylorGreen(100, tEnd);
         EXPECT_LT(e100.maxVelocity, velocityTolerance);
         EXPECT_LT(e100.energy, e50.energy);

@@ -12,15 +12,23 @@
 //   makeFluidStorage(model, geometry, settings)  -> Storage<Dim> with every quantity set.
 //
 // Typical use (2D Poiseuille channel, periodic in x, walls at y = 0 and y = L):
+// clang-format off
 //     FluidModel<2> model;
-//     model.viscosity = 1e-6;  model.maxVelocity = 2.5e-5;
+//     model.viscosity = 1e-6;
+//     model.maxVelocity = 2.5e-5;
 //     model.bodyForce = constantForce(Vector<2>{{2e-4, 0}});
 //     FluidGeometry<2> geo;
-//     geo.domain.min = {{0, 0}};  geo.domain.max = {{4 * dx, L}};  geo.domain.periodic = {true,
-//     false}; geo.spacing = dx; geo.fluid.push_back({Shape<2>::box(geo.domain.min,
-//     geo.domain.max)}); Storage<2> storage = makeFluidStorage(model, geo, settings); Solver<2>
-//     solver(scheduler, settings, makeFluidEquations(model, geo), geo.domain); LeapfrogKDK<2>
-//     integrator;  Run<2> run(storage, solver, integrator);  run.advanceTo(t);
+//     geo.domain.min = {{0, 0}};
+//     geo.domain.max = {{4 * dx, L}};
+//     geo.domain.periodic = {true, false};
+//     geo.spacing = dx;
+//     geo.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(geo.domain.min, geo.domain.max)));
+//     Storage<2> storage = makeFluidStorage(model, geo, settings);
+//     Solver<2> solver(scheduler, settings, makeFluidEquations(model, geo), geo.domain);
+//     LeapfrogKDK<2> integrator;
+//     Run<2> run(storage, solver, integrator);
+//     run.advanceTo(t);
+// clang-format on
 //
 // Quantities in the storage (types.hpp and terms/fluid_quantities.hpp):
 //   POSITION (2nd order: x, v, a), MASS, DENSITY (1st order with continuity), PRESSURE,

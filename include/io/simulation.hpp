@@ -15,7 +15,7 @@ struct RunOptions {
     std::string program = "fluid_sim";
     std::optional<std::string> outDir;   ///< overrides output.directory
     int threads = 0;                     ///< 0: all hardware threads
-    std::string backend = "omp";         ///< seq or omp
+    std::string backend = "threads";     ///< seq, omp or threads
     std::optional<double> endTime;       ///< overrides time.end
     std::optional<std::string> restart;  ///< checkpoint to continue from
     double checkpointEvery = 0;          ///< simulated seconds between checkpoints (0: none)

@@ -68,8 +68,8 @@ int runApp(int argc, char** argv, const AppInfo& info) {
                    "threads of the omp and threads backends (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--backend", opt.backend,
-                   "seq (one thread), omp (OpenMP, default) or threads (a pool of threads that\n"
-                   "sleep when idle: faster than omp on a machine busy with other work)")
+                   "seq (one thread), omp (OpenMP) or threads (default: a pool of threads that\n"
+                   "sleep when idle, faster than omp on a machine busy with other work)")
         ->check(CLI::IsMember({"seq", "omp", "threads"}));
     app.add_option("--end-time", endTime, "end time [s] (default: the scene's time.end)")
         ->check(CLI::PositiveNumber);

@@ -117,11 +117,13 @@ struct Scene {
     std::vector<Probe<Dim>> probes;
     PhysicsSpec physics;
     double maxSpeed = 0;  ///< velocity scale for "auto" sound speeds [m/s] (0: estimated)
+    std::vector<std::string> warnings;  ///< likely mistakes that are still valid scenes
 };
 
-/// Names of the sides of the box per axis: left/right, bottom/top, back/front.
+/// Names of the sides of the box: the axis and its low or high end (x_min ... z_max), the same
+/// in 2D and 3D whatever the direction of gravity.
 inline const char* sideName(int axis, int high) {
-    static const char* names[3][2] = {{"left", "right"}, {"bottom", "top"}, {"back", "front"}};
+    static const char* names[3][2] = {{"x_min", "x_max"}, {"y_min", "y_max"}, {"z_min", "z_max"}};
     return names[axis][high];
 }
 

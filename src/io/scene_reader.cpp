@@ -1,4 +1,7 @@
 // readScene: every key of the scene format (docs/scenes.md) with its type, unit and range.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <set>
 
 #include "io/scene_loader.hpp"
@@ -60,22 +63,46 @@ MaterialSpec readMaterial(const At& a, const std::string& name) {
     return m;
 }
 
+/// The side names of a Dim-dimensional box, "x_min, x_max, ...".
+template <int Dim>
+std::string sideList() {
+    std::string list;
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi)
+            list += (list.empty() ? "" : ", ") + std::string(sideName(k, hi));
+    return list;
+}
+
+/// The side names before x_min ... z_max (left/right = x, bottom/top = y, back/front = z).
+int legacySide(const std::string& key, int& high) {
+    static const char* old[3][2] = {{"left", "right"}, {"bottom", "top"}, {"back", "front"}};
+    for (int k = 0; k < 3; ++k)
+        for (high = 0; high < 2; ++high)
+            if (key == old[k][high]) return k;
+    return -1;
+}
+
 template <int Dim>
 void readSides(const At& a, Scene<Dim>& s) {
-    std::vector<const char*> names;
-    for (int k = 0; k < Dim; ++k) names.push_back(sideName(k, 0)), names.push_back(sideName(k, 1));
     if (!a.v.is_object()) a.fail("an object with the sides of the domain box");
-    std::vector<std::string> allowed(names.begin(), names.end());
-    for (const auto& [key, value] : a.v.items())
-        if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-            const std::string guess = detail::closest(key, allowed);
-            throw sceneError(a.file, a.join(key),
-                             "a side of the " + std::to_string(Dim) + "D domain box (" +
-                                 (Dim == 2 ? "left, right, bottom, top"
-                                           : "left, right, bottom, top, back, front") +
-                                 ")",
-                             "'" + key + "'", guess.empty() ? "" : "did you mean '" + guess + "'?");
-        }
+    std::vector<std::string> allowed;
+    for (int k = 0; k < Dim; ++k)
+        allowed.push_back(sideName(k, 0)), allowed.push_back(sideName(k, 1));
+    const std::string expected =
+        "a side of the " + std::to_string(Dim) + "D domain box (" + sideList<Dim>() + ")";
+    for (const auto& [key, value] : a.v.items()) {
+        if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+        int high = 0;
+        const int axis = legacySide(key, high);
+        if (axis >= 0 && axis < Dim)
+            throw sceneError(a.file, a.join(key), expected, "the old side name '" + key + "'",
+                             "side names are " + sideList<Dim>() + "; did you mean " +
+                                 sideName(axis, high) +
+                                 "? (the old left/right, bottom/top, back/front were x, y, z)");
+        const std::string guess = detail::closest(key, allowed);
+        throw sceneError(a.file, a.join(key), expected, "'" + key + "'",
+                         guess.empty() ? "" : "did you mean '" + guess + "'?");
+    }
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi) {
             const char* name = sideName(k, hi);
@@ -150,6 +177,40 @@ void readShape(const At& a, Shape& shape, SceneVec<Dim>& mn, SceneVec<Dim>& mx,
                             " (use center, radius)");
     }
     (void)fluid;
+}
+
+/// Warns of open sides whose normal is perpendicular to gravity: fluid flows out through them
+/// sideways, which is rarely meant (an open top faces against gravity).
+template <int Dim>
+void warnSidewaysOpenSides(Scene<Dim>& s) {
+    SceneVec<Dim> g{}, mid = (s.domainMin + s.domainMax) / 2.0;
+    double g2 = 0;
+    try {
+        for (int k = 0; k < Dim; ++k)
+            g[k] = s.gravity[k](mid[0], mid[1], Dim == 3 ? mid[Dim - 1] : 0.0, s.endTime);
+    } catch (const ExpressionError&) {
+        return;  // reported where gravity is evaluated
+    }
+    for (int k = 0; k < Dim; ++k) g2 += g[k] * g[k];
+    if (!(g2 > 0) || !std::isfinite(g2)) return;
+    int down = 0;
+    for (int k = 1; k < Dim; ++k)
+        if (std::abs(g[k]) > std::abs(g[down])) down = k;
+    const char* top = sideName(down, g[down] < 0 ? 1 : 0);
+    std::string gText;
+    for (int k = 0; k < Dim; ++k) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", g[k]);
+        gText += (k ? ", " : "") + std::string(buf);
+    }
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi)
+            if (s.sides[k][hi].type == SideType::OPEN && std::abs(g[k]) <= 1e-12 * std::sqrt(g2))
+                s.warnings.push_back(s.file + ": boundaries." + sideName(k, hi) +
+                                     ": an open side facing sideways to gravity [" + gText +
+                                     "] m/s^2: fluid can flow out through it (the side above "
+                                     "the fluid is " +
+                                     top + ")");
 }
 
 }  // namespace
@@ -333,6 +394,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
     }
     checkSceneGeometry(s);
+    warnSidewaysOpenSides(s);
     return s;
 }
 

@@ -52,6 +52,9 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     Scene<Dim> scene = readScene<Dim>(doc);
     if (opt.endTime) scene.endTime = *opt.endTime;
     if (opt.outDir) scene.output.directory = *opt.outDir;
+    if (!opt.quiet)
+        for (const std::string& w : scene.warnings)
+            std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
     const int threads = opt.backend == "seq" ? 1
                         : opt.threads > 0    ? opt.threads
                                           : int(std::max(1u, std::thread::hardware_concurrency()));

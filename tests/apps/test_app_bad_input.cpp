@@ -102,15 +102,30 @@ TEST(BadInput, EmptyScene) {
 
 TEST(BadInput, PeriodicOnOneSideOnly) {
     json j = tiny();
-    j["boundaries"]["left"] = {{"type", "periodic"}};
+    j["boundaries"]["x_min"] = {{"type", "periodic"}};
     expectMessage(runScene("periodic", j.dump()), kScene,
-                  {"boundaries.right.type", "periodic", "both sides"});
+                  {"boundaries.x_max.type", "periodic", "both sides"});
 }
 
 TEST(BadInput, MissingSide) {
     json j = tiny();
-    j["boundaries"].erase("top");
-    expectMessage(runScene("side", j.dump()), kScene, {"boundaries.top", "missing"});
+    j["boundaries"].erase("y_max");
+    expectMessage(runScene("side", j.dump()), kScene, {"boundaries.y_max", "missing"});
+}
+
+TEST(BadInput, OldSideNameNamesTheNewKey) {
+    json j = tiny();
+    j["boundaries"]["top"] = j["boundaries"]["y_max"];
+    j["boundaries"].erase("y_max");
+    expectMessage(runScene("old_side", j.dump()), kScene,
+                  {"boundaries.top", "x_min, x_max, y_min, y_max", "did you mean y_max?"});
+    json j3 = json::parse(readFile(scene("tiny_3d.json")));
+    j3["boundaries"]["front"] = j3["boundaries"]["z_max"];
+    j3["boundaries"].erase("z_max");
+    const std::string dir = freshDir("bad_old_side_3d");
+    writeFile(dir + "/scene.json", j3.dump());
+    expectMessage(run(FLUID_SIM_3D, "scene.json --quiet --out out", dir), kScene,
+                  {"boundaries.front", "z_min, z_max", "did you mean z_max?"});
 }
 
 TEST(BadInput, ExpressionThatDoesNotParse) {

@@ -28,11 +28,32 @@ TEST(SceneReader, EveryShippedSceneLoads) {
         if (e.path().extension() != ".json") continue;
         SCOPED_TRACE(e.path().string());
         const SceneDocument doc = SceneDocument::fromFile(e.path().string());
+        // No shipped scene has an open side facing sideways to gravity (water lost sideways).
         if (doc.dimension() == 2)
-            EXPECT_NO_THROW(readScene<2>(doc));
+            EXPECT_TRUE(readScene<2>(doc).warnings.empty());
         else
-            EXPECT_NO_THROW(readScene<3>(doc));
+            EXPECT_TRUE(readScene<3>(doc).warnings.empty());
         ++count;
     }
     EXPECT_GE(count, 3);
+}
+
+TEST(SceneReader, SideNamesAreAxisAndEnd) {
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_3d.json");
+    doc.set("boundaries.z_min.thermal={\"temperature\": 50}");
+    const Scene<3> s = readScene<3>(doc);
+    EXPECT_EQ(s.sides[2][0].thermal.value, 50.0);   // z_min: axis 2, low end
+    EXPECT_EQ(s.sides[2][1].type, SideType::OPEN);  // z_max: the top, against gravity
+    EXPECT_TRUE(s.warnings.empty());
+}
+
+TEST(SceneReader, OpenSideSidewaysToGravityWarns) {
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_3d.json");
+    doc.set("boundaries.z_max.type=wall");
+    doc.set("boundaries.y_max.type=open");
+    const Scene<3> s = readScene<3>(doc);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("boundaries.y_max"), std::string::npos) << s.warnings[0];
+    EXPECT_NE(s.warnings[0].find("sideways to gravity"), std::string::npos) << s.warnings[0];
+    EXPECT_NE(s.warnings[0].find("z_max"), std::string::npos) << s.warnings[0];
 }

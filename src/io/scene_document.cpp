@@ -82,6 +82,9 @@ void SceneDocument::set(const std::string& assignment) {
                                    " values; '" + part + "' is not an index into it");
             node = &(*node)[i];
         } else {
+            // A parent the scene left out ("physics" for physics.shifting) starts empty; a
+            // misspelt one is then reported by the reader as an unknown key.
+            if (node->is_null()) *node = nlohmann::json::object();
             if (!node->is_object())
                 throw AppError(ExitCode::USAGE, "--set " + assignment + ": " + path +
                                                     " is not an object, cannot set '" + part +

@@ -57,3 +57,24 @@ TEST(SceneReader, OpenSideSidewaysToGravityWarns) {
     EXPECT_NE(s.warnings[0].find("sideways to gravity"), std::string::npos) << s.warnings[0];
     EXPECT_NE(s.warnings[0].find("z_max"), std::string::npos) << s.warnings[0];
 }
+
+TEST(SceneReader, SetCreatesAMissingParentObject) {
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    ASSERT_FALSE(doc.json().contains("physics"));
+    doc.set("physics.shifting=false");
+    doc.set("physics.density_diffusion=0.05");
+    EXPECT_FALSE(readScene<2>(doc).physics.shifting);
+    EXPECT_EQ(readScene<2>(doc).physics.densityDiffusion, 0.05);
+    // A misspelt parent is created too, then refused by the reader with a suggestion.
+    doc.set("physcs.heat=false");
+    try {
+        readScene<2>(doc);
+        ADD_FAILURE() << "a misspelt key was accepted";
+    } catch (const AppError& e) {
+        EXPECT_EQ(e.code(), ExitCode::SCENE);
+        EXPECT_NE(std::string(e.what()).find("did you mean 'physics'"), std::string::npos)
+            << e.what();
+    }
+    // A value that is not an object is not replaced by one.
+    EXPECT_THROW(doc.set("time.end.value=1"), AppError);
+}

@@ -1,0 +1,480 @@
+#!/usr/bin/python3
+"""Validation cases, run through the apps as a user runs them.
+
+Each case runs a scene of scenes/validation/ with fluid_sim or fluid_sim_3d (the scene, the app,
+the app's defaults; only the resolution is changed, with --set particles.spacing=...), reads the
+app's own outputs (particle CSV, probes.csv, summary.json) and compares them with the case's
+reference. One JSON result per run.
+
+    cases.py list
+    cases.py run CASE [--spacing DX] [--bin DIR] [--threads N] [--json FILE] [--check ci|gate]
+
+--check ci exits 1 unless the result is within the case's CI bound (tests/validation); --check
+gate exits 1 unless it meets the issue's gate. Needs Debian's python3-numpy only.
+"""
+import argparse
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENES = os.path.join(ROOT, "scenes", "validation")
+DATA = os.path.join(ROOT, "validation", "data")
+
+
+# ---------------------------------------------------------------------------------------------
+# Running an app and reading its outputs
+# ---------------------------------------------------------------------------------------------
+
+
+class Run:
+    """One app run: the scene as run, summary.json, probes and the particle CSV frames."""
+
+    def __init__(self, scene, out, summary, command, exit_code):
+        self.scene, self.out, self.summary = scene, out, summary
+        self.command, self.exit_code = command, exit_code
+        self.spacing = scene["particles"]["spacing"]
+        files = sorted(f for f in os.listdir(out) if f.endswith(".csv") and f != "probes.csv")
+        every, final = scene["output"].get("every", 0.05), summary["final_time"]
+        self.frames = [(min(k * every, final), os.path.join(out, f)) for k, f in enumerate(files)]
+
+    def particles(self, k=-1):
+        """Fluid particles of frame k as a dict of columns."""
+        data = np.genfromtxt(self.frames[k][1], delimiter=",", names=True)
+        return {n: np.atleast_1d(data[n]) for n in data.dtype.names}
+
+    def time(self, k=-1):
+        return self.frames[k][0]
+
+    def probes(self):
+        path = os.path.join(self.out, "probes.csv")
+        data = np.genfromtxt(path, delimiter=",", names=True, deletechars="")
+        return {n: np.atleast_1d(data[n]) for n in data.dtype.names}
+
+
+def run_app(case, spacing, bin_dir, threads, sets=()):
+    scene_path = os.path.join(SCENES, case["scene"])
+    with open(scene_path) as f:
+        text = "\n".join(l for l in f if not l.lstrip().startswith("//"))
+    scene = json.loads(text)
+    app = "fluid_sim" if scene["dimension"] == 2 else "fluid_sim_3d"
+    exe = os.path.join(bin_dir, app, app) if os.path.isdir(os.path.join(bin_dir, app)) else os.path.join(bin_dir, app)
+    all_sets = list(case.get("sets", ())) + list(sets)
+    if spacing is not None:
+        all_sets.append(f"particles.spacing={spacing:.10g}")
+        scene["particles"]["spacing"] = spacing
+    for s in case.get("sets", ()):
+        key, value = s.split("=", 1)
+        node, parts = scene, key.split(".")
+        for p in parts[:-1]:
+            node = node[int(p)] if isinstance(node, list) else node[p]
+        node[parts[-1]] = json.loads(value)
+    out = tempfile.mkdtemp(prefix=f"val_{case['name']}_")
+    cmd = [exe, scene_path, "--out", out, "--threads", str(threads), "-q"]
+    for s in all_sets:
+        cmd += ["--set", s]
+    proc = subprocess.run(cmd, capture_output=True, text=True)
+    shown = " ".join([app, os.path.relpath(scene_path, ROOT)] + [f"--set {s}" for s in all_sets])
+    summary_path = os.path.join(out, "summary.json")
+    if proc.returncode != 0 or not os.path.exists(summary_path):
+        raise RuntimeError(f"{shown} failed with exit code {proc.returncode}: {proc.stderr.strip()}")
+    with open(summary_path) as f:
+        summary = json.load(f)
+    if summary.get("status") != "completed":
+        raise RuntimeError(f"{shown}: status {summary.get('status')}: {summary.get('message')}")
+    return Run(scene, out, summary, shown, proc.returncode)
+
+
+# ---------------------------------------------------------------------------------------------
+# References
+# ---------------------------------------------------------------------------------------------
+
+
+def poiseuille_exact(y, t, F=2e-4, nu=1e-6, L=1e-3, terms=200):
+    """Morris, Fox & Zhu (1997): start-up Poiseuille flow (docs/reference_solutions.md sec. 2)."""
+    u = F / (2 * nu) * y * (L - y)
+    for n in range(terms):
+        k = 2 * n + 1
+        u -= 4 * F * L**2 / (nu * math.pi**3 * k**3) * np.sin(k * math.pi * y / L) * math.exp(-k * k * math.pi**2 * nu * t / L**2)
+    return u
+
+
+def couette_exact(y, t, V0=2.5e-5, nu=1e-6, L=1e-3, terms=400):
+    """Morris (1997): start-up Couette flow (docs/reference_solutions.md sec. 3)."""
+    u = V0 * y / L
+    for n in range(1, terms + 1):
+        u += 2 * V0 / (n * math.pi) * (-1) ** n * np.sin(n * math.pi * y / L) * math.exp(-nu * n * n * math.pi**2 * t / L**2)
+    return u
+
+
+def read_table(name):
+    """A CSV table of validation/data (comment lines start with #) as a dict of columns."""
+    with open(os.path.join(DATA, name)) as f:
+        rows = [l.strip().split(",") for l in f if l.strip() and not l.startswith("#")]
+    cols = {}
+    for i, key in enumerate(rows[0]):
+        values = [r[i] for r in rows[1:]]
+        try:
+            cols[key] = np.array([float(v) for v in values])
+        except ValueError:
+            cols[key] = np.array(values)
+    return cols
+
+
+# ---------------------------------------------------------------------------------------------
+# Comparisons: each returns (checks, notes, profile) for a run
+#   checks: list of {"metric", "value", "gate"} (value <= gate passes)
+#   profile: {"xlabel", "ylabel", "series": [{"label", "x", "y", "style"}]} for the report's plot
+# ---------------------------------------------------------------------------------------------
+
+
+def channel(run, exact, scale, name):
+    axis = "y" if run.scene["dimension"] == 2 else "z"
+    errs = []
+    for k in range(1, len(run.frames)):
+        p = run.particles(k)
+        errs.append(float(np.max(np.abs(p["vx"] - exact(p[axis], run.time(k)))) / scale))
+    p, t = run.particles(), run.time()
+    ys = np.linspace(0, 1e-3, 101)
+    profile = {"xlabel": f"{axis} [m]", "ylabel": "u [m/s]", "series": [
+        {"label": f"app, t = {t:g} s", "x": p[axis].tolist(), "y": p["vx"].tolist(), "style": "points"},
+        {"label": "analytic", "x": ys.tolist(), "y": exact(ys, t).tolist(), "style": "line"}]}
+    checks = [{"metric": f"max |u - u_exact| / {name} at t = {t:g} s", "value": errs[-1], "gate": 0.01}]
+    notes = "largest over the outputs " + ", ".join(f"{e:.4g}" for e in errs)
+    return checks, notes, profile
+
+
+def poiseuille(run):
+    return channel(run, poiseuille_exact, 2.5e-5, "u_max")
+
+
+def couette(run):
+    return channel(run, couette_exact, 2.5e-5, "V0")
+
+
+def taylor_green(run):
+    nu = next(iter(run.scene["materials"].values()))["viscosity"]
+    p, t = run.particles(), run.time()
+    decay = math.exp(-8 * math.pi**2 * nu * t)
+    x, y = p["x"], p["y"]
+    ue = -decay * np.cos(2 * math.pi * x) * np.sin(2 * math.pi * y)
+    ve = decay * np.sin(2 * math.pi * x) * np.cos(2 * math.pi * y)
+    vmag, vmag_e = np.hypot(p["vx"], p["vy"]), np.hypot(ue, ve)
+    l1 = float(np.mean(np.abs(vmag - vmag_e)) / np.mean(vmag_e))
+    maxv = float(abs(vmag.max() - decay) / decay)
+    times, maxes = [], []
+    for k in range(len(run.frames)):
+        q = run.particles(k)
+        times.append(run.time(k))
+        maxes.append(float(np.hypot(q["vx"], q["vy"]).max()))
+    tt = np.linspace(0, t, 101)
+    profile = {"xlabel": "t", "ylabel": "max |v|", "series": [
+        {"label": "app", "x": times, "y": maxes, "style": "points"},
+        {"label": "exp(-8 pi^2 nu t)", "x": tt.tolist(), "y": np.exp(-8 * math.pi**2 * nu * tt).tolist(), "style": "line"}]}
+    checks = [{"metric": f"l1 velocity error at t = {t:g} (PySPH's definition; anchor: PySPH EDAC, 50 x 50, Re = 100)",
+               "value": l1, "gate": 0.022}]
+    if abs(nu - 0.01) < 1e-12:
+        checks.insert(0, {"metric": f"|max|v| - exp(-8 pi^2 nu t)| / exp(-8 pi^2 nu t) at t = {t:g}", "value": maxv, "gate": 0.02})
+    notes = f"max|v| decay error {maxv:.4g}; l1 {l1:.4g}"
+    return checks, notes, profile
+
+
+def cavity(run, re, gate):
+    ref = read_table("ghia1982.csv")
+    pr = run.probes()
+    col = f"re{re}"
+    dev, series = [], []
+    for line, comp in (("u", "vx"), ("v", "vy")):
+        on = ref["line"] == line
+        coord, ghia = ref["coordinate"][on], ref[col][on]
+        num = np.array([pr[f"{line}{int(round(c * 10000)):04d}.{comp}"][-1] for c in coord])
+        dev.append(np.abs(num - ghia))
+        series += [{"label": f"app {line} on the centreline", "x": coord.tolist(), "y": num.tolist(), "style": "points"},
+                   {"label": f"Ghia et al. {line}", "x": coord.tolist(), "y": ghia.tolist(), "style": "line"}]
+    t = float(pr["time"][-1])
+    change = float(max(np.max(np.abs(np.array([pr[k][-1] - pr[k][-2] for k in pr if k != "time"]))), 0))
+    du, dv = float(dev[0].max()), float(dev[1].max())
+    checks = [{"metric": f"max |u - u_Ghia| on x = 0.5 and |v - v_Ghia| on y = 0.5 / U_lid at t = {t:g}",
+               "value": max(du, dv), "gate": gate}]
+    notes = f"u line {du:.4g}, v line {dv:.4g}; largest probe change over the last output interval {change:.3g} U_lid"
+    profile = {"xlabel": "y (u) or x (v)", "ylabel": "velocity / U_lid", "series": series}
+    return checks, notes, profile
+
+
+def hydrostatic(run):
+    dim = run.scene["dimension"]
+    up = "y" if dim == 2 else "z"
+    g = abs(run.scene["gravity"][dim - 1])
+    rho = next(iter(run.scene["materials"].values()))["density"]
+    H = run.scene["fluids"][0]["max"][dim - 1]
+    W = run.scene["fluids"][0]["max"][0]
+    dx = run.spacing
+
+    def surface(p):
+        cols = np.floor(p["x"] / dx) if dim == 2 else np.floor(p["x"] / dx) * 100000 + np.floor(p["y"] / dx)
+        tops = [p[up][cols == c].max() for c in np.unique(cols)]
+        return float(np.mean(tops) + dx / 2)
+
+    p, t = run.particles(), run.time()
+    inside = (p[up] > 0.1 * H) & (p[up] < 0.9 * H) & (p["x"] > 0.1 * W) & (p["x"] < 0.9 * W)
+    if dim == 3:
+        inside &= (p["y"] > 0.1 * W) & (p["y"] < 0.9 * W)
+    err = np.abs(p["pressure"] - rho * g * (H - p[up])) / (rho * g * H)
+    drift = abs(surface(p) - surface(run.particles(0))) / H
+    zz = np.linspace(0, H, 50)
+    profile = {"xlabel": f"{up} [m]", "ylabel": "pressure [Pa]", "series": [
+        {"label": f"app, t = {t:g} s", "x": p[up].tolist(), "y": p["pressure"].tolist(), "style": "points"},
+        {"label": "rho g (H - y)", "x": zz.tolist(), "y": (rho * g * (H - zz)).tolist(), "style": "line"}]}
+    checks = [{"metric": f"max interior |p - rho g (H - {up})| / (rho g H) at t = {t:g} s", "value": float(err[inside].max()), "gate": 0.01},
+              {"metric": f"free-surface drift / H over {t:g} s", "value": drift, "gate": 0.01}]
+    notes = f"mean interior error {float(err[inside].mean()):.3g}; max speed {float(np.max(np.abs(p['vx'])) if len(p['vx']) else 0):.3g} m/s (x)"
+    return checks, notes, profile
+
+
+def dam_break(run):
+    ref = read_table("martin_moyce1952.csv")
+    a = run.scene["fluids"][0]["max"][0]
+    g = abs(run.scene["gravity"][1])
+    dx = run.spacing
+    ts, zs = [], []
+    for k in range(len(run.frames)):
+        x = np.sort(run.particles(k)["x"])
+        gaps = np.nonzero(np.diff(x) > 2 * dx)[0]
+        front = x[gaps[0]] if len(gaps) else x[-1]
+        ts.append(run.time(k) * math.sqrt(2 * g / a))
+        zs.append((front + dx / 2) / a)
+    ts, zs = np.array(ts), np.array(zs)
+    sel = ref["T"] <= ts[-1]
+    zsim = np.interp(ref["T"][sel], ts, zs)
+    rel = np.abs(zsim - ref["Z"][sel]) / ref["Z"][sel]
+    profile = {"xlabel": "T = t sqrt(2 g / a)", "ylabel": "Z = z / a", "series": [
+        {"label": "app", "x": ts.tolist(), "y": zs.tolist(), "style": "line"},
+        {"label": "Martin & Moyce (1952)", "x": ref["T"].tolist(), "y": ref["Z"].tolist(), "style": "points"}]}
+    checks = [{"metric": "max |Z - Z_exp| / Z_exp over the tabulated times", "value": float(rel.max()), "gate": 0.10}]
+    notes = "relative error at T = " + ", ".join(f"{T:g}: {e:+.3f}" for T, e in zip(ref["T"][sel], (zsim - ref["Z"][sel]) / ref["Z"][sel]))
+    return checks, notes, profile
+
+
+DE_VAHL_DAVIS = {"1e3": (3.649, 3.697, 1.118), "1e4": (16.178, 19.617, 2.243), "1e5": (34.73, 68.59, 4.519)}
+
+
+def peak(coord, values):
+    """Largest value of a sampled profile, refined by a parabola through the top three samples."""
+    i = int(np.argmax(values))
+    if 0 < i < len(values) - 1:
+        y0, y1, y2 = values[i - 1], values[i], values[i + 1]
+        d = y0 - 2 * y1 + y2
+        if d < 0:
+            s = 0.5 * (y0 - y2) / d
+            return float(y1 - 0.25 * (y0 - y2) * s), float(coord[i] + s * (coord[i + 1] - coord[i]))
+    return float(values[i]), float(coord[i])
+
+
+def natural_convection(run, ra):
+    mat = next(iter(run.scene["materials"].values()))
+    alpha = mat["conductivity"] / (mat["density"] * mat["heat_capacity"])
+    th, tc = (run.scene["boundaries"][s]["thermal"]["temperature"] for s in ("x_min", "x_max"))
+    dT, L = th - tc, 1.0
+    pr = run.probes()
+    n = len([k for k in pr if k.startswith("u") and k.endswith(".vx")])
+    ys = np.array([(i + 1) / (n + 1) for i in range(n)])
+    u = np.array([pr[f"u{i:02d}.vx"][-1] for i in range(n)]) * L / alpha
+    v = np.array([pr[f"v{i:02d}.vy"][-1] for i in range(n)]) * L / alpha
+    umax, yu = peak(ys, u)
+    vmax, xv = peak(ys, v)
+    # Mean Nusselt number: the heat flux q_x = rho c (u T - alpha dT/dx), averaged over the fluid
+    # between its first and last column of particles (the conduction part from their mean
+    # temperatures), over alpha rho c dT / L.
+    p = run.particles()
+    dx = run.spacing
+    cols = np.clip(np.floor(p["x"] / dx).astype(int), 0, int(round(L / dx)) - 1)
+    first, last = cols.min(), cols.max()
+    t_first, t_last = p["temperature"][cols == first].mean(), p["temperature"][cols == last].mean()
+    x_first, x_last = p["x"][cols == first].mean(), p["x"][cols == last].mean()
+    conduction = (t_first - t_last) / (x_last - x_first) * L / dT
+    band = (p["x"] >= x_first) & (p["x"] <= x_last)
+    convection = np.mean(p["vx"][band] * (p["temperature"][band] - p["temperature"][band].mean())) * L / (alpha * dT)
+    nu_mean = float(conduction + convection)
+    ref = DE_VAHL_DAVIS[ra]
+    t = float(pr["time"][-1])
+    prev_u = np.array([pr[f"u{i:02d}.vx"][-2] for i in range(n)]) * L / alpha
+    checks = [{"metric": f"|u_max - {ref[0]}| / {ref[0]} (u_max on x = 0.5, L / alpha units) at t = {t:g} s", "value": abs(umax - ref[0]) / ref[0], "gate": 0.03},
+              {"metric": f"|v_max - {ref[1]}| / {ref[1]} (v_max on y = 0.5) at t = {t:g} s", "value": abs(vmax - ref[1]) / ref[1], "gate": 0.03},
+              {"metric": f"|Nu - {ref[2]}| / {ref[2]} (mean Nusselt number) at t = {t:g} s", "value": abs(nu_mean - ref[2]) / ref[2], "gate": 0.03}]
+    notes = (f"u_max {umax:.4g} at y = {yu:.3f}, v_max {vmax:.4g} at x = {xv:.3f}, Nu {nu_mean:.4g} "
+             f"(de Vahl Davis: {ref[0]}, {ref[1]}, {ref[2]}); u_max one output earlier {peak(ys, prev_u)[0]:.4g}")
+    profile = {"xlabel": "y (u on x = 0.5) or x (v on y = 0.5)", "ylabel": "velocity L / alpha", "series": [
+        {"label": "u on x = 0.5", "x": ys.tolist(), "y": u.tolist(), "style": "line"},
+        {"label": "v on y = 0.5", "x": ys.tolist(), "y": v.tolist(), "style": "line"},
+        {"label": "de Vahl Davis u_max, v_max", "x": [yu, xv], "y": [ref[0], ref[1]], "style": "points"}]}
+    return checks, notes, profile
+
+
+def heat_pulse(run):
+    dim = run.scene["dimension"]
+    p, t = run.particles(), run.time()
+    t0, alpha = 0.0025, 1.0
+    r2 = sum(p[c] ** 2 for c in "xyz"[:dim])
+    exact = (t0 / (t0 + t)) ** (dim / 2) * np.exp(-r2 / (4 * alpha * (t0 + t)))
+    err = np.abs(p["temperature"] - exact)
+    line = np.abs(p["y"]) < run.spacing * 0.6
+    if dim == 3:
+        line &= np.abs(p["z"]) < run.spacing * 0.6
+    xs = np.linspace(p["x"].min(), p["x"].max(), 200)
+    profile = {"xlabel": "x", "ylabel": "T", "series": [
+        {"label": f"app near the x axis, t = {t:g}", "x": p["x"][line].tolist(), "y": p["temperature"][line].tolist(), "style": "points"},
+        {"label": "analytic", "x": xs.tolist(), "y": ((t0 / (t0 + t)) ** (dim / 2) * np.exp(-xs**2 / (4 * alpha * (t0 + t)))).tolist(), "style": "line"}]}
+    near = r2 < 9 * 2 * alpha * (t0 + t)
+    checks = [{"metric": f"max |T - T_exact| / initial peak at t = {t:g}", "value": float(err.max()), "gate": 0.01},
+              {"metric": "mean |T - T_exact| within 3 sigma / initial peak", "value": float(err[near].mean()), "gate": 0.003}]
+    return checks, f"heat drift {abs(run.summary['conservation']['thermal_energy']['end'] / run.summary['conservation']['thermal_energy']['start'] - 1):.3g}", profile
+
+
+def heat_slabs(run):
+    from math import erf
+    mats = run.scene["materials"]
+    kl, kr = mats["left"]["conductivity"], mats["right"]["conductivity"]
+    al = kl / (mats["left"]["density"] * mats["left"]["heat_capacity"])
+    ar = kr / (mats["right"]["density"] * mats["right"]["heat_capacity"])
+    el = math.sqrt(kl * mats["left"]["density"] * mats["left"]["heat_capacity"])
+    er = math.sqrt(kr * mats["right"]["density"] * mats["right"]["heat_capacity"])
+    tc = el / (el + er)
+    verf = np.vectorize(erf)
+
+    def exact(x, t):
+        return np.where(x < 0, tc + (1 - tc) * verf(-x / (2 * math.sqrt(al * t))), tc - tc * verf(x / (2 * math.sqrt(ar * t))))
+
+    p, t = run.particles(), run.time()
+    err = np.abs(p["temperature"] - exact(p["x"], t))
+    xs = np.linspace(-0.5, 0.5, 201)
+    profile = {"xlabel": "x", "ylabel": "T", "series": [
+        {"label": f"app, t = {t:g}", "x": p["x"].tolist(), "y": p["temperature"].tolist(), "style": "points"},
+        {"label": "erf solution", "x": xs.tolist(), "y": exact(xs, t).tolist(), "style": "line"}]}
+    near = np.abs(p["x"]) < 0.5
+    checks = [{"metric": f"max |T - T_exact| / (T_L - T_R) at t = {t:g}", "value": float(err.max()), "gate": 0.01},
+              {"metric": "mean |T - T_exact| for |x| < 0.5", "value": float(err[near].mean()), "gate": 0.003}]
+    return checks, f"k_R / k_L = {kr / kl:g}, interface T_c = {tc:.6f}", profile
+
+
+# ---------------------------------------------------------------------------------------------
+# The cases. "doc": documentation resolution; "study": spacings of the convergence study;
+# "ci": the fast check of tests/validation (spacing, bound, where the bound comes from).
+# ---------------------------------------------------------------------------------------------
+
+GATE = "issue 9 gate"
+CASES = {}
+
+
+def case(name, scene, compare, doc, study, ci, **kw):
+    CASES[name] = dict(name=name, scene=scene, compare=compare, doc=doc, study=study, ci=ci, **kw)
+
+
+# ci = (spacing, bounds): the fast check of tests/validation at a coarse spacing. bounds None:
+# every check must meet the issue's gate. Otherwise one entry per check: None (the gate) or a
+# REGRESSION BOUND, NOT THE ISSUE'S GATE, for a check that misses its gate today: the error
+# measured at that spacing (REGRESSION_BUILD, with the scheme then on main) times 1.5, rounded
+# up; the 50 % margin because the scheme is being changed. A bound is tightened as the scheme
+# improves and never raised to pass.
+REGRESSION_BUILD = "6064388 with the scheme changes then in progress"
+case("poiseuille_2d", "poiseuille_2d.json", poiseuille, 2.5e-5, [1e-4, 5e-5, 2.5e-5], (5e-5, [0.031]))
+case("poiseuille_3d", "poiseuille_3d.json", poiseuille, 1e-3 / 30, [1e-4, 5e-5, 1e-3 / 30], (1e-4, [0.041]))
+case("couette_2d", "couette_2d.json", couette, 2.5e-5, [1e-4, 5e-5, 2.5e-5], (5e-5, None))
+case("couette_3d", "couette_3d.json", couette, 1e-3 / 30, [1e-4, 5e-5, 1e-3 / 30], (1e-4, None))
+case("taylor_green_re100", "taylor_green_re100.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [0.054, 0.17]))
+case("taylor_green_re1000", "taylor_green_re1000.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [0.26]))
+case("cavity_re100", "cavity_re100.json", lambda r: cavity(r, 100, 0.03), 0.02, [0.04, 0.02, 0.0125], (0.04, [0.35]))
+case("cavity_re1000", "cavity_re1000.json", lambda r: cavity(r, 1000, 0.05), 0.02, [0.04, 0.02, 0.0125], (0.04, [0.33]))
+case("hydrostatic_tank_2d", "hydrostatic_tank_2d.json", hydrostatic, 0.025, [0.1, 0.05, 0.025], (0.1, [0.45, 0.20]))
+case("hydrostatic_tank_3d", "hydrostatic_tank_3d.json", hydrostatic, 0.0625, [0.125, 0.1, 0.0625], (0.125, [0.51, 0.21]))
+case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715 / 40, [0.05715 / 10, 0.05715 / 20, 0.05715 / 40], (0.05715 / 10, [0.28]))
+for _ra, _bounds in (("1e3", [0.065, 0.056, 0.062]), ("1e4", [0.060, 0.125, 0.096]), ("1e5", [0.57, 0.48, 0.31])):
+    case(f"natural_convection_ra{_ra}", f"natural_convection_ra{_ra}.json", (lambda ra: lambda r: natural_convection(r, ra))(_ra),
+         0.02, [0.04, 0.02, 0.0125], (0.04, _bounds))
+case("heat_pulse_2d", "heat_pulse_2d.json", heat_pulse, 0.01, [0.02, 0.01, 0.005], (0.02, None))
+case("heat_pulse_3d", "heat_pulse_3d.json", heat_pulse, 0.02, [0.04, 0.03, 0.02], (0.04, [0.033, None]))
+case("heat_slabs_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0.005], (0.02, None))
+case("heat_slabs_k2_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0.005], (0.02, None),
+     sets=["materials.right.conductivity=2"])
+
+
+def app_commit():
+    try:
+        head = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", ROOT, "status", "--porcelain", "--untracked-files=no", "--", "include", "src", "apps"],
+                               capture_output=True, text=True).stdout.strip()
+        return head + ("+uncommitted changes in include/ src/ apps/" if dirty else "")
+    except OSError:
+        return "unknown"
+
+
+def run_case(name, spacing, bin_dir, threads):
+    c = CASES[name]
+    run = run_app(c, spacing, bin_dir, threads)
+    try:
+        checks, notes, profile = c["compare"](run)
+    finally:
+        shutil.rmtree(run.out, ignore_errors=True)
+    for ch in checks:
+        ch["passed"] = bool(ch["value"] <= ch["gate"])
+    main = max(checks, key=lambda ch: ch["value"] / ch["gate"])
+    s = run.summary
+    return {"case": name, "scene": "scenes/validation/" + c["scene"], "spacing": run.spacing,
+            "fluid_particles": s.get("fluid_particles"), "steps": s.get("steps"), "final_time": s.get("final_time"),
+            "wall_seconds": s.get("wall_seconds"), "threads": threads, "command": run.command,
+            "error": main["value"], "gate": main["gate"], "metric": main["metric"],
+            "passed": all(ch["passed"] for ch in checks), "checks": checks, "notes": notes,
+            "app_build": app_commit(), "profile": profile}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    sub.add_parser("list")
+    r = sub.add_parser("run")
+    r.add_argument("case", choices=sorted(CASES))
+    r.add_argument("--spacing", type=float, help="particle spacing (default: the documentation resolution; 'ci' with --check ci)")
+    r.add_argument("--bin", default=os.path.join(ROOT, "build", "release", "apps"), help="directory of the apps")
+    r.add_argument("--threads", type=int, default=2)
+    r.add_argument("--json", help="write the result here")
+    r.add_argument("--check", choices=["ci", "gate"], help="exit 1 unless within the CI bound or the issue's gate")
+    a = ap.parse_args()
+    if a.cmd == "list":
+        for n, c in sorted(CASES.items()):
+            print(n, c["scene"], "doc", c["doc"], "study", c["study"], "ci", c["ci"][0])
+        return 0
+    c = CASES[a.case]
+    spacing = a.spacing if a.spacing else (c["ci"][0] if a.check == "ci" else c["doc"])
+    res = run_case(a.case, spacing, a.bin, a.threads)
+    if a.check == "ci":
+        bounds = c["ci"][1] or [None] * len(res["checks"])
+        for ch, b in zip(res["checks"], bounds):
+            ch["ci_bound"] = ch["gate"] if b is None else b
+            ch["ci_bound_kind"] = "gate" if b is None else f"regression bound, not the issue's gate (measured at {REGRESSION_BUILD} + 50 %)"
+    text = json.dumps(res, indent=1)
+    if a.json:
+        with open(a.json, "w") as f:
+            f.write(text + "\n")
+    for ch in res["checks"]:
+        print(f"{a.case}: {ch['metric']}: {ch['value']:.5g} (gate {ch['gate']:g}): {'pass' if ch['passed'] else 'MISSED'}")
+    print(f"{a.case}: {res['notes']}")
+    print(f"{a.case}: spacing {res['spacing']:g}, {res['fluid_particles']} fluid particles, {res['steps']} steps, {res['wall_seconds']:.1f} s")
+    if a.check == "gate":
+        return 0 if res["passed"] else 1
+    if a.check == "ci":
+        ok = True
+        for ch in res["checks"]:
+            good = ch["value"] <= ch["ci_bound"]
+            ok &= good
+            print(f"{a.case}: CI: {ch['metric']}: {ch['value']:.5g} <= {ch['ci_bound']:g} ({ch['ci_bound_kind']}): {'pass' if good else 'FAIL'}")
+        return 0 if ok else 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -15,7 +15,7 @@
 
 namespace num::io {
 
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;  ///< 2: with the run's fingerprint
 
 /// Appends plain values, strings and vectors to a byte buffer.
 class ByteWriter {

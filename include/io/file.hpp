@@ -1,5 +1,5 @@
 // Output files that report every failure (permissions, a full disk) as an AppError with exit
-// code OUTPUT, and atomic replacement (write a temporary file, flush to disk, rename).
+// code OUTPUT, each written whole or not at all (a temporary file, renamed when complete).
 #pragma once
 
 #include <cstdio>
@@ -10,29 +10,35 @@
 
 namespace num::io {
 
+/// An output file written to `<path>.tmp` and renamed to `path` by close(), so that a reader
+/// (and a full disk, a crash or a second Ctrl-C) never leaves a partial file under `path`.
 class OutFile {
   public:
-    /// Opens `path` for writing (truncating it).
     explicit OutFile(const std::string& path);
+    /// Without close(): the temporary file is removed and `path` is left as it was.
     ~OutFile();
     OutFile(const OutFile&) = delete;
     OutFile& operator=(const OutFile&) = delete;
 
     void write(const void* data, std::size_t bytes);
     void write(std::string_view text) { write(text.data(), text.size()); }
-    /// Flushes to the disk (fsync) and closes; throws on any failure.
+    /// Flushes (to the disk with `sync`), closes and renames; throws on any failure.
     void close(bool sync = false);
     const std::string& path() const { return path_; }
 
   private:
     [[noreturn]] void fail(const std::string& what, int error);
-    std::string path_;
+    std::string path_, tmp_;
     std::FILE* f_ = nullptr;
 };
 
 /// Writes `content` to `path` atomically: a reader sees the old file or the new one, never a
 /// partial one.
-void writeFileAtomically(const std::string& path, std::string_view content);
+void writeFileAtomically(const std::string& path, std::string_view content, bool sync = true);
+
+/// Appends `text` (whole lines) to `path`; on a failure the file is cut back to its old length,
+/// so it never ends in part of a line.
+void appendToFile(const std::string& path, std::string_view text);
 
 /// Creates a directory and its parents; an AppError (OUTPUT) when it cannot, or when it is not
 /// writable.

@@ -1,6 +1,7 @@
 #include "io/app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 
@@ -49,6 +50,9 @@ std::string examples(const std::string& name, int dim) {
 
 template <int Dim>
 int runApp(int argc, char** argv, const AppInfo& info) {
+    // A closed stdout (`fluid_sim | head -1`) must not end the run before its outputs: writes to
+    // it fail quietly instead.
+    std::signal(SIGPIPE, SIG_IGN);
     CLI::App app{"Smoothed Particle Hydrodynamics of water with heat transfer in " +
                      std::to_string(Dim) + "D (numerics 0.1.0).",
                  info.name};

@@ -19,17 +19,20 @@ std::string explain(int error) {
 }
 }  // namespace
 
-OutFile::OutFile(const std::string& path) : path_(path) {
-    f_ = std::fopen(path.c_str(), "wb");
+OutFile::OutFile(const std::string& path) : path_(path), tmp_(path + ".tmp") {
+    f_ = std::fopen(tmp_.c_str(), "wb");
     if (!f_) fail("cannot create the file", errno);
 }
 
 OutFile::~OutFile() {
-    if (f_) std::fclose(f_);
+    if (!f_) return;
+    std::fclose(f_);
+    std::remove(tmp_.c_str());  // never completed: the old file (if any) stays
 }
 
 void OutFile::fail(const std::string& what, int error) {
     if (f_) std::fclose(f_), f_ = nullptr;
+    std::remove(tmp_.c_str());
     throw AppError(ExitCode::OUTPUT, path_ + ": " + what + ": " + explain(error));
 }
 
@@ -43,24 +46,35 @@ void OutFile::close(bool sync) {
     if (sync && ::fsync(fileno(f_)) != 0 && errno != EINVAL) fail("write failed", errno);
     std::FILE* f = f_;
     f_ = nullptr;
-    if (std::fclose(f) != 0) fail("write failed", errno);
+    if (std::fclose(f) != 0) {
+        const int e = errno;
+        std::remove(tmp_.c_str());
+        throw AppError(ExitCode::OUTPUT, path_ + ": write failed: " + explain(e));
+    }
+    if (std::rename(tmp_.c_str(), path_.c_str()) != 0) {
+        const int e = errno;
+        std::remove(tmp_.c_str());
+        throw AppError(ExitCode::OUTPUT, path_ + ": cannot replace the file: " + explain(e));
+    }
 }
 
-void writeFileAtomically(const std::string& path, std::string_view content) {
-    const std::string tmp = path + ".tmp";
-    try {
-        OutFile out(tmp);
-        out.write(content);
-        out.close(true);
-    } catch (...) {
-        std::remove(tmp.c_str());
-        throw;
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const int e = errno;
-        std::remove(tmp.c_str());
-        throw AppError(ExitCode::OUTPUT, path + ": cannot replace the file: " + explain(e));
-    }
+void writeFileAtomically(const std::string& path, std::string_view content, bool sync) {
+    OutFile out(path);
+    out.write(content);
+    out.close(sync);
+}
+
+void appendToFile(const std::string& path, std::string_view text) {
+    std::FILE* f = std::fopen(path.c_str(), "ab");
+    if (!f) throw AppError(ExitCode::OUTPUT, path + ": cannot open the file: " + explain(errno));
+    const long before = std::ftell(f);
+    const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    const bool flushed = written && std::fflush(f) == 0;
+    const int e = errno;
+    if (!flushed && before >= 0) (void)::ftruncate(fileno(f), before);  // no half a line
+    const bool closed = std::fclose(f) == 0;
+    if (!flushed || !closed)
+        throw AppError(ExitCode::OUTPUT, path + ": write failed: " + explain(flushed ? errno : e));
 }
 
 void makeOutputDirectory(const std::string& dir) {

@@ -1,5 +1,7 @@
 #include "io/image.hpp"
 
+#include "io/file.hpp"
+
 #include <png.h>
 
 #include <algorithm>
@@ -93,18 +95,19 @@ void Image::text(int x, int y, const std::string& s, Rgb c, int scale) {
 }
 
 void writePng(const std::string& path, const Image& image) {
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f)
-        throw AppError(ExitCode::OUTPUT,
-                       path + ": cannot create the file: " + std::strerror(errno));
+    std::string bytes;  // encoded in memory, then written whole (never a partial file)
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!png || !info || setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        throw AppError(ExitCode::OUTPUT, path + ": writing the PNG failed (disk full?)");
+        throw AppError(ExitCode::OUTPUT, path + ": encoding the PNG failed");
     }
-    png_init_io(png, f);
+    png_set_write_fn(
+        png, &bytes,
+        [](png_structp p, png_bytep data, png_size_t n) {
+            static_cast<std::string*>(png_get_io_ptr(p))->append(reinterpret_cast<char*>(data), n);
+        },
+        [](png_structp) {});
     png_set_IHDR(png, info, image.width(), image.height(), 8, PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
@@ -113,10 +116,7 @@ void writePng(const std::string& path, const Image& image) {
             png, const_cast<png_bytep>(image.pixels().data() + std::size_t(y) * image.width() * 3));
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    const bool flushed = std::fflush(f) == 0;
-    const int e = errno;
-    if (std::fclose(f) != 0 || !flushed)
-        throw AppError(ExitCode::OUTPUT, path + ": write failed: " + std::strerror(e));
+    writeFileAtomically(path, bytes, false);
 }
 
 }  // namespace num::io

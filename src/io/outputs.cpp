@@ -137,10 +137,7 @@ void Outputs<Dim>::writeProbes(const sph::Storage<Dim>& s, double t) {
                 row += buf;
             }
     row += "\n";
-    std::FILE* out = std::fopen(path("probes.csv").c_str(), "ab");
-    const bool ok = out && std::fwrite(row.data(), 1, row.size(), out) == row.size();
-    if (!out || std::fclose(out) != 0 || !ok)
-        throw AppError(ExitCode::OUTPUT, path("probes.csv") + ": write failed (disk full?)");
+    appendToFile(path("probes.csv"), row);
 }
 
 template <int Dim>

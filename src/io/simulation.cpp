@@ -7,9 +7,12 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
 
+#include "fingerprint.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/file.hpp"
@@ -26,6 +29,19 @@ using sph::Size;
 namespace {
 
 volatile std::sig_atomic_t gStop = 0;
+
+/// Ctrl-C, kill and a closed terminal stop the run after a final output and a checkpoint.
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+/// For tests: NUMERICS_TEST_SIGNAL="SIGNAL:STEP" raises SIGNAL after step STEP, so the handling
+/// of a signal is tested at a known point of the run, whatever the machine's load.
+std::pair<int, std::uint64_t> testSignal() {
+    const char* v = std::getenv("NUMERICS_TEST_SIGNAL");
+    int sig = 0;
+    unsigned long long step = 0;
+    if (!v || std::sscanf(v, "%d:%llu", &sig, &step) != 2) return {0, 0};
+    return {sig, step};
+}
 
 extern "C" void onSignal(int sig) {
     gStop = sig;
@@ -61,6 +77,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     SceneSetup<Dim> setup = makeSceneSetup(scene, threads);
     sph::Storage<Dim> initial = makeInitialStorage(scene, setup);
     const std::string dir = scene.output.directory;
+    const std::string fingerprint = runFingerprint(doc, setup, initial);
 
     RunState<Dim> state;
     sph::Storage<Dim> storage;
@@ -68,7 +85,13 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
         const std::string payload = readCheckpointFile(*opt.restart, Dim);
         ByteReader r(payload, *opt.restart);
         r.getString();  // the scene, read by the caller
+        checkFingerprint(r.getString(), fingerprint, *opt.restart);
         state.read(r);
+        if (state.emitterLayers.size() != scene.emitters.size())
+            throw AppError(ExitCode::CHECKPOINT, *opt.restart + ": the checkpoint has " +
+                                                     std::to_string(state.emitterLayers.size()) +
+                                                     " emitters, the scene " +
+                                                     std::to_string(scene.emitters.size()));
         storage = readStorage<Dim>(r, initial);
         if (state.time >= scene.endTime)
             throw AppError(ExitCode::USAGE,
@@ -111,23 +134,32 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     };
 
     gStop = 0;
-    std::signal(SIGINT, onSignal);
-    std::signal(SIGTERM, onSignal);
+    for (int sig : kStopSignals) std::signal(sig, onSignal);
+    const auto [raiseSignal, raiseStep] = testSignal();
     Progress progress(opt.quiet                  ? Progress::Mode::QUIET
                       : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
                                                  : Progress::Mode::PLAIN,
                       run.time(), scene.endTime);
     std::vector<std::pair<double, std::string>> checkpoints;
+    auto resumable = [&] {
+        RunState<Dim> r = state;
+        r.time = run.time(), r.steps = run.steps();
+        r.emitterLayers = emitters.layers(), r.emitted = emitters.emitted();
+        r.series = outputs.series().entries();
+        return r;
+    };
+    // A step cut short by an unaligned end time leaves the trajectory a longer run follows: a
+    // checkpoint then holds the state before that step, so a restart continues bitwise.
+    std::optional<std::pair<RunState<Dim>, sph::Storage<Dim>>> beforeEndStep;
     auto writeCheckpoint = [&](const std::string& name) {
-        state.time = run.time(), state.steps = run.steps();
-        state.emitterLayers = emitters.layers(), state.emitted = emitters.emitted();
-        state.series = outputs.series().entries();
+        const RunState<Dim> r = beforeEndStep ? beforeEndStep->first : resumable();
         ByteWriter w;
         w.putString(doc.dump());
-        state.write(w);
-        writeStorage(w, storage);
+        w.putString(fingerprint);
+        r.write(w);
+        writeStorage(w, beforeEndStep ? beforeEndStep->second : storage);
         writeCheckpointFile(outputs.path(name), Dim, w.bytes());
-        checkpoints.emplace_back(run.time(), name);
+        checkpoints.emplace_back(r.time, name);
     };
     auto output = [&] {
         outputs.write(storage, run.time(), state.outputIndex);
@@ -142,13 +174,19 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     try {
         while (!reached(run.time(), scene.endTime) && !gStop) {
             if (run.steps() > 0 && run.steps() % 25 == 0) reorderByCell(storage, solver);
-            const double stop = std::min(scene.endTime, nextOutputTime());
+            // An end time on an output time (to round-off) steps to that output time exactly,
+            // as a longer run does.
+            const double next = nextOutputTime();
+            const double stop = reached(scene.endTime, next) ? next : scene.endTime;
+            if (stop < next && run.time() + solver.timeStepLimits(storage).dt() > stop)
+                beforeEndStep.emplace(resumable(), storage);
             const double dt = run.step(stop);
             particleSteps += double(storage.size());
             checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion());
             state.removed += removeOutflow(storage, scene);
             emitters.emit(storage, run.time());
             progress.update(run.time(), dt, storage.size(), run.steps());
+            if (raiseSignal && run.steps() == raiseStep) std::raise(raiseSignal);
             if (reached(run.time(), nextOutputTime())) output(), lastOutput = run.time();
             if (opt.checkpointEvery > 0 &&
                 reached(run.time(), (state.checkpointCount + 1) * opt.checkpointEvery)) {
@@ -165,8 +203,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
         status = "unstable", message = e.what();
     }
     progress.finish(run.time(), run.lastDt(), storage.size(), run.steps());
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
+    for (int sig : kStopSignals) std::signal(sig, SIG_DFL);
 
     state.emitted = emitters.emitted();
     const double wall =

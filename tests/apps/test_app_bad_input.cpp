@@ -143,15 +143,18 @@ TEST(BadInput, UnwritableOutputDirectory) {
     expectMessage(r, kOutput, {"plain_file/out", "cannot create the output directory"});
 }
 
-TEST(BadInput, DiskFull) {
-    // /dev/full fails every write with ENOSPC: an output file that leads there behaves like a
-    // full disk.
+TEST(BadInput, DiskFullLeavesNoPartialFile) {
+    // Every output is written to <name>.tmp and renamed when complete. /dev/full fails every
+    // write with ENOSPC: a temporary file that leads there behaves like a full disk.
     ASSERT_TRUE(std::filesystem::exists("/dev/full"));
-    const std::string dir = freshDir("bad_full");
-    std::filesystem::create_directories(dir + "/out");
-    std::filesystem::create_symlink("/dev/full", dir + "/out/particles_0000.vtu");
-    const Result r = run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out out", dir);
-    expectMessage(r, kOutput, {"particles_0000.vtu", "No space left on device", "disk is full"});
+    for (const char* file : {"particles_0000.vtu", "particles_0000.png", "particles_0000.csv"}) {
+        const std::string dir = freshDir(std::string("bad_full_") + file);
+        std::filesystem::create_directories(dir + "/out");
+        std::filesystem::create_symlink("/dev/full", dir + "/out/" + file + ".tmp");
+        const Result r = run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out out", dir);
+        expectMessage(r, kOutput, {file, "No space left on device", "disk is full"});
+        EXPECT_FALSE(std::filesystem::exists(dir + "/out/" + file)) << file;
+    }
 }
 
 TEST(BadInput, ThreeDSceneGivenToTheTwoDApp) {

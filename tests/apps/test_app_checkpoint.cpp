@@ -2,6 +2,7 @@
 // (same threads and backend); Ctrl-C stops cleanly with a final output and a checkpoint.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -37,23 +38,55 @@ TEST_P(Restart, IsBitwiseIdenticalToTheUninterruptedRun) {
 
 INSTANTIATE_TEST_SUITE_P(Apps, Restart, ::testing::Values(2, 3));
 
-TEST(Interrupt, CtrlCWritesFinalOutputAndCheckpoint) {
-    const std::string dir = freshDir("interrupt");
-    // Runs for minutes unless interrupted: SIGINT once the second output exists (the time loop
-    // runs); `timeout` ends the test if the app ignored it. --foreground: without it, timeout
-    // passes the SIGINT on to the app and to its whole process group, so the app would get
-    // two, and a second Ctrl-C ends it at once, before the checkpoint (a race seen under load).
-    writeFile(
-        dir + "/interrupt.sh",
-        "timeout --foreground 120 '" + std::string(FLUID_SIM) + "' '" + scene("tiny_2d.json") +
-            "' --quiet --out out --end-time 1000 & pid=$!\n"
-            "for i in $(seq 600); do [ -e out/particles_0001.vtu ] && break; sleep 0.1; done\n"
-            "kill -INT $pid\nwait $pid\necho exit=$?\n");
-    const Result r = run("/bin/sh", "interrupt.sh", dir);
-    EXPECT_TRUE(contains(r.output, "exit=130")) << r.output;
+class RestartAt : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RestartAt, AnyStopTimeIsBitwiseTheUninterruptedRun) {
+    // Outputs every 0.01 s. 0.023 is between output times (the run's last step is cut short);
+    // 0.03 is an output time up to round-off (3 * 0.01 = 0.030000000000000002).
+    const std::string stop = GetParam();
+    const std::string dir = freshDir("restart_at_" + stop);
+    const std::string common = "--quiet --backend seq '" + scene("tiny_2d.json") + "' ";
+    const Result full = run(FLUID_SIM, common + "--end-time 0.05 --out full", dir);
+    ASSERT_EQ(full.code, 0) << full.output;
+    const Result first =
+        run(FLUID_SIM,
+            common + "--end-time " + stop + " --checkpoint-every " + stop + " --out part", dir);
+    ASSERT_EQ(first.code, 0) << first.output;
+    const Result resumed = run(FLUID_SIM,
+                               "--quiet --backend seq --end-time 0.05 --out part --restart "
+                               "part/checkpoint_0001.chk",
+                               dir);
+    ASSERT_EQ(resumed.code, 0) << resumed.output;
+    const std::string a = readFile(dir + "/full/particles_0005.vtu");
+    ASSERT_FALSE(a.empty());
+    EXPECT_TRUE(a == readFile(dir + "/part/particles_0005.vtu"))
+        << "the run restarted at " << stop << " differs from the uninterrupted run";
+    EXPECT_EQ(readFile(dir + "/full/probes.csv"), readFile(dir + "/part/probes.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Apps, RestartAt, ::testing::Values("0.023", "0.03"), [](const auto& info) {
+    std::string n = info.param;
+    n[1] = '_';
+    return "t" + n;
+});
+
+class Interrupt : public ::testing::TestWithParam<int> {};
+
+TEST_P(Interrupt, SignalWritesFinalOutputSummaryAndCheckpoint) {
+    // The app raises the signal itself after step 3 (NUMERICS_TEST_SIGNAL): the same handler as
+    // a signal from outside, at a known point whatever the machine's load.
+    const int sig = GetParam();
+    const std::string dir = freshDir("interrupt_" + std::to_string(sig));
+    const Result r =
+        run("/usr/bin/env",
+            "NUMERICS_TEST_SIGNAL=" + std::to_string(sig) + ":3 '" + std::string(FLUID_SIM) +
+                "' '" + scene("tiny_2d.json") + "' --quiet --out out --end-time 1000",
+            dir);
+    EXPECT_EQ(r.code, 130) << r.output;
     ASSERT_TRUE(std::filesystem::exists(dir + "/out/checkpoint_interrupted.chk")) << r.output;
     const auto s = nlohmann::json::parse(readFile(dir + "/out/summary.json"));
     EXPECT_EQ(s["status"], "interrupted");
+    EXPECT_EQ(s["steps"], 3);
     const double t = s["final_time"];
     EXPECT_GT(t, 0.0);
     // The last output is at the time the run stopped, and the checkpoint continues from there.
@@ -67,6 +100,21 @@ TEST(Interrupt, CtrlCWritesFinalOutputAndCheckpoint) {
                 std::to_string(t + 0.005),
             dir);
     EXPECT_EQ(resumed.code, 0) << resumed.output;
+}
+
+// Ctrl-C, kill (SIGTERM) and a closed terminal (SIGHUP).
+INSTANTIATE_TEST_SUITE_P(Apps, Interrupt, ::testing::Values(SIGINT, SIGTERM, SIGHUP));
+
+TEST(ClosedStdout, CostsNoResult) {
+    // `fluid_sim scene | true`: stdout is closed from the start; the run completes anyway.
+    const std::string dir = freshDir("closed_stdout");
+    const Result r = run("/bin/sh",
+                         "-c \"{ '" + std::string(FLUID_SIM) + "' '" + scene("tiny_2d.json") +
+                             "' --out out; echo \\$? > code; } | true\"",
+                         dir);
+    EXPECT_EQ(readFile(dir + "/code"), "0\n") << r.output;
+    const auto s = nlohmann::json::parse(readFile(dir + "/out/summary.json"));
+    EXPECT_EQ(s["status"], "completed");
 }
 
 TEST(Unstable, StopsWithTimeStepAndCause) {

@@ -1,0 +1,119 @@
+// The fingerprint of a run (internal to numerics_io): everything that shapes its particle set and
+// its equations, as "key = value" lines. A checkpoint stores it; a restart whose fingerprint
+// differs is refused, naming what differs. What may change on restart is left out: the end time,
+// the output settings, the threads and the backend.
+#pragma once
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <variant>
+
+#include "io/errors.hpp"
+#include "io/scene_loader.hpp"
+#include "io/scene_setup.hpp"
+
+namespace num::io {
+
+namespace detail {
+
+inline bool mayChangeOnRestart(const std::string& path) {
+    for (const char* p : {"time.end", "output", "name", "description"})
+        if (path == p || path.rfind(std::string(p) + ".", 0) == 0) return true;
+    return false;
+}
+
+/// One line per leaf value of the scene: "fluids[0].temperature = 20".
+inline void flattenScene(const nlohmann::json& v, const std::string& path,
+                         std::map<std::string, std::string>& out) {
+    if (mayChangeOnRestart(path) || ((v.is_object() || v.is_array()) && v.empty())) return;
+    if (v.is_object()) {
+        for (const auto& [key, value] : v.items())
+            flattenScene(value, path.empty() ? key : path + "." + key, out);
+    } else if (v.is_array()) {
+        for (std::size_t i = 0; i < v.size(); ++i)
+            flattenScene(v[i], path + "[" + std::to_string(i) + "]", out);
+    } else {
+        out[path] = v.dump();
+    }
+}
+
+inline std::map<std::string, std::string> parseFingerprint(const std::string& text) {
+    std::map<std::string, std::string> lines;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+        const auto eq = line.find(" = ");
+        if (eq != std::string::npos) lines[line.substr(0, eq)] = line.substr(eq + 3);
+    }
+    return lines;
+}
+
+}  // namespace detail
+
+template <int Dim>
+std::string runFingerprint(const SceneDocument& doc, const SceneSetup<Dim>& setup,
+                           const sph::Storage<Dim>& initial) {
+    std::map<std::string, std::string> lines;
+    detail::flattenScene(doc.json(), "", lines);
+    for (const auto& [key, spec] : setup.settings.specs()) {
+        if (key == "threads") continue;
+        // Every setting is one of bool, integer, number, string: print whichever it holds.
+        std::string value;
+        std::visit(
+            [&](const auto& d) {
+                using T = std::decay_t<decltype(d)>;
+                std::ostringstream s;
+                s.precision(17);
+                s << setup.settings.template get<T>(key);
+                value = s.str();
+            },
+            spec.defaultValue);
+        lines["engine setting " + key] = value;
+    }
+    std::ostringstream c0;
+    c0.precision(17);
+    c0 << setup.model.c0();
+    lines["engine sound speed"] = c0.str();
+    lines["engine initial particles"] = std::to_string(initial.size());
+    std::string quantities;
+    initial.forEach([&](sph::QuantityId id, const sph::Quantity<Dim>& q) {
+        quantities += std::to_string(int(id)) + ":" + std::to_string(int(q.order())) + " ";
+    });
+    lines["engine quantities (id:order)"] = quantities;
+    std::string text;
+    for (const auto& [key, value] : lines) text += key + " = " + value + "\n";
+    return text;
+}
+
+/// Refuses (AppError CHECKPOINT) a restart whose fingerprint differs from the checkpoint's.
+inline void checkFingerprint(const std::string& stored, const std::string& current,
+                             const std::string& checkpoint) {
+    const auto a = detail::parseFingerprint(stored), b = detail::parseFingerprint(current);
+    std::string diff;
+    int count = 0;
+    auto report = [&](const std::string& key, const std::string& here, const std::string& there) {
+        if (++count <= 3)
+            diff += std::string(diff.empty() ? "" : "; ") + key + " is " + here + " here, " +
+                    there + " in the checkpoint";
+    };
+    for (const auto& [key, value] : b) {
+        const auto it = a.find(key);
+        if (it == a.end())
+            report(key, value, "absent");
+        else if (it->second != value)
+            report(key, value, it->second);
+    }
+    for (const auto& [key, value] : a)
+        if (!b.count(key)) report(key, "absent", value);
+    if (count == 0) return;
+    if (count > 3) diff += "; and " + std::to_string(count - 3) + " more";
+    throw AppError(ExitCode::CHECKPOINT,
+                   checkpoint +
+                       ": the checkpoint was written for another scene or set-up: " + diff +
+                       " (a restart may change only time.end, output.*, --end-time, --out, "
+                       "--threads and --backend)");
+}
+
+}  // namespace num::io

@@ -1,14 +1,14 @@
 #!/usr/bin/python3
-"""Writes the validation report from the results of the validation tests.
+"""Writes docs/validation.md from the results of validation/cases.py (app runs only).
 
     report.py RESULTS_DIR REPORT.md PLOT_DIR
 
-RESULTS_DIR holds, per case, <case>.json ({"case", "resolution", "error", "tolerance",
-"passed", "notes"}) and <case>_profile.csv (coordinate, numeric, analytic[, time]). The report
-is a table of every case and one plot per case of the numeric result against the analytic one
-(PNG, in PLOT_DIR, linked from the report).
+RESULTS_DIR holds CASE@SPACING.json, one per app run (validation/run.sh). Per case the report
+gives the checks at documentation resolution (measured error, the issue's gate, pass or MISSED),
+the convergence table over the study's spacings, a plot (PLOT_DIR/CASE.png: the app's result
+against the reference, and the errors against the spacing) and the command that reproduces it.
 """
-import csv
+import glob
 import json
 import os
 import sys
@@ -17,123 +17,124 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
-# What each case checks, for the report (cases not listed get their notes only).
-DESCRIPTIONS = {
-    "heat_slabs_equal": "Two slabs, equal materials: erf profile (validation.md 5), temperature vs x at t = 0.01.",
-    "heat_slabs_k2": "Two slabs, k_R = 2 k_L: interface at T_c = 0.414214 and erf profiles (validation.md 5).",
-    "heat_slabs_equal_wendland": "Two slabs, equal materials, Wendland C2 kernel at h = 2 dx.",
-    "heat_pulse_2d": "Gaussian pulse in 2D, periodic box; line of particles through the centre.",
-    "heat_pulse_3d": "Gaussian pulse in 3D, periodic box; line of particles through the centre.",
-    "heat_conservation": "Total heat sum m c T with adiabatic walls, two materials (x = 0: symmetric, 1: asymmetric evaluation; y: relative drift).",
-    "heat_fixed_body": "Disc held at 90 degC in water at 20 degC: water temperature vs distance; error = energy-balance mismatch.",
-    "heat_buoyancy_blob": "Warm blob in cold water: mean vertical velocity vs time against the Boussinesq estimate beta dT g (1 + phi) / 2.",
-}
-
-LABELS = {
-    "heat_buoyancy_blob": ("time [s]", "blob velocity [m/s]"),
-    "heat_conservation": ("evaluation mode", "relative heat drift"),
-    "heat_fixed_body": ("distance from the centre", "temperature [degC]"),
-    "heat_pulse_2d": ("x", "T"),
-    "heat_slabs_equal": ("x", "T"),
-    "heat_slabs_k2": ("x", "T"),
-    "heat_slabs_equal_wendland": ("x", "T"),
-    "heat_pulse_3d": ("x", "T"),
-}
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cases  # noqa: E402
 
 
-def read_profile(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        return None
-    cols = {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
-    return cols
+def load(results_dir):
+    by_case = {}
+    for path in glob.glob(os.path.join(results_dir, "*.json")):
+        with open(path) as f:
+            r = json.load(f)
+        by_case.setdefault(r["case"], []).append(r)
+    for rs in by_case.values():
+        rs.sort(key=lambda r: -r["spacing"])
+    return by_case
 
 
-def plot_case(name, profile, plot_dir):
-    fig, ax = plt.subplots(figsize=(6, 4))
-    x, num, ana = profile["coordinate"], profile["numeric"], profile["analytic"]
-    times = profile.get("time")
-    order = np.argsort(x, kind="stable")
-    if times is not None and len(np.unique(times)) > 1 and name != "heat_buoyancy_blob":
-        for n, t in enumerate(np.unique(times)):
-            sel = times == t
-            o = np.argsort(x[sel])
-            color = f"C{n % 10}"
-            ax.plot(x[sel][o], ana[sel][o], "-", lw=1, color=color, label=f"analytic t = {t:g}")
-            ax.plot(x[sel][o], num[sel][o], "o", ms=3, color=color, label=f"numeric t = {t:g}")
-    else:
-        ax.plot(x[order], ana[order], "-", lw=1.5, label="analytic / reference")
-        ax.plot(x[order], num[order], "o", ms=3, label="numeric")
-    xl, yl = LABELS.get(name, ("coordinate", "value"))
-    ax.set_xlabel(xl)
-    ax.set_ylabel(yl)
-    ax.set_title(name)
-    ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8)
+def close(a, b):
+    return abs(a - b) <= 1e-9 * max(abs(a), abs(b))
+
+
+def plot(name, doc, runs, plot_dir):
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4))
+    prof = doc["profile"]
+    for s in prof["series"]:
+        if s["style"] == "points":
+            ax.plot(s["x"], s["y"], ".", ms=3 if len(s["x"]) > 100 else 7, label=s["label"])
+        else:
+            ax.plot(s["x"], s["y"], "-", label=s["label"])
+    ax.set_xlabel(prof["xlabel"])
+    ax.set_ylabel(prof["ylabel"])
+    ax.set_title(f"{name}, spacing {doc['spacing']:.4g}")
+    ax.legend(fontsize=7)
+    ok = [r for r in runs if "failed" not in r]
+    for i, ch in enumerate(doc["checks"]):
+        xs = [r["spacing"] for r in ok]
+        ys = [r["checks"][i]["value"] for r in ok]
+        line, = bx.loglog(xs, ys, "o-", label=ch["metric"][:60])
+        bx.axhline(ch["gate"], color=line.get_color(), ls="--", lw=0.8)
+    bx.set_xlabel("particle spacing [m]")
+    bx.set_ylabel("error (dashed: the issue's gate)")
+    bx.set_title("convergence")
+    bx.legend(fontsize=6)
     fig.tight_layout()
-    path = os.path.join(plot_dir, name + ".png")
-    fig.savefig(path, dpi=100)
+    path = os.path.join(plot_dir, f"{name}.png")
+    fig.savefig(path, dpi=90)
     plt.close(fig)
     return path
 
 
 def main():
-    if len(sys.argv) != 4:
-        sys.exit(__doc__)
-    results, report, plot_dir = sys.argv[1:]
+    results_dir, report, plot_dir = sys.argv[1:4]
     os.makedirs(plot_dir, exist_ok=True)
-    cases = []
-    for fname in sorted(os.listdir(results)):
-        if not fname.endswith(".json"):
+    by_case = load(results_dir)
+    rel_plot = os.path.relpath(plot_dir, os.path.dirname(os.path.abspath(report)))
+    rows, sections, builds = [], [], set()
+    passed = missed = absent = 0
+    for name, c in cases.CASES.items():
+        runs = by_case.get(name, [])
+        doc = next((r for r in runs if close(r["spacing"], c["doc"])), None)
+        for r in runs:
+            builds.add(r.get("app_build", "unknown"))
+        if doc is None or "failed" in doc:
+            absent += 1
+            why = doc["failed"] if doc else "not run"
+            rows.append(f"| [{name}](#{name}) | {c['doc']:.4g} | – | – | **no result**: {why} |")
+            sections.append(f"## {name}\n\nNo result at documentation resolution (spacing {c['doc']:.4g}): {why}\n")
             continue
-        with open(os.path.join(results, fname)) as f:
-            c = json.load(f)
-        prof = os.path.join(results, c["case"] + "_profile.csv")
-        c["plot"] = None
-        if os.path.exists(prof):
-            p = read_profile(prof)
-            if p is not None:
-                c["plot"] = plot_case(c["case"], p, plot_dir)
-        cases.append(c)
+        ok = doc["passed"]
+        passed += ok
+        missed += not ok
+        main_ch = max(doc["checks"], key=lambda ch: ch["value"] / ch["gate"])
+        rows.append(f"| [{name}](#{name}) | {doc['spacing']:.4g} ({doc['fluid_particles']} particles) | "
+                    f"{main_ch['value']:.3g} | {main_ch['gate']:g} | {'pass' if ok else '**MISSED**'} |")
+        png = plot(name, doc, runs, plot_dir)
+        out = [f"## {name}\n", f"Scene `{doc['scene']}`, run as `{doc['command']}` "
+               f"({doc['fluid_particles']} fluid particles, {doc['steps']} steps, {doc['wall_seconds']:.0f} s with "
+               f"{doc['threads']} threads; app build {doc['app_build']}).\n",
+               "| check at documentation resolution | measured | gate (issue 9) | result |", "| --- | --- | --- | --- |"]
+        for ch in doc["checks"]:
+            out.append(f"| {ch['metric']} | {ch['value']:.4g} | {ch['gate']:g} | {'pass' if ch['passed'] else '**MISSED**'} |")
+        out.append(f"\n{doc['notes']}\n")
+        out.append("Convergence (the same scene with `--set particles.spacing=DX`):\n")
+        out.append("| spacing | fluid particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |")
+        out.append("| --- | --- | " + " | ".join("---" for _ in doc["checks"]) + " | --- |")
+        for r in runs:
+            if "failed" in r:
+                out.append(f"| {r['spacing']:.4g} | run failed: {r['failed']} |")
+                continue
+            out.append(f"| {r['spacing']:.4g} | {r['fluid_particles']} | " +
+                       " | ".join(f"{ch['value']:.4g}" for ch in r["checks"]) + f" | {r['wall_seconds']:.0f} |")
+        ci = c["ci"]
+        bounds = ci[1] or [None] * len(doc["checks"])
+        out.append("\nCI (`ctest -L validation`): spacing " + f"{ci[0]:.4g}, asserting " + "; ".join(
+            f"check {i + 1} <= {ch['gate']:g} (the gate)" if b is None else f"check {i + 1} <= {b:g} (regression bound, not the issue's gate)"
+            for i, (ch, b) in enumerate(zip(doc["checks"], bounds))) + ".\n")
+        out.append(f"Reproduce: `/usr/bin/python3 validation/cases.py run {name} --spacing {doc['spacing']:.10g} --bin build/release/apps`\n")
+        out.append(f"![{name}]({rel_plot}/{os.path.basename(png)})\n")
+        sections.append("\n".join(out))
+    head = f"""# Validation report
 
-    rel = os.path.relpath(plot_dir, os.path.dirname(os.path.abspath(report)) or ".")
-    lines = [
-        "# Validation report",
-        "",
-        "Every case of the ctest label `validation`, run at documentation resolution by",
-        "`validation/run.sh` (`NUMERICS_VALIDATION_FULL=1`). Analytic solutions and gates come",
-        "from [reference_solutions.md](reference_solutions.md); each test states where its tolerance comes from. Errors",
-        "are relative to the scale named in the notes (temperature jump, u_max, V0...).",
-        "",
-        f"{sum(c['passed'] for c in cases)} of {len(cases)} cases pass.",
-        "",
-        "| case | resolution | error | tolerance | passed |",
-        "| --- | --- | --- | --- | --- |",
-    ]
-    for c in cases:
-        lines.append(
-            f"| [{c['case']}](#{c['case']}) | {c['resolution']} | {c['error']:.3g} | "
-            f"{c['tolerance']:.3g} | {'yes' if c['passed'] else '**no**'} |"
-        )
-    lines.append("")
-    for c in cases:
-        lines += [f"## {c['case']}", ""]
-        if c["case"] in DESCRIPTIONS:
-            lines += [DESCRIPTIONS[c["case"]], ""]
-        lines += [
-            f"Resolution {c['resolution']}; error {c['error']:.4g} "
-            f"(tolerance {c['tolerance']:.3g}): {'passed' if c['passed'] else 'FAILED'}.",
-            "",
-        ]
-        if c.get("notes"):
-            lines += [c["notes"], ""]
-        if c["plot"]:
-            lines += [f"![{c['case']}]({rel}/{os.path.basename(c['plot'])})", ""]
+Every case is a scene of `scenes/validation/` run by `fluid_sim` or `fluid_sim_3d` exactly as a
+user runs it (the scene, the app, the app's default numerics; only the spacing is changed, with
+`--set particles.spacing=DX`), and compared with its reference from the app's own outputs (the
+particle CSV, `probes.csv`, `summary.json`) by `validation/cases.py`. Generated by
+`validation/run.sh`; nothing here comes from the C++ API tests. Gates are those of issue 9
+(analytic solutions and reference data: [reference_solutions.md](reference_solutions.md),
+`validation/data/`); a gate is never loosened: a case that misses it says **MISSED** with the
+number.
+
+App builds of these runs: {", ".join(sorted(builds)) or "none"}.
+
+{passed} of {len(cases.CASES)} cases meet the issue's gates at documentation resolution, {missed} miss them{f", {absent} have no result" if absent else ""}.
+
+| case | documentation spacing | measured (the check furthest from its gate) | its gate | result |
+| --- | --- | --- | --- | --- |
+"""
     with open(report, "w") as f:
-        f.write("\n".join(lines))
+        f.write(head + "\n".join(rows) + "\n\n" + "\n".join(sections))
 
 
 if __name__ == "__main__":

@@ -1,36 +1,43 @@
 #!/usr/bin/env bash
-# Runs every validation case at documentation resolution and writes docs/validation.md with
-# its plots (docs/validation/*.png).
+# Runs every validation case through the apps at documentation resolution together with its
+# convergence study, and rewrites docs/validation.md with its plots (docs/validation/*.png).
 #   validation/run.sh [build-dir]      (default build/release)
-# Builds the Release configuration if needed, runs the ctest label `validation` with
-# NUMERICS_VALIDATION_FULL=1, collects each case's <case>.json and <case>_profile.csv, and
-# calls validation/report.py (Debian's python3-matplotlib and python3-numpy, installed with
-# apt-get when missing).
+# Each run is `validation/cases.py run CASE --spacing DX` (the scene of scenes/validation/, the
+# app, its defaults); its result is kept as docs/validation/results/CASE@DX.json, from which
+# validation/report.py writes the report. Environment:
+#   NUMERICS_VALIDATION_CASES="a b"   only these cases (the others keep their stored results)
+#   NUMERICS_VALIDATION_KEEP=1        skip runs whose result is already stored
+#   NUMERICS_THREADS=N                threads of each app run (default 2); one run at a time
+# Needs Debian's python3-numpy and python3-matplotlib (scripts/setup.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build/release}"
-jobs="${NUMERICS_JOBS:-2}"
+threads="${NUMERICS_THREADS:-2}"
+py=/usr/bin/python3
 
-if ! /usr/bin/python3 -c "import matplotlib, numpy" 2>/dev/null; then
-  echo "Installing python3-matplotlib and python3-numpy"
-  sudo_cmd=()
-  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends python3-matplotlib python3-numpy >/dev/null
+if ! "$py" -c "import matplotlib, numpy" 2>/dev/null; then
+  echo "error: $py needs numpy and matplotlib: run scripts/setup.sh (python3-numpy, python3-matplotlib)" >&2
+  exit 1
 fi
-
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
-cmake --build "$build" -j "$jobs"
+cmake --build "$build" --target fluid_sim fluid_sim_3d -j "${NUMERICS_JOBS:-2}"
 
-out="$(mktemp -d)"
-trap 'rm -rf "$out"' EXIT
+results=docs/validation/results
+mkdir -p "$results"
+cases="${NUMERICS_VALIDATION_CASES:-$("$py" validation/cases.py list | cut -d' ' -f1)}"
 status=0
-NUMERICS_VALIDATION_FULL=1 NUMERICS_VALIDATION_OUT="$out" \
-  ctest --test-dir "$build" -L validation -j "$jobs" --output-on-failure || status=$?
+for c in $cases; do
+  for dx in $("$py" validation/cases.py spacings "$c"); do
+    out="$results/$c@$dx.json"
+    if [ "${NUMERICS_VALIDATION_KEEP:-0}" = 1 ] && [ -f "$out" ]; then continue; fi
+    echo "== $c, spacing $dx"
+    "$py" validation/cases.py run "$c" --spacing "$dx" --bin "$build/apps" --threads "$threads" \
+      --json "$out.tmp" && mv "$out.tmp" "$out" || { status=1; rm -f "$out.tmp"; }
+  done
+done
 
-/usr/bin/python3 validation/report.py "$out" docs/validation.md docs/validation
-echo "wrote docs/validation.md ($(ls "$out"/*.json 2>/dev/null | wc -l) cases)"
+"$py" validation/report.py "$results" docs/validation.md docs/validation
+echo "wrote docs/validation.md"
 exit $status

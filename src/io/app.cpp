@@ -1,11 +1,13 @@
 #include "io/app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 
 #include "io/errors.hpp"
+#include "io/expression.hpp"
 #include "io/simulation.hpp"
 #include "sph/settings.hpp"
 
@@ -75,8 +77,17 @@ int runApp(int argc, char** argv, const AppInfo& info) {
                    "seq (one thread), omp (OpenMP) or threads (default: a pool of threads that\n"
                    "sleep when idle, faster than omp on a machine busy with other work)")
         ->check(CLI::IsMember({"seq", "omp", "threads"}));
+    // Finite and positive: CLI::PositiveNumber lets "nan" through.
+    const CLI::Validator finitePositive(
+        [](std::string& text) {
+            double v = 0;
+            return CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v > 0
+                       ? std::string()
+                       : "a finite number > 0 is required, found " + text;
+        },
+        "POSITIVE");
     app.add_option("--end-time", endTime, "end time [s] (default: the scene's time.end)")
-        ->check(CLI::PositiveNumber);
+        ->check(finitePositive);
     app.add_option("--set", sets,
                    "override a scene value by its dotted path, e.g.\n"
                    "--set particles.spacing=0.01 --set fluids.0.temperature=30 "
@@ -84,7 +95,7 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     app.add_option("--restart", restart, "continue from a checkpoint file");
     app.add_option("--checkpoint-every", opt.checkpointEvery,
                    "write a checkpoint every T simulated seconds")
-        ->check(CLI::PositiveNumber);
+        ->check(finitePositive);
     app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors");
     app.add_flag("--print-scene", printScene, "print the scene (after --set) as JSON and exit");
     app.set_version_flag("--version", info.name + " (numerics) 0.1.0");
@@ -125,6 +136,9 @@ int runApp(int argc, char** argv, const AppInfo& info) {
         std::fflush(stdout);
         std::fprintf(stderr, "%s: error: %s\n", info.name.c_str(), e.what());
         return int(e.code());
+    } catch (const ExpressionError& e) {
+        std::fprintf(stderr, "%s: error: expression: %s\n", info.name.c_str(), e.what());
+        return int(ExitCode::EXPRESSION);
     } catch (const sph::SettingsError& e) {
         std::fprintf(stderr, "%s: error: scene setting: %s\n", info.name.c_str(), e.what());
         return int(ExitCode::SCENE);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace num::io::detail {
@@ -18,8 +19,17 @@ std::string describe(const json& v) {
             return "null";
         case json::value_t::boolean:
             return v.get<bool>() ? "true" : "false";
-        case json::value_t::string:
-            return "the string \"" + v.get<std::string>() + "\"";
+        case json::value_t::string: {
+            // One line, whatever the string holds: control characters escaped, long text cut.
+            std::string text;
+            for (unsigned char c : v.get<std::string>()) {
+                if (text.size() > 80) return "the string \"" + text + "...\"";
+                char esc[8];
+                std::snprintf(esc, sizeof esc, "\\u%04x", c);
+                text += c == '\n' ? "\\n" : c < 0x20 || c == 0x7f ? esc : std::string(1, char(c));
+            }
+            return "the string \"" + text + "\"";
+        }
         case json::value_t::array:
             return "an array of " + std::to_string(v.size()) + " values";
         case json::value_t::object:

@@ -74,14 +74,22 @@ template <int Dim>
 void Outputs<Dim>::start() {
     makeOutputDirectory(dir_);
     if (scene_.probes.empty()) return;
+    // Quoted where needed (RFC 4180), although probe names are plain words.
+    auto field = [](const std::string& name) {
+        if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
+        std::string q = "\"";
+        for (char c : name) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+        return q + "\"";
+    };
     std::string header = "time";
     const char* axes = "xyz";
     for (const auto& p : scene_.probes)
         for (const auto& f : p.fields) {
             if (f == "velocity")
-                for (int k = 0; k < Dim; ++k) header += "," + p.name + ".v" + axes[k];
+                for (int k = 0; k < Dim; ++k)
+                    header += "," + field(p.name + ".v" + std::string(1, axes[k]));
             else
-                header += "," + p.name + "." + f;
+                header += "," + field(p.name + "." + f);
         }
     writeFileAtomically(path("probes.csv"), header + "\n");
 }

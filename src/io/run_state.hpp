@@ -10,6 +10,7 @@
 
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
+#include "io/fields.hpp"
 #include "io/outputs.hpp"
 #include "sph/solver.hpp"
 
@@ -65,16 +66,33 @@ void reorderByCell(sph::Storage<Dim>& s, const sph::Solver<Dim>& solver) {
     s.reorder(std::vector<sph::Size>(grid.sortedOrder().begin(), grid.sortedOrder().end()));
 }
 
-/// Stops the run (AppError UNSTABLE) on non-finite values, fluid beyond a wall, or a collapsed
-/// time step, naming the time, the step and the likely cause.
+/// The first particle whose field is not finite, or -1: position and every written field
+/// (velocity, density, pressure, temperature and user quantities).
+template <int Dim>
+long firstNonFinite(const sph::Storage<Dim>& s, const OutputField& f) {
+    using Type = OutputField::Type;
+    if (f.type == Type::INT) return -1;
+    if (f.type == Type::FLOAT) {
+        const auto a = s.template getValue<double>(f.id);
+        for (sph::Size i = 0; i < a.size(); ++i)
+            if (!std::isfinite(a[i])) return long(i);
+        return -1;
+    }
+    const auto a = f.derivative ? s.template getDt<sph::Vector<Dim>>(f.id)
+                                : s.template getValue<sph::Vector<Dim>>(f.id);
+    for (sph::Size i = 0; i < a.size(); ++i)
+        for (int k = 0; k < Dim; ++k)
+            if (!std::isfinite(a[i][k])) return long(i);
+    return -1;
+}
+
+/// Stops the run (AppError UNSTABLE) on a non-finite value in any written field, a density that
+/// is not positive, fluid beyond a wall, or a collapsed time step, naming the time, the step,
+/// the field and the likely cause.
 template <int Dim>
 void checkHealth(const sph::Storage<Dim>& s, const Scene<Dim>& scene, double t, std::uint64_t step,
-                 double dt, const std::string& criterion) {
+                 double dt, const std::string& criterion, const FieldNames& names = {}) {
     using sph::QuantityId;
-    const auto x = s.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
-    const auto v = s.template getDt<sph::Vector<Dim>>(QuantityId::POSITION);
-    const auto rho = s.template getValue<double>(QuantityId::DENSITY);
-    const auto kind = s.template getValue<int>(QuantityId::KIND);
     char where[160];
     std::snprintf(where, sizeof where,
                   "the run went unstable at t = %.6g s (step %llu, dt = %.3g s limited by %s): ", t,
@@ -82,14 +100,24 @@ void checkHealth(const sph::Storage<Dim>& s, const Scene<Dim>& scene, double t, 
     const std::string cause =
         ". Likely cause: the time step is too large or the sound speed too low for this flow; "
         "lower time.cfl, raise the material's sound_speed, or refine particles.spacing";
-    for (sph::Size i = 0; i < s.size(); ++i) {
-        bool finite = std::isfinite(rho[i]) && rho[i] > 0;
-        for (int k = 0; k < Dim; ++k)
-            finite = finite && std::isfinite(x[i][k]) && std::isfinite(v[i][k]);
-        if (!finite)
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
+    auto particle = [&](long i) {
+        static const char* kinds[] = {"fluid particle", "wall particle", "body particle"};
+        return std::string(kind[i] >= 0 && kind[i] < 3 ? kinds[kind[i]] : "particle") + " " +
+               std::to_string(i);
+    };
+    std::vector<OutputField> fields = outputFields(s, names);
+    fields.insert(fields.begin(), {"position", QuantityId::POSITION, OutputField::Type::VECTOR});
+    for (const OutputField& f : fields)
+        if (const long i = firstNonFinite(s, f); i >= 0)
             throw AppError(ExitCode::UNSTABLE,
-                           where + std::string("particle ") + std::to_string(i) +
-                               " has a non-finite position, velocity or density" + cause);
+                           where + particle(i) + " has a non-finite " + f.name + cause);
+    const auto x = s.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto rho = s.template getValue<double>(QuantityId::DENSITY);
+    for (sph::Size i = 0; i < s.size(); ++i) {
+        if (!(rho[i] > 0))
+            throw AppError(ExitCode::UNSTABLE,
+                           where + particle(long(i)) + " has a density <= 0" + cause);
         if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
         for (int k = 0; k < Dim; ++k)
             for (int hi = 0; hi < 2; ++hi) {

@@ -1,4 +1,5 @@
 // Scene files as JSON documents: reading, syntax errors with line and column, overrides.
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -9,6 +10,34 @@
 #include "json_check.hpp"
 
 namespace num::io {
+
+namespace {
+
+/// Nesting bound of scene JSON: deeper documents are refused before they are built (printing or
+/// walking them recursively would overflow the stack).
+constexpr int kMaxDepth = 64;
+struct TooDeep {};
+
+nlohmann::json parseBounded(const std::string& text) {
+    return nlohmann::json::parse(
+        text,
+        [](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
+            if (depth > kMaxDepth && (event == nlohmann::json::parse_event_t::object_start ||
+                                      event == nlohmann::json::parse_event_t::array_start))
+                throw TooDeep{};
+            return true;
+        },
+        true, /*ignore_comments=*/true);
+}
+
+/// A JSON error other than a syntax error: in practice a number out of the range of a double.
+std::string jsonProblem(const nlohmann::json::exception& e) {
+    std::string what = e.what();
+    if (const auto p = what.find("] "); p != std::string::npos) what = what.substr(p + 2);
+    return what + " (numbers must lie within about 1e308 in magnitude)";
+}
+
+}  // namespace
 
 SceneDocument SceneDocument::fromFile(const std::string& path) {
     if (std::filesystem::is_directory(path))
@@ -31,7 +60,7 @@ SceneDocument SceneDocument::fromText(const std::string& text, const std::string
     SceneDocument doc;
     doc.file_ = file;
     try {
-        doc.json_ = nlohmann::json::parse(text, nullptr, true, /*ignore_comments=*/true);
+        doc.json_ = parseBounded(text);
     } catch (const nlohmann::json::parse_error& e) {
         // Line and column of the byte where parsing stopped (e.byte is 1-based).
         std::size_t line = 1, column = 1;
@@ -46,6 +75,12 @@ SceneDocument SceneDocument::fromText(const std::string& text, const std::string
         throw AppError(ExitCode::JSON_SYNTAX, file + ":" + std::to_string(line) + ":" +
                                                   std::to_string(column) +
                                                   ": malformed JSON: " + what);
+    } catch (const nlohmann::json::exception& e) {
+        throw AppError(ExitCode::JSON_SYNTAX, file + ": " + jsonProblem(e));
+    } catch (const TooDeep&) {
+        throw AppError(ExitCode::JSON_SYNTAX,
+                       file + ": JSON nested deeper than " + std::to_string(kMaxDepth) +
+                           " levels (a scene needs about 5)");
     }
     if (!doc.json_.is_object())
         throw sceneError(file, "", "a JSON object { ... }", detail::describe(doc.json_));
@@ -61,10 +96,18 @@ void SceneDocument::set(const std::string& assignment) {
     const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
     nlohmann::json value;
     try {
-        value = nlohmann::json::parse(text);
+        value = parseBounded(text);
     } catch (const nlohmann::json::parse_error&) {
         value = text;  // a bare word or an expression: a string
+    } catch (const nlohmann::json::exception& e) {
+        throw AppError(ExitCode::USAGE, "--set " + assignment + ": " + jsonProblem(e));
+    } catch (const TooDeep&) {
+        throw AppError(ExitCode::USAGE, "--set " + assignment + ": a value nested deeper than " +
+                                            std::to_string(kMaxDepth) + " levels");
     }
+    if (std::count(key.begin(), key.end(), '.') >= kMaxDepth)
+        throw AppError(ExitCode::USAGE, "--set " + assignment + ": a key of more than " +
+                                            std::to_string(kMaxDepth) + " levels");
     nlohmann::json* node = &json_;
     std::string path;
     std::stringstream parts(key);

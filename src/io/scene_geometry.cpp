@@ -1,4 +1,5 @@
 // Geometry checks of a scene: everything inside the domain, no fluid in a body, not empty.
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,6 +15,12 @@ std::string text(const SceneVec<Dim>& v) {
     s << "[";
     for (int k = 0; k < Dim; ++k) s << (k ? ", " : "") << v[k];
     s << "]";
+    return s.str();
+}
+
+std::string number(double x) {
+    std::ostringstream s;
+    s << x;
     return s.str();
 }
 
@@ -114,9 +121,14 @@ void checkSceneGeometry(const Scene<Dim>& s) {
         if (!inside(e.position, e.position))
             throw sceneError(file, "emitters[" + std::to_string(i) + "].position",
                              "a point inside " + domain, text<Dim>(e.position));
-        if (2 * e.radius < s.spacing)
+        double extent = 0;  // a nozzle no wider than the domain (bounds the set-up's work)
+        for (int k = 0; k < Dim; ++k) extent = std::max(extent, s.domainMax[k] - s.domainMin[k]);
+        if (2 * e.radius < s.spacing || 2 * e.radius > extent)
             throw sceneError(file, "emitters[" + std::to_string(i) + "].radius",
-                             "a radius of at least half the spacing", std::to_string(e.radius));
+                             "a radius of at least half the spacing (" + number(s.spacing / 2) +
+                                 " m) and at most half the domain's largest extent (" +
+                                 number(extent / 2) + " m)",
+                             number(e.radius) + " m");
     }
     for (std::size_t i = 0; i < s.probes.size(); ++i)
         if (!inside(s.probes[i].point, s.probes[i].point))

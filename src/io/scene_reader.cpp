@@ -1,5 +1,6 @@
 // readScene: every key of the scene format (docs/scenes.md) with its type, unit and range.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -98,7 +99,8 @@ void readSides(const At& a, Scene<Dim>& s) {
             throw sceneError(a.file, a.join(key), expected, "the old side name '" + key + "'",
                              "side names are " + sideList<Dim>() + "; did you mean " +
                                  sideName(axis, high) +
-                                 "? (the old left/right, bottom/top, back/front were x, y, z)");
+                                 "? The old left/right, bottom/top, back/front were the x, y, z "
+                                 "sides");
         const std::string guess = detail::closest(key, allowed);
         throw sceneError(a.file, a.join(key), expected, "'" + key + "'",
                          guess.empty() ? "" : "did you mean '" + guess + "'?");
@@ -361,8 +363,13 @@ Scene<Dim> readScene(const SceneDocument& doc) {
             e.object({"name", "point", "fields"}, {"name", "point"});
             Probe<Dim> pr;
             pr.name = e["name"].string();
-            if (pr.name.empty() || pr.name.find_first_of(".,\" ") != std::string::npos)
-                e["name"].fail("a non-empty name without '.', ',', '\"' or spaces");
+            // Column names of probes.csv: letters, digits, '_' and '-' only (no separator,
+            // quote, line break or control character can reach the file).
+            const bool plain = !pr.name.empty() && pr.name.size() <= 64 &&
+                               std::all_of(pr.name.begin(), pr.name.end(), [](char c) {
+                                   return std::isalnum((unsigned char)c) || c == '_' || c == '-';
+                               });
+            if (!plain) e["name"].fail("a name of 1 to 64 letters, digits, '_' or '-'");
             if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
             pr.point = readVec<Dim>(e["point"], "m");
             if (e.has("fields")) {

@@ -13,6 +13,8 @@
 #include <thread>
 
 #include "fingerprint.hpp"
+#include "initial_state.hpp"
+#include "run_limits.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/file.hpp"
@@ -74,8 +76,11 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     const int threads = opt.backend == "seq" ? 1
                         : opt.threads > 0    ? opt.threads
                                           : int(std::max(1u, std::thread::hardware_concurrency()));
+    checkGravity(scene);
     SceneSetup<Dim> setup = makeSceneSetup(scene, threads);
+    checkRunLimits(scene, setup, opt.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(scene, setup);
+    checkInitialState(scene, setup, initial);
     const std::string dir = scene.output.directory;
     const std::string fingerprint = runFingerprint(doc, setup, initial);
 
@@ -182,7 +187,8 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
                 beforeEndStep.emplace(resumable(), storage);
             const double dt = run.step(stop);
             particleSteps += double(storage.size());
-            checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion());
+            checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
+                        opt.fieldNames);
             state.removed += removeOutflow(storage, scene);
             emitters.emit(storage, run.time());
             progress.update(run.time(), dt, storage.size(), run.steps());

@@ -1,0 +1,107 @@
+// Limits checked before anything is allocated (internal to numerics_io), so that no scene makes
+// the apps write files without end, walk a lattice for hours or run out of memory: the number
+// of outputs and checkpoints, the lattice the set-up walks, and every particle the run will
+// hold (fluid, walls, bodies, emitted) against the memory of the machine.
+#pragma once
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "io/scene_setup.hpp"
+
+namespace num::io {
+
+inline constexpr double kMaxOutputs = 1e5;         ///< outputs (and checkpoints) per run
+inline constexpr double kMaxParticles = 2e7;       ///< particles of all kinds
+inline constexpr double kMaxLatticePoints = 2e8;   ///< lattice points the set-up visits
+inline constexpr double kBytesPerParticle = 1024;  ///< measured: about 1 KB per particle
+
+/// Memory available to the run [bytes]: MemAvailable of /proc/meminfo, else physical memory.
+inline double availableMemory() {
+    std::ifstream in("/proc/meminfo");
+    std::string key;
+    double kb = 0;
+    while (in >> key >> kb)
+        if (key == "MemAvailable:") return kb * 1024;
+    return double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGESIZE));
+}
+
+inline std::string count(double n) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, n < 1e6 ? "%.0f" : "%.3g", n);
+    return buf;
+}
+
+inline std::string number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", x);
+    return buf;
+}
+
+template <int Dim>
+void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, double checkpointEvery) {
+    const double outputs = scene.endTime / scene.output.every;
+    if (outputs > kMaxOutputs)
+        throw sceneError(
+            scene.file, "output.every",
+            "an interval giving at most " + count(kMaxOutputs) + " outputs over the run",
+            count(outputs) + " outputs (every " + std::to_string(scene.output.every) + " s until " +
+                std::to_string(scene.endTime) + " s)");
+    if (checkpointEvery > 0 && scene.endTime / checkpointEvery > kMaxOutputs)
+        throw AppError(ExitCode::USAGE, "--checkpoint-every: at most " + count(kMaxOutputs) +
+                                            " checkpoints per run, found " +
+                                            count(scene.endTime / checkpointEvery));
+    const double dx = scene.spacing, layers = setup.wallLayers;
+    double lattice = 1, inside = 1;
+    for (int k = 0; k < Dim; ++k) {
+        const double n = (scene.domainMax[k] - scene.domainMin[k]) / dx;
+        int walls = 0;
+        for (int hi = 0; hi < 2; ++hi) walls += scene.sides[k][hi].type == SideType::WALL;
+        lattice *= n + walls * layers, inside *= n;
+    }
+    double fluid = 0, bodies = 0, emitted = 0;
+    auto volume = [&](Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, double r) {
+        double v = 1;
+        if (shape == Shape::BOX)
+            for (int k = 0; k < Dim; ++k) v *= (mx[k] - mn[k]) / dx;
+        else
+            v = Dim == 2 ? M_PI * r * r / (dx * dx) : 4.0 / 3 * M_PI * std::pow(r / dx, 3);
+        return v;
+    };
+    for (const auto& f : scene.fluids) fluid += volume(f.shape, f.min, f.max, f.radius);
+    for (const auto& b : scene.bodies) bodies += volume(b.shape, b.min, b.max, b.radius);
+    for (const auto& e : scene.emitters) {
+        const double across = Dim == 2 ? 2 * e.radius / dx : M_PI * std::pow(e.radius / dx, 2);
+        const double seconds = std::max(0.0, std::min(e.end, scene.endTime) - e.start);
+        emitted += std::max(1.0, across) * (e.speed * seconds / dx + 1);
+    }
+    const double total = fluid + (lattice - inside) + bodies + emitted;
+    const std::string numbers = "about " + count(total) + " particles (fluid " + count(fluid) +
+                                ", walls " + count(lattice - inside) + ", bodies " + count(bodies) +
+                                ", emitted " + count(emitted) + ")";
+    const char* hint = "increase particles.spacing, or shrink the domain, the blocks or emitters";
+    if (lattice > kMaxLatticePoints)
+        throw sceneError(
+            scene.file, "particles.spacing",
+            "at most " + count(kMaxLatticePoints) + " lattice points over the domain and its walls",
+            count(lattice) + " (spacing " + number(dx) + " m)", hint);
+    if (total > kMaxParticles)
+        throw sceneError(scene.file, "particles.spacing",
+                         "a scene of at most " + count(kMaxParticles) + " particles", numbers,
+                         hint);
+    const double need = total * kBytesPerParticle, have = availableMemory();
+    if (need > 0.8 * have) {
+        char mem[128];
+        std::snprintf(mem, sizeof mem, ", which need about %.3g GB; %.3g GB are available",
+                      need / 1e9, have / 1e9);
+        throw sceneError(scene.file, "particles.spacing",
+                         "a scene that fits in memory (at most 80 % of what is available)",
+                         numbers + mem, hint);
+    }
+}
+
+}  // namespace num::io

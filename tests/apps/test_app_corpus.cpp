@@ -1,0 +1,232 @@
+// The malformed-scene and fault corpus: hostile scenes and command lines, each answered within
+// seconds by one line naming the key and the documented exit code (docs/scenes.md), never by
+// a crash, a hang, a run without end or a silent broken result.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "app_runner.hpp"
+
+using namespace apptest;
+using nlohmann::json;
+
+namespace {
+
+constexpr int kUsage = 2, kJson = 4, kScene = 5, kExpression = 6;
+
+struct Case {
+    std::string name;
+    int dim;
+    std::function<std::string(json&)> edit;  ///< changes the tiny scene; returns extra arguments
+    int code;
+    std::vector<std::string> parts;  ///< what the message must name
+};
+
+std::string none(json&) { return ""; }
+
+/// A scene text with `depth` nested arrays.
+std::string deeplyNested(int depth) {
+    return "{\"dimension\": 2, \"name\": " + std::string(depth, '[') + std::string(depth, ']') +
+           "}";
+}
+
+const std::vector<Case>& corpus() {
+    static const std::vector<Case> cases = {
+        // Expressions and numbers that give NaN or infinity.
+        {"nan_temperature",
+         2,
+         [](json& j) {
+             j["fluids"][0]["temperature"] = "sqrt(-1)";
+             return "";
+         },
+         kExpression,
+         {"fluids[0].temperature", "a finite temperature", "sqrt(-1)"}},
+        {"infinite_pressure",
+         2,
+         [](json& j) {
+             j["fluids"][0]["pressure"] = "1/0";
+             return "";
+         },
+         kExpression,
+         {"fluids[0].pressure", "a finite pressure", "1/0"}},
+        {"infinite_velocity",
+         3,
+         [](json& j) {
+             j["fluids"][0]["velocity"] = {"1/(x-x)", 0, 0};
+             return "";
+         },
+         kExpression,
+         {"fluids[0].velocity[0]", "finite"}},
+        {"nan_gravity",
+         2,
+         [](json& j) {
+             j["gravity"] = {0, "ln(t-1)"};
+             return "";
+         },
+         kExpression,
+         {"gravity[1]", "finite", "ln(t-1)"}},
+        {"number_beyond_double",
+         2,
+         [](json&) { return std::string("RAW:1e400"); },
+         kJson,
+         {"scene.json", "1e400"}},
+        {"set_number_beyond_double",
+         2,
+         [](json&) { return std::string("--set time.end=1e400"); },
+         kUsage,
+         {"--set time.end=1e400"}},
+        {"end_time_nan",
+         2,
+         [](json&) { return std::string("--end-time nan"); },
+         kUsage,
+         {"--end-time", "finite"}},
+        {"end_time_infinite",
+         2,
+         [](json&) { return std::string("--end-time inf"); },
+         kUsage,
+         {"--end-time", "finite"}},
+        {"checkpoint_every_nan",
+         2,
+         [](json&) { return std::string("--checkpoint-every nan"); },
+         kUsage,
+         {"--checkpoint-every"}},
+        // Temperatures below absolute zero.
+        {"temperature_below_absolute_zero",
+         2,
+         [](json& j) {
+             j["fluids"][0]["temperature"] = -300;
+             return "";
+         },
+         kScene,
+         {"fluids[0].temperature", "absolute zero", "-300"}},
+        {"temperature_expression_below_absolute_zero",
+         2,
+         [](json& j) {
+             j["fluids"][0]["temperature"] = "-200 - 1000*x";
+             return "";
+         },
+         kScene,
+         {"fluids[0].temperature", "absolute zero", "-200 - 1000*x"}},
+        // Nesting without end.
+        {"nested_100000_levels",
+         2,
+         [](json&) { return std::string("DEEP"); },
+         kJson,
+         {"nested deeper than 64 levels"}},
+        {"set_key_200_levels",
+         2,
+         [](json&) {
+             std::string key = "physics";
+             for (int k = 0; k < 200; ++k) key += ".a";
+             return "--set " + key + "=1";
+         },
+         kUsage,
+         {"levels"}},
+        // Runs without end and set-ups beyond the machine.
+        {"output_every_1e_minus_300",
+         2,
+         [](json& j) {
+             j["output"]["every"] = 1e-300;
+             return "";
+         },
+         kScene,
+         {"output.every", "at most 100000 outputs"}},
+        {"checkpoint_every_1e_minus_300",
+         2,
+         [](json&) { return std::string("--checkpoint-every 1e-300"); },
+         kUsage,
+         {"--checkpoint-every", "at most 100000 checkpoints"}},
+        {"domain_2000_m_at_1_mm",
+         2,
+         [](json& j) {
+             j["domain"]["max"] = {2000, 2000};
+             j["particles"]["spacing"] = 0.001;
+             return "";
+         },
+         kScene,
+         {"particles.spacing", "lattice points"}},
+        {"emitter_without_end",
+         2,
+         [](json& j) {
+             j["emitters"] = json::array({{{"position", {0.15, 0.15}},
+                                           {"direction", {0, -1}},
+                                           {"speed", 1e4},
+                                           {"radius", 0.05},
+                                           {"material", "water"}}});
+             j["time"]["end"] = 1e4;
+             j["output"]["every"] = 1.0;
+             return "";
+         },
+         kScene,
+         {"particles.spacing", "particles (fluid", "emitted"}},
+        {"emitter_radius_1e6_2d",
+         2,
+         [](json& j) {
+             j["emitters"] = json::array({{{"position", {0.15, 0.15}},
+                                           {"direction", {0, -1}},
+                                           {"speed", 1},
+                                           {"radius", 1e6},
+                                           {"material", "water"}}});
+             return "";
+         },
+         kScene,
+         {"emitters[0].radius", "at most half the domain's largest extent"}},
+        {"emitter_radius_1e6_3d",
+         3,
+         [](json& j) {
+             j["emitters"][0]["radius"] = 1e6;
+             return "";
+         },
+         kScene,
+         {"emitters[0].radius", "at most half the domain's largest extent"}},
+        // Probe names that would break probes.csv.
+        {"probe_name_with_newline",
+         2,
+         [](json& j) {
+             j["probes"][0]["name"] = "a\nb";
+             return "";
+         },
+         kScene,
+         {"probes[0].name", "letters, digits"}},
+        {"probe_name_with_quote",
+         2,
+         [](json& j) {
+             j["probes"][0]["name"] = "a\"b";
+             return "";
+         },
+         kScene,
+         {"probes[0].name"}},
+    };
+    return cases;
+}
+
+class Corpus : public ::testing::TestWithParam<Case> {};
+
+}  // namespace
+
+TEST_P(Corpus, OneLineAndTheDocumentedExitCode) {
+    const Case& c = GetParam();
+    json j = json::parse(readFile(scene(c.dim == 2 ? "tiny_2d.json" : "tiny_3d.json")));
+    std::string extra = c.edit(j);
+    std::string text = j.dump();
+    if (extra == "RAW:1e400") {
+        text.replace(text.find("\"end\":0.02"), 10, "\"end\":1e400");
+        extra.clear();
+    } else if (extra == "DEEP") {
+        text = deeplyNested(100000);
+        extra = "--print-scene";
+    }
+    const std::string dir = freshDir("corpus_" + c.name);
+    writeFile(dir + "/scene.json", text);
+    const Result r =
+        run(c.dim == 2 ? FLUID_SIM : FLUID_SIM_3D, "scene.json --quiet --out out " + extra, dir);
+    EXPECT_EQ(r.code, c.code) << r.output;
+    for (const std::string& p : c.parts)
+        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_FALSE(contains(r.output, "internal error")) << r.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(Apps, Corpus, ::testing::ValuesIn(corpus()),
+                         [](const auto& info) { return info.param.name; });

@@ -209,7 +209,6 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
         status = "unstable", message = e.what();
     }
     progress.finish(run.time(), run.lastDt(), storage.size(), run.steps());
-    for (int sig : kStopSignals) std::signal(sig, SIG_DFL);
 
     state.emitted = emitters.emitted();
     const double wall =
@@ -222,6 +221,8 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
         summary["checkpoints"].push_back({{"time", t}, {"file", f}});
     summary["video"] = video;
     writeFileAtomically(outputs.path("summary.json"), summary.dump(2) + "\n");
+    // Until here a first signal only sets the flag: the video and the summary are still made.
+    for (int sig : kStopSignals) std::signal(sig, SIG_DFL);
 
     if (status == "unstable")
         throw AppError(ExitCode::UNSTABLE, message + " (last good output kept in " + dir + ")");

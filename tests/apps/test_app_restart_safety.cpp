@@ -15,24 +15,20 @@ namespace {
 
 constexpr int kCheckpoint = 8;
 
-/// A directory with a checkpoint of tiny_2d at t = 0.01 (once per test binary).
-const std::string& checkpointDir() {
-    static const std::string dir = [] {
-        const std::string d = freshDir("restart_safety");
-        const Result r = run(FLUID_SIM,
-                             "'" + scene("tiny_2d.json") +
-                                 "' --quiet --out out --end-time 0.01 --checkpoint-every 0.01",
-                             d);
-        EXPECT_EQ(r.code, 0) << r.output;
-        return d;
-    }();
-    return dir;
-}
-
+/// Restarts, with `extra` options, from a checkpoint of tiny_2d at t = 0.01 made in a directory
+/// of the test's own (ctest runs tests in parallel: no two share a directory).
 Result restart(const std::string& extra) {
+    const std::string dir =
+        freshDir(std::string("restart_safety_") +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    const Result r = run(
+        FLUID_SIM,
+        "'" + scene("tiny_2d.json") + "' --quiet --out out --end-time 0.01 --checkpoint-every 0.01",
+        dir);
+    EXPECT_EQ(r.code, 0) << r.output;
     return run(FLUID_SIM,
                "--quiet --out again --restart out/checkpoint_0001.chk --end-time 0.015 " + extra,
-               checkpointDir());
+               dir);
 }
 
 void expectRefused(const Result& r, std::initializer_list<const char*> parts) {

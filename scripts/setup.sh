@@ -12,6 +12,7 @@ packages=(
   libmuparser-dev                # expressions in scene files
   libpng-dev                     # pictures (PNG)
   zlib1g-dev                     # compressed VTU output
+  ffmpeg                         # the movie of a run (<prefix>.mp4) from its pictures
   python3-numpy                  # validation: comparison of the apps' outputs (validation/cases.py)
   python3-matplotlib             # validation: plots of docs/validation.md (validation/run.sh)
 )

@@ -96,7 +96,8 @@ def main():
                f"{doc['threads']} threads; app build {doc['app_build']}).\n",
                "| check at documentation resolution | measured | gate (issue 9) | result |", "| --- | --- | --- | --- |"]
         for ch in doc["checks"]:
-            out.append(f"| {ch['metric']} | {ch['value']:.4g} | {ch['gate']:g} | {'pass' if ch['passed'] else '**MISSED**'} |")
+            metric = ch["metric"].replace("|", "\\|")
+            out.append(f"| {metric} | {ch['value']:.4g} | {ch['gate']:g} | {'pass' if ch['passed'] else '**MISSED**'} |")
         out.append(f"\n{doc['notes']}\n")
         out.append("Convergence (the same scene with `--set particles.spacing=DX`):\n")
         out.append("| spacing | fluid particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |")

@@ -11,6 +11,7 @@
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "spatial/vec.hpp"
+#include "sph/defaults.hpp"
 
 namespace num::io {
 
@@ -38,10 +39,12 @@ struct BoundarySide {
 
 struct MaterialSpec {
     std::string name;
-    double density = 1000, viscosity = 1e-6, artificialViscosity = 0.02;
+    double density = sph::defaults::density, viscosity = sph::defaults::viscosity;
+    double artificialViscosity = sph::defaults::artificialViscosity;
     std::optional<double> soundSpeed;  ///< empty: "auto"
-    double conductivity = 0.6, heatCapacity = 4186, thermalExpansion = 0;
-    double referenceTemperature = 20;
+    double conductivity = sph::defaults::conductivity;
+    double heatCapacity = sph::defaults::heatCapacity, thermalExpansion = 0;
+    double referenceTemperature = sph::defaults::referenceTemperature;
 };
 
 enum class Shape { BOX, CIRCLE, SPHERE };
@@ -90,12 +93,13 @@ struct OutputSpec {
 
 struct PhysicsSpec {
     bool heat = true, buoyancy = true;
-    std::string density = "continuity";  ///< continuity or summation
-    double densityDiffusion = 0.1;       ///< delta-SPH coefficient
-    bool shifting = true;
-    double gravityRamp = 0;         ///< seconds over which gravity rises from 0
-    std::string eos = "tait";       ///< tait or linear
-    double backgroundPressure = 0;  ///< [Pa]
+    std::string density = "continuity";                         ///< continuity or summation
+    double densityDiffusion = sph::defaults::densityDiffusion;  ///< delta-SPH's delta
+    bool shifting = sph::defaults::shifting;
+    bool freeSurfaceNoTension = sph::defaults::freeSurfaceNoTension;
+    double gravityRamp = 0;                ///< seconds over which gravity rises from 0
+    std::string eos = sph::defaults::eos;  ///< tait or linear
+    double backgroundPressure = 0;         ///< [Pa]
 };
 
 template <int Dim>
@@ -104,9 +108,9 @@ struct Scene {
     std::string name;
     SceneVec<Dim> domainMin{}, domainMax{};
     std::array<std::array<BoundarySide<Dim>, 2>, Dim> sides{};  ///< [axis][0 = low, 1 = high]
-    double spacing = 0.02, hOverSpacing = 1.3;
-    std::string kernel = "wendland_c2";
-    double endTime = 1, cfl = 0.25, dtMax = 0;
+    double spacing = 0.02, hOverSpacing = sph::defaults::hOverSpacing;
+    std::string kernel = sph::defaults::kernel;
+    double endTime = 1, cfl = sph::defaults::cfl, dtMax = 0;
     std::string integrator = "leapfrog";
     VectorField<Dim> gravity{};
     std::map<std::string, MaterialSpec> materials;

@@ -40,9 +40,9 @@
 //
 // Order of the terms (each term's initialize and finalize run in this order):
 //   neighbour refresh (for the passes below) -> summation density -> equation of state ->
-//   wall condition (Adami et al. 2012) -> continuity (+ delta-SPH) -> pressure gradient ->
-//   laminar viscosity -> artificial viscosity -> body force -> particle shifting ->
-//   model.extraTerms (e.g. heat) -> boundary hold (zeroes boundary accelerations) ->
+//   no tension at free surfaces -> wall condition (Adami et al. 2012) -> continuity (+ delta-SPH)
+//   -> pressure gradient -> laminar viscosity -> artificial viscosity -> body force -> particle
+//   shifting -> model.extraTerms (e.g. heat) -> boundary hold (zeroes boundary accelerations) ->
 //   containment (no particle inside a wall or body).
 #pragma once
 
@@ -54,6 +54,7 @@
 #include "sph/boundary/boundary_hold.hpp"
 #include "sph/boundary/generalized_wall.hpp"
 #include "sph/boundary/particle_containment.hpp"
+#include "sph/defaults.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/setup/fluid_geometry.hpp"
@@ -63,6 +64,7 @@
 #include "sph/terms/continuity_density.hpp"
 #include "sph/terms/delta_sph.hpp"
 #include "sph/terms/equation_of_state.hpp"
+#include "sph/terms/free_surface.hpp"
 #include "sph/terms/heat_model.hpp"
 #include "sph/terms/laminar_viscosity.hpp"
 #include "sph/terms/neighbour_gather.hpp"
@@ -97,26 +99,29 @@ struct FluidModel {
     using Vec = Vector<Dim>;
 
     // Equation of state.
-    Float restDensity = 1000;     ///< rho0 [kg/m^3]
-    Float soundSpeed = 0;         ///< c0 [m/s]; 0 derives c0 = soundSpeedFactor * maxVelocity
-    Float maxVelocity = 1;        ///< the largest expected flow speed U [m/s]
-    Float soundSpeedFactor = 10;  ///< c0 = 10 U keeps density variations near 1 %
+    Float restDensity = defaults::density;  ///< rho0 [kg/m^3]
+    Float soundSpeed = 0;   ///< c0 [m/s]; 0 derives c0 = soundSpeedFactor * maxVelocity
+    Float maxVelocity = 1;  ///< the largest expected flow speed U [m/s]
+    Float soundSpeedFactor = defaults::soundSpeedFactor;  ///< c0 = 10 U: density varies ~1 %
     EosType eos = EosType::TAIT;
-    Float taitExponent = 7;
+    Float taitExponent = defaults::taitExponent;
     Float backgroundPressure = 0;  ///< p_b [Pa], added to the equation of state
 
     // Density.
     DensityMode density = DensityMode::CONTINUITY;
-    Float deltaSph = 0.1;             ///< delta of the density diffusion (continuity only); 0: off
+    Float deltaSph = defaults::densityDiffusion;  ///< delta-SPH's delta (continuity); 0: off
     bool deltaSphHydrostatic = true;  ///< remove the hydrostatic part from the diffusion
 
     // Viscosity (both may be on).
-    Float viscosity = 0;            ///< kinematic nu of the laminar term [m^2/s]; 0: off
-    Float artificialViscosity = 0;  ///< Monaghan's alpha; 0: off
+    Float viscosity = 0;  ///< kinematic nu of the laminar term [m^2/s]; 0: off
+    Float artificialViscosity = defaults::artificialViscosity;  ///< Monaghan's alpha; 0: off
 
     // Particle regularity.
-    bool shifting = false;           ///< particle shifting (Lind et al. 2012)
-    Float shiftingCoefficient = 20;  ///< A in dr = -A h U dt grad C (see particle_shifting.hpp)
+    bool shifting = defaults::shifting;  ///< particle shifting (terms/particle_shifting.hpp)
+    Float shiftingCoefficient = defaults::shiftingCoefficient;  ///< A in dr = -A h c0 dt grad C
+
+    /// No tension at free surfaces (terms/free_surface.hpp).
+    bool freeSurfaceNoTension = defaults::freeSurfaceNoTension;
 
     // Forces.
     BodyForce<Dim> bodyForce;  ///< acceleration of time (gravity, a ramp); empty: none
@@ -218,6 +223,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     if (summation || boundaries) eq += makeTerm<NeighbourRefresh<Dim>>(gather);
     if (summation) eq += makeTerm<SummationDensity<Dim>>(gather);
     eq += makeTerm<EquationOfStateTerm<Dim>>(eos);
+    if (model.freeSurfaceNoTension) eq += makeTerm<FreeSurfaceNoTension<Dim>>(eos);
     if (boundaries) eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce);
     if (!summation) {
         eq += makeTerm<ContinuityDensity<Dim>>();
@@ -232,7 +238,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
         eq += makeTerm<ArtificialViscosity<Dim>>(model.artificialViscosity, eos.c0);
     if (model.bodyForce) eq += makeTerm<BodyForceTerm<Dim>>(model.bodyForce);
     if (model.shifting)
-        eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, model.maxVelocity);
+        eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, eos.c0, geometry.spacing);
     eq += makeHeatEquations(model.heat, model.bodyForce);
     eq += model.extraTerms;
     eq += makeTerm<BoundaryHold<Dim>>();
@@ -240,7 +246,8 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     // The built-in pair sums in one pass over the pairs (DerivativeHolder::fuse).
     eq += makeTerm<FuseDerivatives<Dim, ContinuityDensityPart<Dim>, DeltaSphPart<Dim>,
                                    PressureGradientPart<Dim>, ArtificialViscosityPart<Dim>,
-                                   LaminarViscosityPart<Dim>, HeatConductionDerivative<Dim>>>();
+                                   LaminarViscosityPart<Dim>, HeatConductionDerivative<Dim>,
+                                   KernelSumPart<Dim>, ParticleShiftingPart<Dim>>>();
     return eq;
 }
 

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "sph/defaults.hpp"
 #include "sph/suggest.hpp"
 
 namespace num::sph {
@@ -151,7 +152,7 @@ class RunSettings : public ParameterSet {
         const double inf = std::numeric_limits<double>::infinity();
         return {
             {"kernel",
-             std::string("wendland_c2"),
+             std::string(defaults::kernel),
              "smoothing kernel",
              0,
              0,
@@ -168,7 +169,7 @@ class RunSettings : public ParameterSet {
              "particle blocks of the symmetric pair loop (at least 8 per thread when asymmetric); "
              "results may depend on it, never on threads",
              1, 4096},
-            {"cfl", 0.25, "Courant factor C in dt <= C h / (c + |v|)", 1e-6, 1.0},
+            {"cfl", defaults::cfl, "Courant factor C in dt <= C h / (c + |v|)", 1e-6, 1.0},
             {"acceleration_factor", 0.25, "factor in dt <= f sqrt(h / |a|)", 1e-6, 1.0},
             {"viscous_factor", 0.125, "factor in dt <= f h^2 / nu", 1e-6, 1.0},
             {"diffusion_factor", 0.1, "factor in dt <= f h^2 / alpha", 1e-6, 1.0},
@@ -201,14 +202,16 @@ class Material : public IMaterial {
     static std::vector<SettingSpec> schema() {
         const double inf = std::numeric_limits<double>::infinity();
         return {
-            {"density", 1000.0, "rest density rho0 [kg/m^3]", 1e-300, inf},
+            {"density", defaults::density, "rest density rho0 [kg/m^3]", 1e-300, inf},
             {"sound_speed", 10.0, "artificial sound speed c0 [m/s]", 1e-300, inf},
-            {"viscosity", 1e-6, "kinematic viscosity nu [m^2/s]", 0.0, inf},
-            {"artificial_viscosity", 0.0, "Monaghan's alpha", 0.0, 10.0},
-            {"conductivity", 0.6, "thermal conductivity k [W/(m K)]", 0.0, inf},
-            {"heat_capacity", 4186.0, "specific heat capacity c [J/(kg K)]", 1e-300, inf},
+            {"viscosity", defaults::viscosity, "kinematic viscosity nu [m^2/s]", 0.0, inf},
+            {"artificial_viscosity", defaults::artificialViscosity, "Monaghan's alpha", 0.0, 10.0},
+            {"conductivity", defaults::conductivity, "thermal conductivity k [W/(m K)]", 0.0, inf},
+            {"heat_capacity", defaults::heatCapacity, "specific heat capacity c [J/(kg K)]", 1e-300,
+             inf},
             {"thermal_expansion", 0.0, "volumetric thermal expansion beta [1/K]", 0.0, inf},
-            {"reference_temperature", 20.0, "temperature of the rest density", -inf, inf},
+            {"reference_temperature", defaults::referenceTemperature,
+             "temperature of the rest density", -inf, inf},
         };
     }
 

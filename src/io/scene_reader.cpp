@@ -386,8 +386,9 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     }
     if (root.has("physics")) {
         const At ph = root["physics"];
-        ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting", "gravity_ramp",
-                   "max_speed", "eos", "background_pressure"});
+        ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting",
+                   "free_surface_clamp", "gravity_ramp", "max_speed", "eos",
+                   "background_pressure"});
         s.physics.heat = ph.boolean("heat", s.physics.heat);
         s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
         if (ph.has("density"))
@@ -395,6 +396,8 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.densityDiffusion =
             ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
         s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
+        s.physics.freeSurfaceNoTension =
+            ph.boolean("free_surface_clamp", s.physics.freeSurfaceNoTension);
         s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
         s.maxSpeed = ph.number("max_speed", 0, 0, 1e6, false, "m/s");
         if (ph.has("eos")) s.physics.eos = ph["eos"].choice({"tait", "linear"});

@@ -46,6 +46,89 @@ std::shared_ptr<sph::Material> makeMaterial(const MaterialSpec& m, double c0) {
     return mat;
 }
 
+/// The largest initial speed of a fluid block, sampled on its particle lattice.
+template <int Dim>
+double largestBlockSpeed(const FluidBlock<Dim>& f, double dx) {
+    const sph::Shape<Dim> shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
+    SceneVec<Dim> lo = f.min, hi = f.max;
+    if (f.shape != Shape::BOX)
+        for (int k = 0; k < Dim; ++k)
+            lo[k] = f.center[k] - f.radius, hi[k] = f.center[k] + f.radius;
+    std::array<long, Dim> n{};
+    double count = 1;
+    for (int k = 0; k < Dim; ++k) {
+        n[k] = std::max(1L, std::lround((hi[k] - lo[k]) / dx));
+        count *= double(n[k]);
+    }
+    // At most about 10^6 samples: a coarser sub-lattice for huge blocks.
+    const long stride = std::max(1L, long(std::ceil(std::pow(count / 1e6, 1.0 / Dim))));
+    double u = 0;
+    std::array<long, Dim> i{};
+    while (true) {
+        sph::Vector<Dim> x;
+        for (int k = 0; k < Dim; ++k) x[k] = lo[k] + (double(i[k]) + 0.5) * dx;
+        if (shape.contains(x)) u = std::max(u, norm(at<Dim>(f.velocity, x, 0.0)));
+        int k = 0;
+        while (k < Dim && (i[k] += stride) >= n[k]) i[k] = 0, ++k;
+        if (k == Dim) return u;
+    }
+}
+
+/// The flow's velocity scale U for "auto" sound speeds (c0 = 10 U), derived from the scene:
+/// the largest of the initial fluid speeds (every lattice point of every block), the speeds
+/// of moving walls and of emitters, and, under gravity, the free-fall speed sqrt(2 g H) over
+/// the domain's height along g where the water has a free surface, or the buoyancy speed
+/// sqrt(g beta dT H) where the fluid fills a closed box. physics.max_speed overrides it. 0 where
+/// none of these gives a speed.
+template <int Dim>
+double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
+    if (scene.maxSpeed > 0) return scene.maxSpeed;
+    double U = 0;
+    for (const auto& f : scene.fluids) U = std::max(U, largestBlockSpeed(f, scene.spacing));
+    bool open = false;
+    for (int k = 0; k < Dim; ++k)
+        for (const auto& side : scene.sides[k]) {
+            U = std::max(U, norm(side.velocity));
+            open |= side.type == SideType::OPEN;
+        }
+    for (const auto& e : scene.emitters) U = std::max(U, e.speed);
+    const double gravity = norm(g);
+    if (gravity > 0) {
+        double height = 0, domainVolume = 1, fluidVolume = 0;
+        for (int k = 0; k < Dim; ++k) {
+            height += std::abs(g[k]) / gravity * (scene.domainMax[k] - scene.domainMin[k]);
+            domainVolume *= scene.domainMax[k] - scene.domainMin[k];
+        }
+        for (const auto& f : scene.fluids) {
+            double v = 1;
+            for (int k = 0; k < Dim; ++k) v *= f.max[k] - f.min[k];
+            if (f.shape != Shape::BOX)
+                v = Dim == 2 ? M_PI * f.radius * f.radius : 4 / 3.0 * M_PI * std::pow(f.radius, 3);
+            fluidVolume += v;
+        }
+        const bool freeSurface =
+            open || !scene.emitters.empty() || fluidVolume < 0.99 * domainVolume;
+        if (freeSurface) {
+            U = std::max(U, std::sqrt(2 * gravity * height));
+        } else {
+            double tMin = 1e300, tMax = -1e300, beta = 0;
+            auto see = [&](double T) { tMin = std::min(tMin, T), tMax = std::max(tMax, T); };
+            for (const auto& f : scene.fluids)
+                see(at<Dim>(f.temperature, f.shape == Shape::BOX ? (f.min + f.max) * 0.5 : f.center,
+                            0.0));
+            for (const auto& b : scene.bodies) see(b.temperature);
+            for (int k = 0; k < Dim; ++k)
+                for (const auto& side : scene.sides[k])
+                    if (side.thermal.kind == ThermalCondition::Kind::TEMPERATURE)
+                        see(side.thermal.value);
+            for (const auto& [name, m] : scene.materials) beta = std::max(beta, m.thermalExpansion);
+            if (scene.physics.heat && scene.physics.buoyancy && tMax > tMin)
+                U = std::max(U, std::sqrt(gravity * beta * (tMax - tMin) * height));
+        }
+    }
+    return U;
+}
+
 /// The particles one emitter injects per layer: offsets across its nozzle, on the lattice.
 template <int Dim>
 std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
@@ -114,22 +197,14 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads) {
     };
     const sph::Vector<Dim> g0 = at<Dim>(g, sph::Vector<Dim>{}, std::max(ramp, 0.0));
 
-    // Velocity scale U for "auto" sound speeds: free fall over the domain height along g,
-    // initial block velocities and emitter speeds.
-    double U = 0;
-    if (norm(g0) > 0) {
-        double height = 0;
-        for (int k = 0; k < Dim; ++k)
-            height += std::abs(g0[k]) / norm(g0) * (scene.domainMax[k] - scene.domainMin[k]);
-        U = std::sqrt(2 * norm(g0) * height);
-    }
-    for (const auto& f : scene.fluids) {
-        const sph::Vector<Dim> c = f.shape == Shape::BOX ? (f.min + f.max) * 0.5 : f.center;
-        U = std::max(U, norm(at<Dim>(f.velocity, c, 0.0)));
-    }
-    for (const auto& e : scene.emitters) U = std::max(U, e.speed);
-    if (scene.maxSpeed > 0) U = scene.maxSpeed;
-    if (!(U > 0)) U = 1;
+    double U = velocityScale(scene, g0);
+    if (!(U > 0) && !fluid.soundSpeed)
+        throw sceneError(scene.file, "physics.max_speed",
+                         "the largest speed you expect, for the automatic sound speed",
+                         "nothing that moves the fluid (no initial velocity, moving wall, "
+                         "emitter, free fall or buoyancy)",
+                         "or give the material a sound_speed");
+    if (!(U > 0)) U = *fluid.soundSpeed / sph::defaults::soundSpeedFactor;
     setup.velocityScale = U;
 
     sph::FluidModel<Dim>& m = setup.model;
@@ -144,6 +219,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads) {
     m.viscosity = fluid.viscosity;
     m.artificialViscosity = fluid.artificialViscosity;
     m.shifting = scene.physics.shifting;
+    m.freeSurfaceNoTension = scene.physics.freeSurfaceNoTension;
     bool gravityOn = false;
     for (int k = 0; k < Dim; ++k)
         gravityOn |= !scene.gravity[k].isConstant() || scene.gravity[k](0, 0, 0, 0) != 0;

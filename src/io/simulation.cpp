@@ -14,12 +14,12 @@
 
 #include "fingerprint.hpp"
 #include "initial_state.hpp"
-#include "run_limits.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/file.hpp"
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
+#include "run_limits.hpp"
 #include "run_state.hpp"
 #include "sph/timestepping.hpp"
 
@@ -130,7 +130,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
         outputs.start();
         emitters.emit(storage, 0.0);
         run.prime();
-        state.start = conservationVector(storage, setup.gravity(0.0));
+        state.start = conservationVector(storage, setup.gravity(1e300));
     }
     const double every = scene.output.every;
     auto nextOutputTime = [&] { return state.outputIndex * every; };

@@ -4,7 +4,8 @@
 // (Cleary & Monaghan 1999, J. Comput. Phys. 148, eq. 10; Cleary 1998):
 //
 //   c_a dT_a/dt = sum_b  4 m_b k_a k_b / (rho_a rho_b (k_a + k_b))
-//                        (T_a - T_b) (r_ab . grad_a W_ab) / (r_ab^2 + eta^2),   eta^2 = 0.01 h^2
+//                        (T_a - T_b) (r_ab . grad_a W_ab) / (r_ab^2 + eta^2),   eta^2 = 0.001 h^2
+//                        (defaults.hpp)
 //
 // r_ab . grad_a W_ab <= 0, so a particle hotter than its neighbours cools: heat flows from hot
 // to cold (the seed's "du += -alpha * delta" has the opposite sign and is anti-diffusion).
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <vector>
+#include "sph/defaults.hpp"
 
 #include "sph/boundary/thermal_condition.hpp"
 #include "sph/equation_term.hpp"
@@ -30,7 +32,7 @@ namespace num::sph {
 template <int Dim>
 class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivative<Dim>, Dim> {
   public:
-    explicit HeatConductionDerivative(Float h) : eta2_(0.01 * h * h) {}
+    explicit HeatConductionDerivative(Float h) : eta2_(defaults::laplacianEta2 * h * h) {}
 
     void create(Accumulated<Dim>& results) override {
         results.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST);

@@ -1,6 +1,6 @@
 // Laminar viscosity (Morris, Fox & Zhu 1997, eq. 8), with the smooth kernel's derivative:
 //   dv_i/dt = sum_j m_j (mu_i + mu_j) / (rho_i rho_j) (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) v_ij,
-//   mu = rho nu, r_ij = x_i - x_j, v_ij = v_i - v_j, eta^2 = 0.01 h^2.
+//   mu = rho nu, r_ij = x_i - x_j, v_ij = v_i - v_j, eta^2 = 0.001 h^2 (defaults.hpp).
 // Since r_ij . grad_i W_ij <= 0 the term pulls v_i towards v_j; the pair terms are
 // antisymmetric, so momentum is conserved. A boundary particle shows the velocity of the wall
 // condition (2 v_wall - v~ for no-slip, Adami et al. 2012, eq. 23); free-slip boundary
@@ -9,6 +9,7 @@
 
 #include <memory>
 #include <vector>
+#include "sph/defaults.hpp"
 
 #include "sph/terms/fluid_quantities.hpp"
 
@@ -26,7 +27,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
   public:
     using Vec = Vector<Dim>;
     LaminarViscosityPart(std::shared_ptr<const ViscousData<Dim>> data, Float h)
-        : data_(std::move(data)), eta2_(0.01 * h * h) {}
+        : data_(std::move(data)), eta2_(defaults::laplacianEta2 * h * h) {}
 
     void create(Accumulated<Dim>& r) override {
         r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);

@@ -1,0 +1,51 @@
+// The numerical defaults of the fluid solver, in one place: the library (FluidModel,
+// RunSettings, Material), the scene reader (io/scene.hpp) and the documentation
+// (docs/scenes.md, checked by a test) all take them from here. They are the configuration the
+// validation report (docs/validation.md) measures: a scene that states only geometry,
+// materials and resolution runs the validated scheme.
+#pragma once
+
+namespace num::sph::defaults {
+
+// Kernel and smoothing length. Wendland C2 at h = 1.5 dx: its Morris Laplacian and gradient
+// on a lattice are within 0.3 % (2D) and 0.1 % (3D) of exact (at h = 1.3 dx: 2.6 % and 2.1 %
+// weak, which made channel flows 3-4 % slow); Wendland kernels do not pair (Dehnen & Aly
+// 2012, Mon. Not. R. Astron. Soc. 425, 1068).
+inline constexpr const char* kernel = "wendland_c2";
+inline constexpr double hOverSpacing = 1.5;
+
+// Time step: dt <= cfl h / (c0 + max|v|).
+inline constexpr double cfl = 0.25;
+
+// Weakly-compressible equation of state: Tait, gamma = 7, c0 = 10 U for an "auto" sound speed
+// (density variations near 1 %, Monaghan 1994).
+inline constexpr const char* eos = "tait";
+inline constexpr double taitExponent = 7;
+inline constexpr double soundSpeedFactor = 10;
+
+// Density by continuity with delta-SPH diffusion (Molteni & Colagrossi 2009), delta = 0.1.
+inline constexpr double densityDiffusion = 0.1;
+
+// Particle shifting dr = -A h c0 dt grad C with A = 0.5 (terms/particle_shifting.hpp).
+inline constexpr bool shifting = true;
+inline constexpr double shiftingCoefficient = 0.5;
+
+// No tension at free surfaces (terms/free_surface.hpp).
+inline constexpr bool freeSurfaceNoTension = true;
+
+// eta^2 / h^2 in the Laplacians of viscosity and heat conduction, 1 / (r^2 + eta^2): only a
+// guard against r -> 0. Morris et al. (1997) use 0.01, which makes the Laplacian 1.3 % weak on
+// a lattice at h = 1.5 dx and the Taylor-Green vortex decay 2.4 % too slowly; 0.001: 0.15 %.
+inline constexpr double laplacianEta2 = 0.001;
+
+// Monaghan's artificial viscosity alpha of a material (0: only the physical viscosity).
+inline constexpr double artificialViscosity = 0.0;
+
+// Water at 20 degC.
+inline constexpr double density = 1000;             // kg/m^3
+inline constexpr double viscosity = 1.0e-6;         // m^2/s
+inline constexpr double conductivity = 0.6;         // W/(m K)
+inline constexpr double heatCapacity = 4186;        // J/(kg K)
+inline constexpr double referenceTemperature = 20;  // degC
+
+}  // namespace num::sph::defaults

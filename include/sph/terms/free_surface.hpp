@@ -1,0 +1,89 @@
+// Free surfaces: the kernel sum C_i = sum_j V_j W_ij (1 inside the fluid, about 1/2 on a free
+// surface, where the kernel support is cut), and no tension at a free surface.
+//
+// A weakly-compressible equation of state gives negative pressure wherever the density falls
+// below rho0. Inside the fluid that is physical (a pressure below ambient), but at a free
+// surface it is not: the surface is at ambient pressure, and an isolated or thinning particle
+// whose density drops pulls its neighbours with a tension the liquid does not have (the
+// tensile instability at free surfaces, Monaghan 2000, J. Comput. Phys. 159, 290; Colagrossi,
+// Antuono & Le Touze 2009, Phys. Rev. E 79, 056701, on the surface condition p = p_ambient).
+// So at particles whose support is cut, C_i < 0.9, the pressure is limited from below by the
+// background (ambient) pressure and the density by rho0:
+//   p_i = max(p_i, p_b),   rho_i = max(rho_i, rho0)   where C_i < 0.9.
+// Inside the fluid (C_i >= 0.9) nothing changes, so closed flows (Taylor-Green, cavities) keep
+// their negative gauge pressures. C_i is the sum of the previous evaluation (one step old: a
+// particle moves less than 0.25 h per step); before the first it is taken as 1.
+#pragma once
+
+#include <memory>
+
+#include "sph/kernel_choice.hpp"
+#include "sph/terms/equation_of_state.hpp"
+#include "sph/terms/fluid_quantities.hpp"
+
+namespace num::sph {
+
+/// sum_{j != i} V_j W_ij into KERNEL_SUM; a reader adds the particle's own V_i W(0).
+template <int Dim>
+class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
+  public:
+    using Vec = Vector<Dim>;
+    bool needsKernelValues() const override { return true; }
+    void create(Accumulated<Dim>& r) override {
+        r.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO);
+    }
+    void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
+        m_ = s.template getValue<Float>(QuantityId::MASS);
+        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        c_ = r.template getValue<Float>(FluidId::KERNEL_SUM);
+    }
+    template <bool Symmetric>
+    void eval(Size i, Size j, const Vec&, const PairGeometry<Dim>& pair) {
+        c_[i] += m_[j] / rho_[j] * pair.w;
+        if constexpr (Symmetric) c_[j] += m_[i] / rho_[i] * pair.w;
+    }
+
+  private:
+    ArrayView<const Float> m_, rho_;
+    ArrayView<Float> c_;
+};
+
+/// Limits pressure and density at free-surface particles (see the top of this file). Place it
+/// after the equation of state and before the wall condition.
+template <int Dim>
+class FreeSurfaceNoTension : public IEquationTerm<Dim> {
+  public:
+    static constexpr Float surfaceKernelSum = 0.9;
+
+    explicit FreeSurfaceNoTension(EquationOfState eos) : eos_(eos) {}
+
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
+        d.template require<KernelSumPart<Dim>>();
+        w0_ = RunKernel<Dim>(settings).W(0);
+    }
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        const auto c = s.template getValue<Float>(FluidId::KERNEL_SUM);
+        const auto m = s.template getValue<Float>(QuantityId::MASS);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        auto p = s.template getValue<Float>(QuantityId::PRESSURE);
+        auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        const Float pb = eos_.backgroundPressure, rho0 = eos_.rho0;
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) {
+                if (!isFluid(kind[i]) || !(c[i] + m[i] / rho[i] * w0_ < surfaceKernelSum)) continue;
+                p[i] = std::max(p[i], pb);
+                rho[i] = std::max(rho[i], rho0);
+            }
+        });
+    }
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void create(Storage<Dim>& s, IMaterial&) const override {
+        s.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, 1.0);
+    }
+
+  private:
+    EquationOfState eos_;
+    Float w0_ = 0;
+};
+
+}  // namespace num::sph

@@ -5,5 +5,6 @@
 #include "io/app.hpp"
 
 int main(int argc, char** argv) {
-    return num::io::runApp<2>(argc, argv, {"fluid_sim", kDefaultScene, kDefaultSceneName, {}});
+    return num::io::runApp<2>(
+        argc, argv, {"fluid_sim", kDefaultScene, kDefaultSceneName, {}, NUMERICS_SCENES_DIR});
 }

@@ -5,5 +5,6 @@
 #include "io/app.hpp"
 
 int main(int argc, char** argv) {
-    return num::io::runApp<3>(argc, argv, {"fluid_sim_3d", kDefaultScene, kDefaultSceneName, {}});
+    return num::io::runApp<3>(
+        argc, argv, {"fluid_sim_3d", kDefaultScene, kDefaultSceneName, {}, NUMERICS_SCENES_DIR});
 }

@@ -2,6 +2,7 @@
 // in a built-in 5x7 font), a colour map, and PNG output through libpng.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -16,6 +17,8 @@ struct Rgb {
 Rgb coolWarm(double u);
 /// c scaled towards black by f in [0, 1] (1 keeps it).
 Rgb shade(Rgb c, double f);
+/// c moved towards d by f in [0, 1] (0 keeps c).
+Rgb mix(Rgb c, Rgb d, double f);
 
 class Image {
   public:
@@ -26,7 +29,14 @@ class Image {
     void set(int x, int y, Rgb c);
     void fillRect(int x0, int y0, int x1, int y1, Rgb c);
     void fillDisc(double cx, double cy, double radius, Rgb c);
+    /// A sphere seen from the front: a disc lit from the upper left (diffuse and a highlight),
+    /// then moved towards `fog` by fogAmount in [0, 1] (the depth cue of 3D pictures).
+    void fillSphere(double cx, double cy, double radius, Rgb c, Rgb fog, double fogAmount);
+    /// A convex polygon (corners in order, either orientation).
+    void fillPolygon(const std::vector<std::array<double, 2>>& corners, Rgb c);
     void line(double x0, double y0, double x1, double y1, Rgb c);
+    /// A line `width` pixels wide (plots).
+    void thickLine(double x0, double y0, double x1, double y1, Rgb c, double width);
     /// Text with its top-left corner at (x, y); each font pixel is a scale x scale square.
     void text(int x, int y, const std::string& s, Rgb c, int scale = 2);
     static int textWidth(const std::string& s, int scale = 2) { return int(s.size()) * 6 * scale; }

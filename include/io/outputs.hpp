@@ -1,5 +1,6 @@
-// Everything a run writes per output time: VTU (+ the .pvd series), CSV, PNG, a row of
-// probes.csv; and at the end an MP4 of the pictures when ffmpeg is installed.
+// Everything a run writes per output time: VTU (+ the .pvd series and a ParaView script), CSV,
+// PNG, a row of probes.csv; and at the end an MP4 of the pictures (when ffmpeg is installed) and
+// a plot of the probes.
 #pragma once
 
 #include <string>
@@ -11,6 +12,15 @@
 #include "io/writers.hpp"
 
 namespace num::io {
+
+/// The files made at the end of a run, and why the movie is missing when it is.
+struct EndOfRun {
+    std::string video;           ///< path of <prefix>.mp4, or ""
+    std::string videoNote;       ///< why there is no movie ("" when there is one)
+    bool videoWanted = false;    ///< the scene asked for pictures and a movie
+    std::string probePlot;       ///< path of probes.png, or "" (no probes)
+    std::string paraviewScript;  ///< path of <prefix>_paraview.py, or "" (no VTU output)
+};
 
 template <int Dim>
 class Outputs {
@@ -27,8 +37,8 @@ class Outputs {
     /// Writes the files of output number `index` at time t.
     void write(const sph::Storage<Dim>& s, double t, int index);
 
-    /// Makes <prefix>.mp4 from the pictures when ffmpeg is on the PATH; returns its path or "".
-    std::string makeVideo(bool quiet) const;
+    /// The end of a run: the probe plot, and the movie when the run completed.
+    EndOfRun finish(bool completed) const;
 
     const std::string& directory() const { return dir_; }
     std::string path(const std::string& name) const { return dir_ + "/" + name; }
@@ -38,6 +48,9 @@ class Outputs {
 
   private:
     void writeProbes(const sph::Storage<Dim>& s, double t);
+    void writeParaviewScript() const;
+    /// Makes <prefix>.mp4 from the pictures with ffmpeg; returns "" or why it could not.
+    std::string makeVideo() const;
 
     const Scene<Dim>& scene_;
     const SceneSetup<Dim>& setup_;

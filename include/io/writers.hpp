@@ -21,6 +21,20 @@ template <int Dim>
 void writeCsv(const std::string& path, const sph::Storage<Dim>& s,
               const std::vector<OutputField>& fields);
 
+/// What the ParaView script needs to know of the run.
+struct ParaviewView {
+    std::string pvdName;                  ///< the series, next to the script
+    int dimension = 2;                    ///< 2D: a flat view along z
+    int upAxis = 1;                       ///< the axis drawn upwards (against gravity)
+    double spacing = 0.01;                ///< particle spacing [m]: points are spheres this wide
+    double colorMin = 0, colorMax = 100;  ///< temperature range of the colour map [C]
+};
+
+/// Writes a Python script for ParaView that opens the series coloured by temperature, fluid and
+/// bodies as spheres of the particle spacing (walls hidden). `paraview --script=FILE` opens it
+/// in the window; `pvpython FILE --screenshot` saves FILE's name with .png instead.
+void writeParaviewScript(const std::string& path, const ParaviewView& view);
+
 /// A ParaView collection (.pvd) of output files and their times, rewritten atomically.
 class PvdSeries {
   public:

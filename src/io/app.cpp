@@ -1,9 +1,11 @@
 #include "io/app.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "io/errors.hpp"
@@ -41,6 +43,9 @@ std::string examples(const std::string& name, int dim) {
            "  " +
            name +
            " --print-scene > my_scene.json   start a scene of your own\n"
+           "  " +
+           name +
+           " --list-scenes                 the shipped scenes, one line each\n"
            "Scene format and exit codes: docs/scenes.md. Outputs: a ParaView series (.pvd), PNG\n"
            "pictures, probes.csv and summary.json in the output directory.\n"
            "(" +
@@ -48,7 +53,49 @@ std::string examples(const std::string& name, int dim) {
            (dim == 2 ? "fluid_sim_3d" : "fluid_sim") + ".)";
 }
 
+/// The first sentence of a description, on one line and at most about 110 characters.
+std::string firstSentence(std::string text) {
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    const std::size_t end = text.find(". ");
+    if (end != std::string::npos) text.resize(end + 1);
+    if (text.size() > 110) text = text.substr(0, 107) + "...";
+    return text.empty() ? "(no description)" : text;
+}
+
 }  // namespace
+
+int listScenes(const std::string& dir, const AppInfo& info) {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> files;
+    for (const std::string sub : {"", "validation"}) {
+        std::vector<fs::path> here;
+        std::error_code ec;
+        for (const auto& e : fs::directory_iterator(fs::path(dir) / sub, ec))
+            if (e.is_regular_file() && e.path().extension() == ".json") here.push_back(e.path());
+        std::sort(here.begin(), here.end());
+        files.insert(files.end(), here.begin(), here.end());
+    }
+    if (files.empty()) {
+        std::fprintf(stderr, "%s: error: no scene files in %s\n", info.name.c_str(), dir.c_str());
+        return int(ExitCode::SCENE_FILE);
+    }
+    std::printf("Scenes: the command that runs each, then what it shows\n");
+    for (const fs::path& f : files) {
+        std::string app = "?", text;
+        try {
+            const SceneDocument doc = SceneDocument::fromFile(f.string());
+            app = doc.json().value("dimension", 0) == 3 ? "fluid_sim_3d" : "fluid_sim";
+            text = firstSentence(doc.json().value("description", std::string()));
+        } catch (const std::exception& e) {
+            text = std::string("(cannot be read: ") + e.what() + ")";
+        }
+        if (app == info.name && f.filename() == info.defaultSceneName)
+            text = "[default of " + app + "] " + text;
+        std::printf("  %s %s\n      %s\n", app.c_str(), f.string().c_str(), text.c_str());
+    }
+    std::printf("Without a scene file, %s runs its default scene.\n", info.name.c_str());
+    return 0;
+}
 
 template <int Dim>
 int runApp(int argc, char** argv, const AppInfo& info) {
@@ -65,7 +112,7 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     opt.fieldNames = info.fieldNames;
     std::string out, restart;
     double endTime = 0;
-    bool printScene = false;
+    bool printScene = false, list = false;
     app.add_option(
         "scene", sceneFile,
         "scene file (JSON); without it the built-in scene " + info.defaultSceneName + " runs");
@@ -98,6 +145,9 @@ int runApp(int argc, char** argv, const AppInfo& info) {
         ->check(finitePositive);
     app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors");
     app.add_flag("--print-scene", printScene, "print the scene (after --set) as JSON and exit");
+    app.add_flag("--list-scenes", list,
+                 "list the shipped scenes (./scenes, else the source tree's) with the program that "
+                 "runs each, and exit");
     app.set_version_flag("--version", info.name + " (numerics) 0.1.0");
     app.footer(examples(info.name, Dim));
     try {
@@ -110,6 +160,11 @@ int runApp(int argc, char** argv, const AppInfo& info) {
         std::fprintf(stderr, "%s: error: %s (run '%s --help' for the options and examples)\n",
                      info.name.c_str(), e.what(), info.name.c_str());
         return int(ExitCode::USAGE);
+    }
+    if (list) {
+        std::error_code ec;
+        return listScenes(std::filesystem::is_directory("scenes", ec) ? "scenes" : info.scenesDir,
+                          info);
     }
     if (!out.empty()) opt.outDir = out;
     if (endTime > 0) opt.endTime = endTime;

@@ -38,6 +38,14 @@ Rgb shade(Rgb c, double f) {
     return {std::uint8_t(c.r * f), std::uint8_t(c.g * f), std::uint8_t(c.b * f)};
 }
 
+Rgb mix(Rgb c, Rgb d, double f) {
+    f = std::clamp(f, 0.0, 1.0);
+    auto m = [f](std::uint8_t a, std::uint8_t b) {
+        return std::uint8_t(std::lround((1 - f) * a + f * b));
+    };
+    return {m(c.r, d.r), m(c.g, d.g), m(c.b, d.b)};
+}
+
 Image::Image(int width, int height, Rgb bg)
     : w_(width), h_(height), px_(std::size_t(width) * height * 3) {
     for (std::size_t i = 0; i < px_.size(); i += 3)
@@ -72,6 +80,57 @@ void Image::fillDisc(double cx, double cy, double r, Rgb c) {
             const double dx = x + 0.5 - cx, dy = y + 0.5 - cy;
             if (dx * dx + dy * dy <= r * r) set(x, y, c);
         }
+}
+
+void Image::fillSphere(double cx, double cy, double r, Rgb c, Rgb fog, double fogAmount) {
+    if (r < 1.5) return fillDisc(cx, cy, r, mix(c, fog, fogAmount));
+    // Light from the upper left and towards the viewer; the half vector for the highlight.
+    const double lx = -0.45, ly = -0.55, lz = 0.70;
+    const double hn = std::sqrt(lx * lx + ly * ly + (lz + 1) * (lz + 1));
+    const double hx = lx / hn, hy = ly / hn, hz = (lz + 1) / hn;
+    const int x0 = int(std::floor(cx - r)), x1 = int(std::ceil(cx + r));
+    const int y0 = int(std::floor(cy - r)), y1 = int(std::ceil(cy + r));
+    for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+            const double nx = (x + 0.5 - cx) / r, ny = (y + 0.5 - cy) / r;
+            const double rr = nx * nx + ny * ny;
+            if (rr > 1) continue;
+            const double nz = std::sqrt(1 - rr);
+            const double diffuse = std::max(0.0, nx * lx + ny * ly + nz * lz);
+            const double spec = std::pow(std::max(0.0, nx * hx + ny * hy + nz * hz), 24);
+            const Rgb lit = mix(shade(c, 0.45 + 0.55 * diffuse), {255, 255, 255}, 0.45 * spec);
+            set(x, y, mix(lit, fog, fogAmount));
+        }
+}
+
+void Image::fillPolygon(const std::vector<std::array<double, 2>>& p, Rgb c) {
+    if (p.size() < 3) return;
+    double xMin = p[0][0], xMax = xMin, yMin = p[0][1], yMax = yMin;
+    for (const auto& q : p)
+        xMin = std::min(xMin, q[0]), xMax = std::max(xMax, q[0]), yMin = std::min(yMin, q[1]),
+        yMax = std::max(yMax, q[1]);
+    for (int y = int(std::floor(yMin)); y <= int(std::ceil(yMax)); ++y)
+        for (int x = int(std::floor(xMin)); x <= int(std::ceil(xMax)); ++x) {
+            // Inside when the pixel centre is on the same side of every edge.
+            int positive = 0, negative = 0;
+            for (std::size_t k = 0; k < p.size(); ++k) {
+                const auto& a = p[k];
+                const auto& b = p[(k + 1) % p.size()];
+                const double cross =
+                    (b[0] - a[0]) * (y + 0.5 - a[1]) - (b[1] - a[1]) * (x + 0.5 - a[0]);
+                positive += cross > 0, negative += cross < 0;
+            }
+            if (positive == 0 || negative == 0) set(x, y, c);
+        }
+}
+
+void Image::thickLine(double x0, double y0, double x1, double y1, Rgb c, double width) {
+    const double length = std::hypot(x1 - x0, y1 - y0);
+    const int steps = int(std::ceil(length)) + 1;
+    for (int k = 0; k <= steps; ++k) {
+        const double f = double(k) / steps;
+        fillDisc(x0 + f * (x1 - x0), y0 + f * (y1 - y0), 0.5 * width, c);
+    }
 }
 
 void Image::line(double x0, double y0, double x1, double y1, Rgb c) {

@@ -10,6 +10,7 @@
 
 #include "io/diagnostics.hpp"
 #include "io/file.hpp"
+#include "io/probe_plot.hpp"
 
 namespace num::io {
 
@@ -71,8 +72,21 @@ std::string Outputs<Dim>::fileName(int index, const std::string& extension) cons
 }
 
 template <int Dim>
+void Outputs<Dim>::writeParaviewScript() const {
+    if (!scene_.output.vtu) return;
+    ParaviewView v;
+    v.pvdName = scene_.output.prefix + ".pvd";
+    v.dimension = Dim;
+    v.upAxis = Dim == 2 ? 1 : render_.upAxis;
+    v.spacing = scene_.spacing;
+    v.colorMin = render_.colorMin, v.colorMax = render_.colorMax;
+    num::io::writeParaviewScript(path(scene_.output.prefix + "_paraview.py"), v);
+}
+
+template <int Dim>
 void Outputs<Dim>::start() {
     makeOutputDirectory(dir_);
+    writeParaviewScript();
     if (scene_.probes.empty()) return;
     // Quoted where needed (RFC 4180), although probe names are plain words.
     auto field = [](const std::string& name) {
@@ -97,6 +111,7 @@ void Outputs<Dim>::start() {
 template <int Dim>
 void Outputs<Dim>::resume(double t, std::vector<std::pair<double, std::string>> series) {
     makeOutputDirectory(dir_);
+    writeParaviewScript();
     for (auto& [time, file] : series) series_.add(time, file);
     series_.truncateAfter(t);
     pictures_ = int(series_.entries().size());
@@ -149,9 +164,9 @@ void Outputs<Dim>::writeProbes(const sph::Storage<Dim>& s, double t) {
 }
 
 template <int Dim>
-std::string Outputs<Dim>::makeVideo(bool quiet) const {
-    if (!scene_.output.images || !scene_.output.video || pictures_ < 2 || !onPath("ffmpeg"))
-        return "";
+std::string Outputs<Dim>::makeVideo() const {
+    if (!onPath("ffmpeg"))
+        return "ffmpeg is not installed (./scripts/setup.sh or apt-get install ffmpeg adds it)";
     auto quote = [](const std::string& s) {
         std::string q = "'";
         for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -159,11 +174,50 @@ std::string Outputs<Dim>::makeVideo(bool quiet) const {
     };
     const int fps = std::clamp(pictures_ / 8, 5, 30);
     const std::string video = path(scene_.output.prefix + ".mp4");
-    const std::string cmd = "ffmpeg -y -loglevel error -framerate " + std::to_string(fps) + " -i " +
-                            quote(path(scene_.output.prefix + "_%04d.png")) +
-                            " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p " +
-                            quote(video) + (quiet ? " >/dev/null 2>&1" : "");
-    return std::system(cmd.c_str()) == 0 ? video : "";
+    const std::string log = path("ffmpeg.log");
+    // Written under a temporary name and renamed, like every other output.
+    const std::string cmd = "ffmpeg -y -nostdin -loglevel error -framerate " + std::to_string(fps) +
+                            " -i " + quote(path(scene_.output.prefix + "_%04d.png")) +
+                            " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
+                            quote(video + ".tmp") + " >" + quote(log) + " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::ifstream in(log);
+    std::string firstLine;
+    std::getline(in, firstLine);
+    in.close();
+    std::remove(log.c_str());
+    if (rc != 0 || std::rename((video + ".tmp").c_str(), video.c_str()) != 0) {
+        std::remove((video + ".tmp").c_str());
+        return "ffmpeg failed" + (firstLine.empty() ? std::string() : ": " + firstLine);
+    }
+    return "";
+}
+
+template <int Dim>
+EndOfRun Outputs<Dim>::finish(bool completed) const {
+    EndOfRun end;
+    if (scene_.output.vtu) end.paraviewScript = path(scene_.output.prefix + "_paraview.py");
+    if (!scene_.probes.empty()) {
+        std::ifstream in(path("probes.csv"), std::ios::binary);
+        std::ostringstream csv;
+        csv << in.rdbuf();
+        end.probePlot = path("probes.png");
+        writePng(end.probePlot, plotProbes(csv.str(), "probes: " + scene_.name,
+                                           std::max(640, scene_.output.imageWidth)));
+    }
+    end.videoWanted = scene_.output.images && scene_.output.video;
+    if (!scene_.output.images)
+        end.videoNote = "output.images is false";
+    else if (!scene_.output.video)
+        end.videoNote = "output.video is false";
+    else if (!completed)
+        end.videoNote = "the run did not complete";
+    else if (pictures_ < 2)
+        end.videoNote = "fewer than 2 pictures";
+    else
+        end.videoNote = makeVideo();
+    if (end.videoNote.empty()) end.video = path(scene_.output.prefix + ".mp4");
+    return end;
 }
 
 template class Outputs<2>;

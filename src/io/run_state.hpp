@@ -209,27 +209,4 @@ nlohmann::json summaryJson(const Scene<Dim>& scene, const sph::Storage<Dim>& s,
             {"conservation", c}};
 }
 
-template <int Dim>
-void printReport(const std::string& program, const Outputs<Dim>& out, const Scene<Dim>& scene,
-                 double t, std::uint64_t steps, double wall, double particleSteps,
-                 const std::string& video, const std::string& status) {
-    std::printf("%s: %s at t = %.4g s after %llu steps in %.1f s (%.2f million particle-steps/s)\n",
-                program.c_str(), status == "completed" ? "finished" : "stopped (Ctrl-C)", t,
-                (unsigned long long)steps, wall, wall > 0 ? particleSteps / wall * 1e-6 : 0.0);
-    std::printf("Output written to %s/\n", out.directory().c_str());
-    if (scene.output.vtu)
-        std::printf("  %-22s open in ParaView (File > Open, Apply) to play the series\n",
-                    (scene.output.prefix + ".pvd").c_str());
-    if (scene.output.images)
-        std::printf("  %-22s pictures, one per output time (%d)\n",
-                    (scene.output.prefix + "_*.png").c_str(), out.pictures());
-    if (!video.empty())
-        std::printf("  %-22s the run as a video\n", (scene.output.prefix + ".mp4").c_str());
-    if (scene.output.csv)
-        std::printf("  %-22s fluid particles as CSV\n", (scene.output.prefix + "_*.csv").c_str());
-    if (!scene.probes.empty()) std::printf("  %-22s probe values over time\n", "probes.csv");
-    std::printf("  %-22s run statistics and conservation diagnostics\n", "summary.json");
-    std::fflush(stdout);
-}
-
 }  // namespace num::io

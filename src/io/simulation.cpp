@@ -20,6 +20,7 @@
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
 #include "run_limits.hpp"
+#include "run_report.hpp"
 #include "run_state.hpp"
 #include "sph/timestepping.hpp"
 
@@ -213,13 +214,13 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     state.emitted = emitters.emitted();
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-    const std::string video = status == "completed" ? outputs.makeVideo(opt.quiet) : "";
+    const EndOfRun end = outputs.finish(status == "completed");
     nlohmann::json summary = summaryJson(scene, storage, setup, state, run.time(), run.steps(),
                                          run.steps() - startSteps, wall, particleSteps, threads,
                                          opt.backend, status, message, solver.meanNeighbours());
     for (const auto& [t, f] : checkpoints)
         summary["checkpoints"].push_back({{"time", t}, {"file", f}});
-    summary["video"] = video;
+    addEndOfRun(summary, end, scene.warnings);
     writeFileAtomically(outputs.path("summary.json"), summary.dump(2) + "\n");
     // Until here a first signal only sets the flag: the video and the summary are still made.
     for (int sig : kStopSignals) std::signal(sig, SIG_DFL);
@@ -227,8 +228,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     if (status == "unstable")
         throw AppError(ExitCode::UNSTABLE, message + " (last good output kept in " + dir + ")");
     if (!opt.quiet)
-        printReport(std::string(opt.program), outputs, scene, run.time(), run.steps() - startSteps,
-                    wall, particleSteps, video, status);
+        printRunReport(opt.program, outputs, scene, end, summary);
     return status == "interrupted" ? int(ExitCode::INTERRUPTED) : 0;
 }
 

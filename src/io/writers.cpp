@@ -194,3 +194,82 @@ template void writeCsv<3>(const std::string&, const sph::Storage<3>&,
                           const std::vector<OutputField>&);
 
 }  // namespace num::io
+
+namespace num::io {
+
+void writeParaviewScript(const std::string& path, const ParaviewView& v) {
+    // 2D: from +z onto the plane; 3D: from above and aside, the up axis upwards.
+    std::string camera = "[0, 0, 1]", up = "[0, 1, 0]";
+    if (v.dimension == 3) {
+        const int a1 = (v.upAxis + 1) % 3, a2 = (v.upAxis + 2) % 3;
+        double c[3], u[3] = {0, 0, 0};
+        c[v.upAxis] = 0.9, c[a1] = 1.0, c[a2] = -1.4, u[v.upAxis] = 1;
+        camera = "[" + number(c[0]) + ", " + number(c[1]) + ", " + number(c[2]) + "]";
+        up = "[" + number(u[0]) + ", " + number(u[1]) + ", " + number(u[2]) + "]";
+    }
+    std::ostringstream py;
+    py << "# Opens this run in ParaView coloured by temperature, fluid and bodies drawn as "
+          "spheres\n"
+          "# of the particle spacing (walls hidden). Written by the app next to its series.\n"
+          "#   paraview --script="
+       << path.substr(path.rfind('/') + 1)
+       << "        the ParaView window, ready to play\n"
+          "#   pvpython "
+       << path.substr(path.rfind('/') + 1)
+       << " --screenshot   saves a picture of the last time instead\n"
+          "import os\n"
+          "import sys\n"
+          "from paraview.simple import *\n\n"
+          "here = os.path.dirname(os.path.abspath(__file__))\n"
+          "series = \""
+       << v.pvdName
+       << "\"\n"
+          "dimension = "
+       << v.dimension
+       << "\n"
+          "spacing = "
+       << number(v.spacing)
+       << "  # m\n"
+          "temperature_range = ["
+       << number(v.colorMin) << ", " << number(v.colorMax)
+       << "]  # C\n\n"
+          "run = PVDReader(FileName=os.path.join(here, series))\n"
+          "view = GetActiveViewOrCreate(\"RenderView\")\n"
+          "lut = GetColorTransferFunction(\"temperature\")\n"
+          "lut.ApplyPreset(\"Cool to Warm\", True)\n"
+          "lut.RescaleTransferFunction(*temperature_range)\n"
+          "for kind in (0, 2):  # 0 fluid, 2 bodies (1: walls)\n"
+          "    part = Threshold(Input=run, Scalars=[\"POINTS\", \"kind\"])\n"
+          "    try:  # ParaView 5.10 and later\n"
+          "        part.LowerThreshold, part.UpperThreshold = kind, kind\n"
+          "    except AttributeError:\n"
+          "        part.ThresholdRange = [kind, kind]\n"
+          "    shown = Show(part, view)\n"
+          "    shown.SetRepresentationType(\"Point Gaussian\")\n"
+          "    shown.GaussianRadius = 0.5 * spacing\n"
+          "    shown.ShaderPreset = \"Sphere\"\n"
+          "    ColorBy(shown, (\"POINTS\", \"temperature\"))\n"
+          "    shown.LookupTable = lut\n"
+          "    shown.SetScalarBarVisibility(view, True)\n"
+          "GetAnimationScene().UpdateAnimationUsingDataTimeSteps()\n"
+          "if dimension == 2:\n"
+          "    view.InteractionMode = \"2D\"\n"
+       << "view.CameraFocalPoint = [0, 0, 0]\n"
+          "view.CameraPosition = "
+       << camera
+       << "\n"
+          "view.CameraViewUp = "
+       << up
+       << "\n"
+          "view.ResetCamera()\n"
+          "if \"--screenshot\" in getattr(sys, \"argv\", []):\n"
+          "    times = run.TimestepValues\n"
+          "    if isinstance(times, (list, tuple)) and times:\n"
+          "        GetAnimationScene().AnimationTime = times[-1]\n"
+          "    SaveScreenshot(os.path.splitext(os.path.abspath(__file__))[0] + \".png\", view)\n"
+          "else:\n"
+          "    Render()\n";
+    writeFileAtomically(path, py.str());
+}
+
+}  // namespace num::io

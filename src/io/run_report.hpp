@@ -1,0 +1,109 @@
+// What a run prints at its end: where its outputs went, then the key figures of summary.json
+// (steps, speed, conservation drift, warnings), and one line when the movie is missing.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "io/outputs.hpp"
+#include "io/scene.hpp"
+
+namespace num::io {
+
+/// Adds the files made at the end of the run, why a movie is missing and the scene's warnings.
+inline void addEndOfRun(nlohmann::json& summary, const EndOfRun& end,
+                        const std::vector<std::string>& warnings) {
+    summary["video"] = end.video;
+    summary["video_note"] = end.videoNote;
+    summary["probe_plot"] = end.probePlot;
+    summary["paraview_script"] = end.paraviewScript;
+    summary["warnings"] = warnings;
+}
+
+namespace detail {
+
+/// "+0.012 %" of a relative change, or the absolute change with its unit when the start is 0.
+inline std::string change(double start, double end, const char* unit) {
+    char buf[64];
+    if (std::abs(start) > 1e-300)
+        std::snprintf(buf, sizeof buf, "%+.3g %%", 100 * (end - start) / std::abs(start));
+    else
+        std::snprintf(buf, sizeof buf, "%+.3g %s", end - start, unit);
+    return buf;
+}
+
+inline std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", v);
+    return buf;
+}
+
+}  // namespace detail
+
+template <int Dim>
+void printRunReport(const std::string& program, const Outputs<Dim>& out, const Scene<Dim>& scene,
+                    const EndOfRun& end, const nlohmann::json& summary) {
+    const OutputSpec& o = scene.output;
+    const bool completed = summary.at("status") == "completed";
+    std::printf("%s: %s at t = %.4g s\n", program.c_str(),
+                completed ? "finished" : "stopped (Ctrl-C)",
+                summary.at("final_time").get<double>());
+    std::printf("Output written to %s/\n", out.directory().c_str());
+    auto item = [](const std::string& file, const std::string& what) {
+        std::printf("  %-24s %s\n", file.c_str(), what.c_str());
+    };
+    if (o.vtu) item(o.prefix + ".pvd", "open in ParaView (File > Open, Apply) to play the series");
+    if (!end.paraviewScript.empty())
+        item(o.prefix + "_paraview.py",
+             "ParaView coloured by temperature: paraview --script=" + o.prefix + "_paraview.py");
+    if (o.images)
+        item(o.prefix + "_*.png",
+             "pictures, one per output time (" + std::to_string(out.pictures()) + ")");
+    if (!end.video.empty()) item(o.prefix + ".mp4", "the pictures as a movie");
+    if (o.csv) item(o.prefix + "_*.csv", "fluid particles as CSV");
+    if (!scene.probes.empty())
+        item("probes.csv, probes.png", "probe values over time, and their plot");
+    item("summary.json", "run statistics and conservation diagnostics; its key figures:");
+
+    const double wall = summary.at("wall_seconds");
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "%llu (this run) in %.1f s, %.3g million particle-steps/s, %d threads",
+                  (unsigned long long)summary.at("steps_this_run").get<std::uint64_t>(), wall,
+                  summary.at("particle_steps_per_second").get<double>() * 1e-6,
+                  summary.at("threads").get<int>());
+    item("  steps", line);
+    std::snprintf(line, sizeof line, "%llu fluid of %llu (emitted %llu, removed %llu)",
+                  (unsigned long long)summary.at("fluid_particles").get<std::uint64_t>(),
+                  (unsigned long long)summary.at("particles").get<std::uint64_t>(),
+                  (unsigned long long)summary.at("emitted_particles").get<std::uint64_t>(),
+                  (unsigned long long)summary.at("removed_particles").get<std::uint64_t>());
+    item("  particles", line);
+    const auto& c = summary.at("conservation");
+    auto startOf = [&](const char* k) { return c.at(k).at("start").get<double>(); };
+    auto endOf = [&](const char* k) { return c.at(k).at("end").get<double>(); };
+    const double mechStart = startOf("kinetic_energy") + startOf("potential_energy");
+    const double mechEnd = endOf("kinetic_energy") + endOf("potential_energy");
+    const bool closed = summary.at("emitted_particles").get<std::uint64_t>() == 0 &&
+                        summary.at("removed_particles").get<std::uint64_t>() == 0;
+    if (closed)
+        item("  conservation drift",
+             "mass " + detail::change(startOf("mass"), endOf("mass"), "kg") +
+                 ", kinetic + potential energy " + detail::change(mechStart, mechEnd, "J") +
+                 ", thermal energy " +
+                 detail::change(startOf("thermal_energy"), endOf("thermal_energy"), "J"));
+    else  // particles came in or left: the sums are not meant to be conserved
+        item("  conservation", "not a closed system (emitters, open sides): fluid mass " +
+                                   detail::number(startOf("mass")) + " -> " +
+                                   detail::number(endOf("mass")) + " kg");
+    const auto& warnings = summary.at("warnings");
+    item("  warnings", warnings.empty() ? "none" : std::to_string(warnings.size()) + " (above)");
+    if (end.videoWanted && end.video.empty() && completed)
+        std::printf("%s: no movie: %s\n", program.c_str(), end.videoNote.c_str());
+    std::fflush(stdout);
+}
+
+}  // namespace num::io

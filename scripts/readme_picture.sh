@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Regenerates docs/first_run_2d.png, the picture on the README's first screen: the default scene
+# of fluid_sim (built by scripts/build.sh) run up to TIME seconds (default 3), its last picture.
+# Usage: scripts/readme_picture.sh [TIME] [fluid_sim arguments...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+time="${1:-3}"
+shift || true
+app=./build/release/apps/fluid_sim/fluid_sim
+[ -x "$app" ] || ./scripts/build.sh
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+"$app" --end-time "$time" --out "$work" --set output.video=false \
+  -q "$@"
+last="$(ls "$work"/particles_*.png | sort | tail -n 1)"
+cp "$last" docs/first_run_2d.png
+echo "docs/first_run_2d.png: the default 2D scene at t = $time s"

@@ -97,7 +97,7 @@ TEST(Apps, HelpShowsExamplesAndVersionPrints) {
     EXPECT_EQ(help.code, 0);
     for (const char* option :
          {"--out", "--threads", "--backend", "--end-time", "--set", "--restart",
-          "--checkpoint-every", "--quiet", "--version", "Examples:"})
+          "--checkpoint-every", "--quiet", "--version", "--list-scenes", "Examples:"})
         EXPECT_TRUE(contains(help.output, option)) << option;
     const Result version = run(FLUID_SIM_3D, "--version", dir);
     EXPECT_EQ(version.code, 0);

@@ -92,8 +92,9 @@ void checkDefaultRun(const std::string& program, const std::string& name,
     EXPECT_EQ(summary.at("probe_plot"), "out/probes.png");
     const std::string script = readFile(out + "particles_paraview.py");
     EXPECT_EQ(summary.at("paraview_script"), "out/particles_paraview.py");
-    for (const std::string part : {"from paraview.simple import", "\"particles.pvd\"",
-                                   "spacing = " + spacing, "\"temperature\"", "Point Gaussian"})
+    for (const std::string& part :
+         std::vector<std::string>{"from paraview.simple import", "\"particles.pvd\"",
+                                  "spacing = " + spacing, "\"temperature\"", "Point Gaussian"})
         EXPECT_TRUE(contains(script, part)) << part << "\n" << script;
     // Valid Python: parsed by python3 (installed by scripts/setup.sh with the validation tools).
     ASSERT_TRUE(num::io::onPath("python3")) << "python3 is needed to check the ParaView script";

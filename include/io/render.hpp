@@ -1,5 +1,6 @@
 // Pictures of a run: 2D particles coloured by temperature in the plane; 3D an orthographic view
-// from above and aside, drawn back to front. Both with a colour bar and the time.
+// of the whole box from above and aside, shaded spheres sized to the spacing drawn back to front
+// with a depth cue, over the box's floor. Both with a colour bar and the time.
 #pragma once
 
 #include <string>

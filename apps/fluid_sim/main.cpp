@@ -1,5 +1,5 @@
-// fluid_sim: 2D water with heat transfer. Without a scene file it runs its built-in scene, a dam
-// break of 20 C water past a hot (90 C) and a cold (0 C) body (scenes/dam_break_hot_cold_2d.json).
+// fluid_sim: 2D water with heat transfer. Without a scene file it runs its built-in scene, hot
+// water collapsing onto cold water past a hot and a cold body (scenes/dam_break_hot_cold_2d.json).
 // Everything else is shared with fluid_sim_3d: num::io::runApp (include/io/app.hpp).
 #include "default_scene.hpp"
 #include "io/app.hpp"

@@ -237,8 +237,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     if (model.artificialViscosity > 0)
         eq += makeTerm<ArtificialViscosity<Dim>>(model.artificialViscosity, eos.c0);
     if (model.bodyForce) eq += makeTerm<BodyForceTerm<Dim>>(model.bodyForce);
-    if (model.shifting)
-        eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, eos.c0, geometry.spacing);
+    if (model.shifting) eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, eos.c0);
     eq += makeHeatEquations(model.heat, model.bodyForce);
     eq += model.extraTerms;
     eq += makeTerm<BoundaryHold<Dim>>();

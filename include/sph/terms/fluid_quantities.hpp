@@ -20,7 +20,8 @@ inline constexpr QuantityId WALL_SLIP = QuantityId(101);
 /// Kinematic viscosity nu of each particle [m^2/s] (Float); a term may change it per step
 /// (e.g. a temperature-dependent viscosity) before the pair loop.
 inline constexpr QuantityId KINEMATIC_VISCOSITY = QuantityId(102);
-/// Kernel sum C_i = sum_j V_j W_ij of the last evaluation (Float), from particle shifting.
+/// Kernel sum over the neighbours, sum_{j != i} V_j W_ij, of the last evaluation (Float); the
+/// kernel sum is C_i = KERNEL_SUM_i + V_i W(0) (terms/free_surface.hpp).
 inline constexpr QuantityId KERNEL_SUM = QuantityId(103);
 /// Gradient of the kernel sum, sum_j V_j grad_i W_ij (Vector), from particle shifting.
 inline constexpr QuantityId KERNEL_SUM_GRADIENT = QuantityId(104);
@@ -28,6 +29,9 @@ inline constexpr QuantityId KERNEL_SUM_GRADIENT = QuantityId(104);
 /// and the density gradient (Vector), from particle shifting (for its Taylor correction).
 inline constexpr QuantityId VELOCITY_GRADIENT_0 = QuantityId(105);
 inline constexpr QuantityId DENSITY_GRADIENT = QuantityId(108);
+/// sum_j V_j W_ij over the neighbours j that were at a free surface (C_j < 0.9) in the previous
+/// evaluation (Float): > 0 within one kernel support of a free surface.
+inline constexpr QuantityId SURFACE_NEIGHBOURS = QuantityId(109);
 }  // namespace FluidId
 
 enum class WallSlip : int { NO_SLIP = 0, FREE_SLIP = 1 };

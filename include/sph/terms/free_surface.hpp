@@ -23,29 +23,50 @@
 
 namespace num::sph {
 
-/// sum_{j != i} V_j W_ij into KERNEL_SUM; a reader adds the particle's own V_i W(0).
+/// sum_{j != i} V_j W_ij into KERNEL_SUM, and the same sum over the neighbours that were
+/// free-surface particles in the previous evaluation into SURFACE_NEIGHBOURS.
 template <int Dim>
 class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
+    static constexpr Float surfaceKernelSum = 0.9;
+
+    /// w0: W(0), for the particles' own term of their kernel sums.
+    explicit KernelSumPart(Float w0) : w0_(w0) {}
+
     bool needsKernelValues() const override { return true; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO);
+        r.template insert<Float>(FluidId::SURFACE_NEIGHBOURS, OrderEnum::ZERO);
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
-        m_ = s.template getValue<Float>(QuantityId::MASS);
-        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        const auto m = s.template getValue<Float>(QuantityId::MASS);
+        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const auto previous = s.template getValue<Float>(FluidId::KERNEL_SUM);
+        volume_.resize(s.size()), atSurface_.resize(s.size());
+        for (Size i = 0; i < s.size(); ++i) {
+            volume_[i] = m[i] / rho[i];
+            atSurface_[i] = isFluid(kind[i]) && previous[i] + volume_[i] * w0_ < surfaceKernelSum;
+        }
         c_ = r.template getValue<Float>(FluidId::KERNEL_SUM);
+        nearSurface_ = r.template getValue<Float>(FluidId::SURFACE_NEIGHBOURS);
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec&, const PairGeometry<Dim>& pair) {
-        c_[i] += m_[j] / rho_[j] * pair.w;
-        if constexpr (Symmetric) c_[j] += m_[i] / rho_[i] * pair.w;
+        c_[i] += volume_[j] * pair.w;
+        if (atSurface_[j]) nearSurface_[i] += volume_[j] * pair.w;
+        if constexpr (Symmetric) {
+            c_[j] += volume_[i] * pair.w;
+            if (atSurface_[i]) nearSurface_[j] += volume_[i] * pair.w;
+        }
     }
 
   private:
-    ArrayView<const Float> m_, rho_;
-    ArrayView<Float> c_;
+    Float w0_;
+    std::vector<Float> volume_;
+    std::vector<char> atSurface_;
+    ArrayView<Float> c_, nearSurface_;
 };
 
 /// Limits pressure and density at free-surface particles (see the top of this file). Place it
@@ -53,13 +74,13 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
 template <int Dim>
 class FreeSurfaceNoTension : public IEquationTerm<Dim> {
   public:
-    static constexpr Float surfaceKernelSum = 0.9;
+    static constexpr Float surfaceKernelSum = KernelSumPart<Dim>::surfaceKernelSum;
 
     explicit FreeSurfaceNoTension(EquationOfState eos) : eos_(eos) {}
 
     void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
-        d.template require<KernelSumPart<Dim>>();
         w0_ = RunKernel<Dim>(settings).W(0);
+        d.template require<KernelSumPart<Dim>>(w0_);
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
         const auto c = s.template getValue<Float>(FluidId::KERNEL_SUM);
@@ -79,6 +100,7 @@ class FreeSurfaceNoTension : public IEquationTerm<Dim> {
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, 1.0);
+        s.template insert<Float>(FluidId::SURFACE_NEIGHBOURS, OrderEnum::ZERO, 0.0);
     }
 
   private:

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Regenerates docs/first_run_2d.png, the picture on the README's first screen: the default scene
 # of fluid_sim (built by scripts/build.sh) run up to TIME seconds (default 3), its last picture.
-# Usage: scripts/readme_picture.sh [TIME] [fluid_sim arguments...]
+# Usage: scripts/readme_picture.sh [TIME] [fluid_sim arguments...]; FLUID_SIM=path picks the app.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 time="${1:-3}"
 shift || true
-app=./build/release/apps/fluid_sim/fluid_sim
+app="${FLUID_SIM:-./build/release/apps/fluid_sim/fluid_sim}"
 [ -x "$app" ] || ./scripts/build.sh
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT

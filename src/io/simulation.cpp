@@ -227,8 +227,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
 
     if (status == "unstable")
         throw AppError(ExitCode::UNSTABLE, message + " (last good output kept in " + dir + ")");
-    if (!opt.quiet)
-        printRunReport(opt.program, outputs, scene, end, summary);
+    if (!opt.quiet) printRunReport(opt.program, outputs, scene, end, summary);
     return status == "interrupted" ? int(ExitCode::INTERRUPTED) : 0;
 }
 

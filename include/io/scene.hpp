@@ -40,8 +40,8 @@ struct BoundarySide {
 struct MaterialSpec {
     std::string name;
     double density = sph::defaults::density, viscosity = sph::defaults::viscosity;
-    double artificialViscosity = sph::defaults::artificialViscosity;
-    std::optional<double> soundSpeed;  ///< empty: "auto"
+    std::optional<double> artificialViscosity;  ///< empty: "auto" (sph::defaults)
+    std::optional<double> soundSpeed;           ///< empty: "auto"
     double conductivity = sph::defaults::conductivity;
     double heatCapacity = sph::defaults::heatCapacity, thermalExpansion = 0;
     double referenceTemperature = sph::defaults::referenceTemperature;

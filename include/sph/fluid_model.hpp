@@ -113,8 +113,8 @@ struct FluidModel {
     bool deltaSphHydrostatic = true;  ///< remove the hydrostatic part from the diffusion
 
     // Viscosity (both may be on).
-    Float viscosity = 0;  ///< kinematic nu of the laminar term [m^2/s]; 0: off
-    Float artificialViscosity = defaults::artificialViscosity;  ///< Monaghan's alpha; 0: off
+    Float viscosity = 0;            ///< kinematic nu of the laminar term [m^2/s]; 0: off
+    Float artificialViscosity = 0;  ///< Monaghan's alpha; 0: off (defaults::artificialViscosityFor)
 
     // Particle regularity.
     bool shifting = defaults::shifting;  ///< particle shifting (terms/particle_shifting.hpp)

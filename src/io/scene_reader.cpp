@@ -55,7 +55,10 @@ MaterialSpec readMaterial(const At& a, const std::string& name) {
         m.soundSpeed = a["sound_speed"].number(0, 1e6, true, "m/s");
     }
     m.viscosity = a.number("viscosity", m.viscosity, 0, 1e3, false, "m^2/s");
-    m.artificialViscosity = a.number("artificial_viscosity", m.artificialViscosity, 0, 10);
+    if (a.has("artificial_viscosity") && !a["artificial_viscosity"].v.is_string())
+        m.artificialViscosity = a.number("artificial_viscosity", 0, 0, 10);
+    else if (a.has("artificial_viscosity"))
+        a["artificial_viscosity"].choice({"auto"});
     m.conductivity = a.number("conductivity", m.conductivity, 0, 1e6, false, "W/(m K)");
     m.heatCapacity = a.number("heat_capacity", m.heatCapacity, 0, 1e7, true, "J/(kg K)");
     m.thermalExpansion = a.number("thermal_expansion", m.thermalExpansion, 0, 0.01, false, "1/K");

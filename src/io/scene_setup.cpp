@@ -32,13 +32,13 @@ sph::Vector<Dim> at(const VectorField<Dim>& f, const sph::Vector<Dim>& x, double
     return v;
 }
 
-std::shared_ptr<sph::Material> makeMaterial(const MaterialSpec& m, double c0) {
+std::shared_ptr<sph::Material> makeMaterial(const MaterialSpec& m, double c0, double alpha) {
     auto mat = std::make_shared<sph::Material>(m.name);
     mat->params()
         .set("density", m.density)
         .set("sound_speed", m.soundSpeed ? *m.soundSpeed : c0)
         .set("viscosity", m.viscosity)
-        .set("artificial_viscosity", m.artificialViscosity)
+        .set("artificial_viscosity", m.artificialViscosity.value_or(alpha))
         .set("conductivity", m.conductivity)
         .set("heat_capacity", m.heatCapacity)
         .set("thermal_expansion", m.thermalExpansion)
@@ -217,7 +217,9 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads) {
                                                      : sph::DensityMode::CONTINUITY;
     m.deltaSph = scene.physics.densityDiffusion;
     m.viscosity = fluid.viscosity;
-    m.artificialViscosity = fluid.artificialViscosity;
+    m.artificialViscosity =
+        fluid.artificialViscosity.value_or(sph::defaults::artificialViscosityFor(
+            fluid.viscosity, scene.hOverSpacing * dx, m.c0(), Dim));
     m.shifting = scene.physics.shifting;
     m.freeSurfaceNoTension = scene.physics.freeSurfaceNoTension;
     bool gravityOn = false;
@@ -225,7 +227,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads) {
         gravityOn |= !scene.gravity[k].isConstant() || scene.gravity[k](0, 0, 0, 0) != 0;
     if (gravityOn) m.bodyForce = setup.gravity;
     for (const auto& [name, spec] : scene.materials)
-        m.materials.push_back(makeMaterial(spec, m.c0()));
+        m.materials.push_back(makeMaterial(spec, m.c0(), m.artificialViscosity));
     if (scene.physics.heat) {
         m.heat.conduction = true;
         m.heat.walls = sph::ThermalCondition::ADIABATIC;

@@ -19,6 +19,7 @@
 #include "io/file.hpp"
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
+#include "physical_check.hpp"
 #include "run_limits.hpp"
 #include "run_report.hpp"
 #include "run_state.hpp"
@@ -146,6 +147,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
                       : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
                                                  : Progress::Mode::PLAIN,
                       run.time(), scene.endTime);
+    PhysicalCheck physical(setup.velocityScale, setup.model.c0(), setup.model.restDensity);
     std::vector<std::pair<double, std::string>> checkpoints;
     auto resumable = [&] {
         RunState<Dim> r = state;
@@ -190,6 +192,11 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
             particleSteps += double(storage.size());
             checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
                         opt.fieldNames);
+            if (const std::string w = physical.check(storage, run.time());
+                !w.empty() && !opt.quiet) {
+                progress.clearLine();
+                std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
+            }
             state.removed += removeOutflow(storage, scene);
             emitters.emit(storage, run.time());
             progress.update(run.time(), dt, storage.size(), run.steps());
@@ -220,7 +227,9 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
                                          opt.backend, status, message, solver.meanNeighbours());
     for (const auto& [t, f] : checkpoints)
         summary["checkpoints"].push_back({{"time", t}, {"file", f}});
-    addEndOfRun(summary, end, scene.warnings);
+    std::vector<std::string> warnings = scene.warnings;
+    warnings.insert(warnings.end(), physical.warnings().begin(), physical.warnings().end());
+    addEndOfRun(summary, end, warnings);
     writeFileAtomically(outputs.path("summary.json"), summary.dump(2) + "\n");
     // Until here a first signal only sets the flag: the video and the summary are still made.
     for (int sig : kStopSignals) std::signal(sig, SIG_DFL);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "io/scene_loader.hpp"
+#include "physical_check.hpp"
 #include "run_state.hpp"
 
 using namespace num::io;
@@ -54,4 +55,65 @@ TEST(HealthCheck, EveryWrittenFieldIsChecked) {
     Tiny t;
     t.storage.getDt<num::sph::Vector<2>>(QuantityId::POSITION)[5][1] = kNan;
     EXPECT_NE(t.check().find("non-finite velocity"), std::string::npos);
+}
+
+// The check of unphysical but finite states (physical_check.hpp): warnings once per kind,
+// a stop (exit code 9) where the run is lost.
+namespace {
+
+struct Physical : Tiny {
+    PhysicalCheck check{setup.velocityScale, setup.model.c0(), setup.model.restDensity};
+    /// Sets the speed of the first fluid particle to `factor` times the velocity scale.
+    void speed(double factor) {
+        auto v = storage.getDt<num::sph::Vector<2>>(QuantityId::POSITION);
+        const auto kind = storage.getValue<int>(QuantityId::KIND);
+        for (std::size_t i = 0; i < storage.size(); ++i)
+            if (kind[i] == int(num::sph::ParticleKind::FLUID)) {
+                v[i] = num::sph::Vector<2>{{factor * setup.velocityScale, 0}};
+                return;
+            }
+    }
+};
+
+}  // namespace
+
+TEST(PhysicalCheck, FlowAtItsScalePasses) {
+    Physical p;
+    p.speed(1.0);
+    EXPECT_EQ(p.check.check(p.storage, 0.1), "");
+    EXPECT_TRUE(p.check.warnings().empty());
+}
+
+TEST(PhysicalCheck, SprayFarAboveTheScaleWarnsOnce) {
+    Physical p;
+    p.speed(3.5);  // above 3 U, below c0 (20 m/s, U = 2 m/s: free fall over 0.2 m)
+    const std::string w = p.check.check(p.storage, 0.1);
+    EXPECT_NE(w.find("times the velocity scale"), std::string::npos) << w;
+    EXPECT_EQ(p.check.check(p.storage, 0.2), "");  // once per kind
+    EXPECT_EQ(p.check.warnings().size(), 1u);
+}
+
+TEST(PhysicalCheck, SupersonicFlowStopsTheRun) {
+    Physical p;
+    p.speed(1.05 * p.setup.model.c0() / p.setup.velocityScale);
+    try {
+        p.check.check(p.storage, 0.1);
+        FAIL() << "no stop";
+    } catch (const AppError& e) {
+        EXPECT_EQ(e.code(), ExitCode::UNSTABLE);
+        EXPECT_NE(std::string(e.what()).find("sound speed"), std::string::npos) << e.what();
+    }
+}
+
+TEST(PhysicalCheck, DensityFarFromRestWarnsThenStops) {
+    Physical p;
+    auto rho = p.storage.getValue<double>(QuantityId::DENSITY);
+    const auto kind = p.storage.getValue<int>(QuantityId::KIND);
+    std::size_t fluid = 0;
+    while (kind[fluid] != int(num::sph::ParticleKind::FLUID)) ++fluid;
+    const double rho0 = p.setup.model.restDensity;
+    rho[fluid] = 1.3 * rho0;
+    EXPECT_NE(p.check.check(p.storage, 0.1).find("more than 20 %"), std::string::npos);
+    rho[fluid] = 2.5 * rho0;
+    EXPECT_THROW(p.check.check(p.storage, 0.2), AppError);
 }

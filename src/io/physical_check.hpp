@@ -1,0 +1,88 @@
+// Unphysical states that stay finite: a weakly-compressible run can throw spray far faster
+// than its flow or squeeze particles far from the rest density without any value becoming
+// NaN. The check compares every fluid particle with the scales the scene set:
+//   speed:   |v| > 3 U warns (U the velocity scale of the sound speed, c0 = 10 U: the Mach
+//            number passes 0.3 and density errors pass about 5 %, Monaghan 1994, sec. 3);
+//            |v| >= c0 stops the run: supersonic flow is outside the weakly-compressible model;
+//   density: |rho / rho0 - 1| > 0.2 warns (the model is built for about 1 %);
+//            rho < rho0 / 2 or rho > 2 rho0 stops the run.
+// Each kind of warning is reported once, with its time and figures, on the terminal and in
+// summary.json; a stop is the app's UNSTABLE error (exit 9), the last good output kept.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "io/errors.hpp"
+#include "sph/storage.hpp"
+#include "sph/types.hpp"
+
+namespace num::io {
+
+class PhysicalCheck {
+  public:
+    /// U: the velocity scale [m/s]; c0: the sound speed [m/s]; rho0: the rest density.
+    PhysicalCheck(double U, double c0, double rho0) : U_(U), c0_(c0), rho0_(rho0) {}
+
+    /// Checks the fluid particles at time t; returns a new warning (empty if none) and throws
+    /// AppError(UNSTABLE) where the run is lost.
+    template <int Dim>
+    std::string check(const sph::Storage<Dim>& s, double t) {
+        const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+        const auto rho = s.template getValue<double>(sph::QuantityId::DENSITY);
+        const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
+        double vmax = 0, rhoMin = rho0_, rhoMax = rho0_;
+        for (sph::Size i = 0; i < s.size(); ++i) {
+            if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+            vmax = std::max(vmax, norm(v[i]));
+            rhoMin = std::min(rhoMin, rho[i]), rhoMax = std::max(rhoMax, rho[i]);
+        }
+        const std::string at = "at t = " + number(t) + " s ";
+        if (vmax >= c0_)
+            throw AppError(ExitCode::UNSTABLE,
+                           at + "a fluid particle moves at " + number(vmax) +
+                               " m/s, at or above the sound speed " + number(c0_) +
+                               " m/s: the run left the weakly-compressible model; raise the "
+                               "material's sound_speed or physics.max_speed, or lower time.cfl");
+        if (rhoMin < 0.5 * rho0_ || rhoMax > 2 * rho0_)
+            throw AppError(ExitCode::UNSTABLE,
+                           at + "the fluid density reached " +
+                               number(rhoMin < 0.5 * rho0_ ? rhoMin : rhoMax) +
+                               " kg/m^3 against the rest density " + number(rho0_) +
+                               ": the run is lost; raise the sound speed or refine the spacing");
+        std::string warning;
+        if (!speedWarned_ && vmax > 3 * U_) {
+            speedWarned_ = true;
+            warning = at + "a fluid particle moves at " + number(vmax) + " m/s, " +
+                      number(vmax / U_) + " times the velocity scale U = " + number(U_) +
+                      " m/s the sound speed was set for: spray this fast is not physical; set "
+                      "physics.max_speed to the speed you expect";
+        } else if (!densityWarned_ && (rhoMax > 1.2 * rho0_ || rhoMin < 0.8 * rho0_)) {
+            densityWarned_ = true;
+            warning = at + "the fluid density ranges over " + number(rhoMin) + " to " +
+                      number(rhoMax) + " kg/m^3, more than 20 % from the rest density " +
+                      number(rho0_) +
+                      ": the fluid is far from incompressible; raise the "
+                      "sound speed";
+        }
+        if (!warning.empty()) warnings_.push_back(warning);
+        return warning;
+    }
+
+    const std::vector<std::string>& warnings() const { return warnings_; }
+
+  private:
+    static std::string number(double x) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.3g", x);
+        return buf;
+    }
+
+    double U_, c0_, rho0_;
+    bool speedWarned_ = false, densityWarned_ = false;
+    std::vector<std::string> warnings_;
+};
+
+}  // namespace num::io

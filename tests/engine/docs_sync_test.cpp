@@ -1,10 +1,14 @@
 // docs/extending.md shows the full code of both examples: it must be the code that is built
-// and tested, character for character.
+// and tested, character for character. docs/scenes.md states the numerical defaults: they must
+// be those of sph/defaults.hpp, the ones the scene reader uses.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "io/scene.hpp"
+#include "sph/defaults.hpp"
 
 namespace {
 
@@ -25,6 +29,45 @@ TEST(Docs, ExtendingShowsTheExamplesVerbatim) {
         EXPECT_NE(doc.find("```cpp\n" + code + "```"), std::string::npos)
             << example << " differs from its copy in docs/extending.md";
     }
+}
+
+/// The row of docs/scenes.md's tables for `key`, from its first cell on.
+std::string docRow(const std::string& doc, const std::string& key) {
+    const std::size_t at = doc.find("| `" + key + "` |");
+    EXPECT_NE(at, std::string::npos) << key << " has no row in docs/scenes.md";
+    return at == std::string::npos ? "" : doc.substr(at, doc.find('\n', at) - at);
+}
+
+TEST(Docs, ScenesStateTheDefaults) {
+    namespace d = num::sph::defaults;
+    const std::string doc = readFile(std::string(NUMERICS_SOURCE_DIR) + "/docs/scenes.md");
+    auto cell = [](const std::string& v) { return "| " + v + " |"; };
+    auto number = [](double x) {
+        std::ostringstream s;
+        s << x;
+        return s.str();
+    };
+    const bool yes = true;
+    EXPECT_NE(docRow(doc, "h_over_spacing").find(cell(number(d::hOverSpacing))), std::string::npos);
+    EXPECT_NE(docRow(doc, "kernel").find(cell(std::string("`\"") + d::kernel + "\"`")),
+              std::string::npos);
+    EXPECT_NE(docRow(doc, "cfl").find(cell(number(d::cfl))), std::string::npos);
+    EXPECT_NE(docRow(doc, "density_diffusion").find(cell(number(d::densityDiffusion))),
+              std::string::npos);
+    EXPECT_NE(docRow(doc, "shifting").find(cell(d::shifting == yes ? "true" : "false")),
+              std::string::npos);
+    EXPECT_NE(docRow(doc, "free_surface_clamp")
+                  .find(cell(d::freeSurfaceNoTension == yes ? "true" : "false")),
+              std::string::npos);
+    EXPECT_NE(docRow(doc, "eos").find(cell(std::string("`\"") + d::eos + "\"`")),
+              std::string::npos);
+    // The scene reader starts from the same values.
+    const num::io::Scene<2> scene;
+    EXPECT_EQ(scene.hOverSpacing, d::hOverSpacing);
+    EXPECT_EQ(scene.kernel, d::kernel);
+    EXPECT_EQ(scene.cfl, d::cfl);
+    EXPECT_EQ(scene.physics.shifting, d::shifting);
+    EXPECT_EQ(scene.physics.densityDiffusion, d::densityDiffusion);
 }
 
 }  // namespace

@@ -80,7 +80,7 @@ def main():
             builds.add(r.get("app_build", "unknown"))
         if doc is None or "failed" in doc:
             absent += 1
-            why = doc["failed"] if doc else "not run"
+            why = doc["failed"] if doc else c.get("doc_note", "not run")
             rows.append(f"| [{name}](#{name}) | {c['doc']:.4g} | – | – | **no result**: {why} |")
             sections.append(f"## {name}\n\nNo result at documentation resolution (spacing {c['doc']:.4g}): {why}\n")
             continue

@@ -4,7 +4,7 @@
 #   validation/run.sh [build-dir]      (default build/release)
 # Each run is `validation/cases.py run CASE --spacing DX` (the scene of scenes/validation/, the
 # app, its defaults); its result is kept as docs/validation/results/CASE@DX.json, from which
-# validation/report.py writes the report. Environment:
+# validation/report.py writes the report (a run that fails leaves no result, never an older one). Environment:
 #   NUMERICS_VALIDATION_CASES="a b"   only these cases (the others keep their stored results)
 #   NUMERICS_VALIDATION_KEEP=1        skip runs whose result is already stored
 #   NUMERICS_THREADS=N                threads of each app run (default 2); one run at a time
@@ -34,7 +34,7 @@ for c in $cases; do
     if [ "${NUMERICS_VALIDATION_KEEP:-0}" = 1 ] && [ -f "$out" ]; then continue; fi
     echo "== $c, spacing $dx"
     "$py" validation/cases.py run "$c" --spacing "$dx" --bin "$build/apps" --threads "$threads" \
-      --json "$out.tmp" && mv "$out.tmp" "$out" || { status=1; rm -f "$out.tmp"; }
+      --json "$out.tmp" && mv "$out.tmp" "$out" || { status=1; rm -f "$out.tmp" "$out"; }
   done
 done
 

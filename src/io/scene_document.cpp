@@ -78,9 +78,9 @@ SceneDocument SceneDocument::fromText(const std::string& text, const std::string
     } catch (const nlohmann::json::exception& e) {
         throw AppError(ExitCode::JSON_SYNTAX, file + ": " + jsonProblem(e));
     } catch (const TooDeep&) {
-        throw AppError(ExitCode::JSON_SYNTAX,
-                       file + ": JSON nested deeper than " + std::to_string(kMaxDepth) +
-                           " levels (a scene needs about 5)");
+        throw AppError(ExitCode::JSON_SYNTAX, file + ": JSON nested deeper than " +
+                                                  std::to_string(kMaxDepth) +
+                                                  " levels (a scene needs about 5)");
     }
     if (!doc.json_.is_object())
         throw sceneError(file, "", "a JSON object { ... }", detail::describe(doc.json_));

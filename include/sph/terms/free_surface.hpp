@@ -23,13 +23,21 @@
 
 namespace num::sph {
 
+/// The kernel sum below which a particle's support is cut: the particle is at a free surface.
+inline constexpr Float surfaceKernelSum = 0.9;
+
+/// Whether a particle is at a free surface, from KERNEL_SUM (its neighbours' sum), its volume
+/// V_i and W(0): C_i = KERNEL_SUM_i + V_i W(0) < 0.9.
+inline bool atFreeSurface(Float neighbourSum, Float volume, Float w0) {
+    return neighbourSum + volume * w0 < surfaceKernelSum;
+}
+
 /// sum_{j != i} V_j W_ij into KERNEL_SUM, and the same sum over the neighbours that were
 /// free-surface particles in the previous evaluation into SURFACE_NEIGHBOURS.
 template <int Dim>
 class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
-    static constexpr Float surfaceKernelSum = 0.9;
 
     /// w0: W(0), for the particles' own term of their kernel sums.
     explicit KernelSumPart(Float w0) : w0_(w0) {}
@@ -47,7 +55,7 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
         volume_.resize(s.size()), atSurface_.resize(s.size());
         for (Size i = 0; i < s.size(); ++i) {
             volume_[i] = m[i] / rho[i];
-            atSurface_[i] = isFluid(kind[i]) && previous[i] + volume_[i] * w0_ < surfaceKernelSum;
+            atSurface_[i] = isFluid(kind[i]) && atFreeSurface(previous[i], volume_[i], w0_);
         }
         c_ = r.template getValue<Float>(FluidId::KERNEL_SUM);
         nearSurface_ = r.template getValue<Float>(FluidId::SURFACE_NEIGHBOURS);
@@ -74,8 +82,6 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
 template <int Dim>
 class FreeSurfaceNoTension : public IEquationTerm<Dim> {
   public:
-    static constexpr Float surfaceKernelSum = KernelSumPart<Dim>::surfaceKernelSum;
-
     explicit FreeSurfaceNoTension(EquationOfState eos) : eos_(eos) {}
 
     void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
@@ -91,7 +97,7 @@ class FreeSurfaceNoTension : public IEquationTerm<Dim> {
         const Float pb = eos_.backgroundPressure, rho0 = eos_.rho0;
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                if (!isFluid(kind[i]) || !(c[i] + m[i] / rho[i] * w0_ < surfaceKernelSum)) continue;
+                if (!isFluid(kind[i]) || !atFreeSurface(c[i], m[i] / rho[i], w0_)) continue;
                 p[i] = std::max(p[i], pb);
                 rho[i] = std::max(rho[i], rho0);
             }

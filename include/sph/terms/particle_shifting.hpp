@@ -149,9 +149,8 @@ class ParticleShifting : public IEquationTerm<Dim> {
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 shift[i] = Vec{};
-                const Float kernelSum = c[i] + data_->volume[i] * w0;
-                if (!isFluid(kind[i]) || kernelSum < surfaceKernelSum || nearSurface[i] > 0 ||
-                    !(dt > 0))
+                if (!isFluid(kind[i]) || atFreeSurface(c[i], data_->volume[i], w0) ||
+                    nearSurface[i] > 0 || !(dt > 0))
                     continue;
                 Vec dr = gradC[i] * (-diffusion);
                 const Float len = norm(dr);
@@ -175,7 +174,6 @@ class ParticleShifting : public IEquationTerm<Dim> {
     }
 
   private:
-    static constexpr Float surfaceKernelSum = FreeSurfaceNoTension<Dim>::surfaceKernelSum;
     Float coefficient_, soundSpeed_;
     std::optional<RunKernel<Dim>> kernel_;
     std::optional<Float> lastTime_;

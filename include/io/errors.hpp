@@ -18,6 +18,7 @@ enum class ExitCode : int {
     OUTPUT = 7,        ///< output cannot be written (permissions, disk full)
     CHECKPOINT = 8,    ///< checkpoint missing, corrupted, truncated or incompatible
     UNSTABLE = 9,      ///< the run went unstable (NaN, particles leaving through a wall)
+    PLUGIN = 10,       ///< a plugin is not loadable, of another API version, or its code failed
     INTERRUPTED = 130  ///< stopped by Ctrl-C (SIGINT) or SIGTERM after writing final output
 };
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -34,9 +35,16 @@ class FieldNames {
         return it == names_.end() ? "" : it->second;
     }
     const std::map<QuantityId, std::string>& all() const { return names_; }
+    /// Leaves a quantity out of the outputs (a plugin's quantity the scene does not name).
+    FieldNames& hide(QuantityId id) {
+        hidden_.insert(id);
+        return *this;
+    }
+    bool hidden(QuantityId id) const { return hidden_.count(id) != 0; }
 
   private:
     std::map<QuantityId, std::string> names_;
+    std::set<QuantityId> hidden_;
 };
 
 /// The fields of the storage to write, standard ones first, in a fixed order.
@@ -60,6 +68,7 @@ std::vector<OutputField> outputFields(const sph::Storage<Dim>& s, const FieldNam
         if (s.has(id)) out.push_back({name, id, typeOf(id)});
     s.forEach([&](QuantityId id, const auto&) {
         const bool user = int(id) < 0 || int(id) >= int(QuantityId::USER_FIRST);
+        if (names.hidden(id)) return;
         std::string name = names.name(id);
         if (!user && name.empty()) return;
         for (const auto& f : out)

@@ -27,9 +27,11 @@ struct SceneSetup {
     sph::BodyForce<Dim> gravity;
 };
 
-/// Builds settings, model and geometry. `threads` goes into the settings.
+/// Builds settings, model and geometry. `threads` goes into the settings; `extraTerms` (a
+/// scene's plugin terms) join the model's extraTerms before any particle is made.
 template <int Dim>
-SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads);
+SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
+                               const sph::EquationHolder<Dim>& extraTerms = {});
 
 /// The initial particles: the model's particles, then the scene's per-particle expressions
 /// (temperature, pressure, velocity of fluid blocks) and thermal conditions of walls and bodies.

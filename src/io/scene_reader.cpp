@@ -225,7 +225,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     const At root{doc.json(), doc.file(), ""};
     root.object(
         {"dimension", "name", "description", "domain", "boundaries", "particles", "time", "gravity",
-         "materials", "fluids", "bodies", "emitters", "output", "probes", "physics"},
+         "materials", "fluids", "bodies", "emitters", "output", "probes", "physics", "plugins"},
         {"dimension", "domain", "boundaries", "particles", "time", "materials"});
     Scene<Dim> s;
     s.file = doc.file();

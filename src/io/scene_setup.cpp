@@ -159,7 +159,8 @@ std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
 }  // namespace
 
 template <int Dim>
-SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads) {
+SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
+                               const sph::EquationHolder<Dim>& extraTerms) {
     SceneSetup<Dim> setup;
     const double dx = scene.spacing;
     // Materials in name order; the first fluid's material sets the equation of state.
@@ -236,6 +237,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads) {
         for (const auto& [name, spec] : scene.materials) expands |= spec.thermalExpansion != 0;
         m.heat.buoyancy = scene.physics.buoyancy && expands && gravityOn;
     }
+    m.extraTerms += extraTerms;
 
     sph::RunSettings& s = setup.settings;
     s.set("kernel", scene.kernel);
@@ -415,8 +417,8 @@ std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t) {
     return added;
 }
 
-template SceneSetup<2> makeSceneSetup<2>(const Scene<2>&, int);
-template SceneSetup<3> makeSceneSetup<3>(const Scene<3>&, int);
+template SceneSetup<2> makeSceneSetup<2>(const Scene<2>&, int, const sph::EquationHolder<2>&);
+template SceneSetup<3> makeSceneSetup<3>(const Scene<3>&, int, const sph::EquationHolder<3>&);
 template sph::Storage<2> makeInitialStorage<2>(const Scene<2>&, SceneSetup<2>&);
 template sph::Storage<3> makeInitialStorage<3>(const Scene<3>&, SceneSetup<3>&);
 template class Emitters<2>;

@@ -20,6 +20,7 @@
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
 #include "physical_check.hpp"
+#include "plugins.hpp"
 #include "run_limits.hpp"
 #include "run_report.hpp"
 #include "run_state.hpp"
@@ -67,8 +68,10 @@ SceneDocument sceneOfCheckpoint(const std::string& path, int dimension) {
 }
 
 template <int Dim>
-int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
+int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     const auto wallStart = std::chrono::steady_clock::now();
+    // Plugin libraries by absolute path: the scene a checkpoint stores finds them anywhere.
+    const SceneDocument doc = withAbsolutePluginPaths(given);
     Scene<Dim> scene = readScene<Dim>(doc);
     if (opt.endTime) scene.endTime = *opt.endTime;
     if (opt.outDir) scene.output.directory = *opt.outDir;
@@ -79,12 +82,14 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
                         : opt.threads > 0    ? opt.threads
                                           : int(std::max(1u, std::thread::hardware_concurrency()));
     checkGravity(scene);
-    SceneSetup<Dim> setup = makeSceneSetup(scene, threads);
+    const ScenePlugins<Dim> plugins = loadPlugins<Dim>(doc);  // before set-up, in scene order
+    SceneSetup<Dim> setup = makeSceneSetup(scene, threads, plugins.terms);
     checkRunLimits(scene, setup, opt.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(scene, setup);
     checkInitialState(scene, setup, initial);
     const std::string dir = scene.output.directory;
-    const std::string fingerprint = runFingerprint(doc, setup, initial);
+    const std::string fingerprint = runFingerprint(doc, setup, initial) + plugins.fingerprint;
+    const FieldNames fieldNames = pluginFieldNames(plugins, initial, opt.fieldNames, doc.file());
 
     RunState<Dim> state;
     sph::Storage<Dim> storage;
@@ -112,7 +117,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     emitters.layers() = state.emitterLayers.empty() ? emitters.layers() : state.emitterLayers;
     emitters.setEmitted(state.emitted);
 
-    Outputs<Dim> outputs(scene, setup, dir, initial, opt.fieldNames);
+    Outputs<Dim> outputs(scene, setup, dir, initial, fieldNames);
     auto scheduler = sph::makeScheduler(opt.backend, Size(threads));
     sph::Solver<Dim> solver(*scheduler, setup.settings,
                             sph::makeFluidEquations(setup.model, setup.geometry),
@@ -177,6 +182,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     if (!opt.restart) output(), lastOutput = 0;
 
     std::string status = "completed", message;
+    ExitCode failure = ExitCode::OK;
     double particleSteps = 0;
     const std::uint64_t startSteps = run.steps();
     try {
@@ -191,7 +197,7 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
             const double dt = run.step(stop);
             particleSteps += double(storage.size());
             checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
-                        opt.fieldNames);
+                        fieldNames);
             if (const std::string w = physical.check(storage, run.time());
                 !w.empty() && !opt.quiet) {
                 progress.clearLine();
@@ -213,8 +219,10 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
         if (run.time() != lastOutput) output();
         if (gStop) writeCheckpoint("checkpoint_interrupted.chk");
     } catch (const AppError& e) {
-        if (e.code() != ExitCode::UNSTABLE) throw;
-        status = "unstable", message = e.what();
+        // A plugin term that failed in a step stops the run as an instability does.
+        if (e.code() != ExitCode::UNSTABLE && e.code() != ExitCode::PLUGIN) throw;
+        status = e.code() == ExitCode::UNSTABLE ? "unstable" : "failed", message = e.what();
+        failure = e.code();
     }
     progress.finish(run.time(), run.lastDt(), storage.size(), run.steps());
 
@@ -234,8 +242,8 @@ int runSimulation(const SceneDocument& doc, const RunOptions& opt) {
     // Until here a first signal only sets the flag: the video and the summary are still made.
     for (int sig : kStopSignals) std::signal(sig, SIG_DFL);
 
-    if (status == "unstable")
-        throw AppError(ExitCode::UNSTABLE, message + " (last good output kept in " + dir + ")");
+    if (status == "unstable" || status == "failed")
+        throw AppError(failure, message + " (last good output kept in " + dir + ")");
     if (!opt.quiet) printRunReport(opt.program, outputs, scene, end, summary);
     return status == "interrupted" ? int(ExitCode::INTERRUPTED) : 0;
 }

@@ -1,0 +1,279 @@
+// Loading the plugins a scene names: dlopen, the versioned entry point, the registry of term
+// factories, the terms made from their parameters, and the fields they write.
+#include "plugins.hpp"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "io/plugin.hpp"
+#include "json_check.hpp"
+#include "plugin_term.hpp"
+
+namespace num::io {
+
+using detail::At;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Element i of an array, its path in the --set form ("plugins.0.terms.1").
+At element(const At& a, std::size_t i) { return {a.v.at(i), a.file, a.join(std::to_string(i))}; }
+
+bool plainName(const std::string& s) {
+    return !s.empty() && s.size() <= 64 && std::all_of(s.begin(), s.end(), [](char c) {
+        return std::isalnum((unsigned char)c) || c == '_' || c == '-';
+    });
+}
+
+bool userId(sph::QuantityId id) {
+    return int(id) < 0 || int(id) >= int(sph::QuantityId::USER_FIRST);
+}
+
+/// What one library registered.
+struct Library {
+    std::string path;
+    std::map<std::string, plugin::TermFactory<2>> terms2;
+    std::map<std::string, plugin::TermFactory<3>> terms3;
+    std::map<std::string, sph::QuantityId> fields;
+};
+
+class HostRegistry final : public plugin::Registry {
+  public:
+    explicit HostRegistry(Library& lib) : lib_(lib) {}
+    void addTerm2(const std::string& name, plugin::TermFactory<2> f) override {
+        add(lib_.terms2, name, std::move(f), "2D");
+    }
+    void addTerm3(const std::string& name, plugin::TermFactory<3> f) override {
+        add(lib_.terms3, name, std::move(f), "3D");
+    }
+    void addField(const std::string& name, sph::QuantityId id) override {
+        if (!plainName(name) || lib_.fields.count(name))
+            refuse("a field named \"" + name +
+                   "\": expected a new name of 1 to 64 letters, "
+                   "digits, '_' or '-'");
+        if (!userId(id))
+            refuse("the field \"" + name + "\" with quantity id " + std::to_string(int(id)) +
+                   ": expected a user id (negative or >= QuantityId::USER_FIRST = 1000)");
+        lib_.fields[name] = id;
+    }
+
+  private:
+    template <class Map, class F>
+    void add(Map& map, const std::string& name, F f, const char* dim) {
+        if (!plainName(name) || map.count(name) || !f)
+            refuse(std::string("a ") + dim + " term named \"" + name +
+                   "\": expected a factory under a new name of 1 to 64 letters, digits, '_' "
+                   "or '-'");
+        map[name] = std::move(f);
+    }
+    [[noreturn]] void refuse(const std::string& what) const {
+        throw AppError(ExitCode::PLUGIN, lib_.path + ": the plugin registers " + what);
+    }
+    Library& lib_;
+};
+
+std::string fileHash(const std::string& path) {
+    // FNV-1a (64 bit): tells a rebuilt library from the one a checkpoint was written with.
+    std::ifstream in(path, std::ios::binary);
+    std::uint64_t h = 1469598103934665603ull;
+    char buf[65536];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+        for (std::streamsize k = 0; k < in.gcount(); ++k)
+            h = (h ^ (unsigned char)buf[k]) * 1099511628211ull;
+        if (!in) break;
+    }
+    char text[24];
+    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
+    return text;
+}
+
+std::string absoluteLibrary(const std::string& library, const std::string& sceneFile) {
+    fs::path p(library);
+    if (p.is_relative()) p = fs::path(sceneFile).parent_path() / p;
+    return fs::absolute(p).lexically_normal().string();
+}
+
+/// dlopens one library (never closed: its code runs until the process ends) and calls its
+/// entry point with a registry.
+Library openLibrary(const At& at, const std::string& path, const std::string& program) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+        at.fail("the path of a plugin library (a file relative to the scene file, or absolute)",
+                "no such file: " + path);
+    Library lib;
+    lib.path = path;
+    dlerror();
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+        const char* why = dlerror();
+        throw AppError(ExitCode::PLUGIN, at.file + ": " + at.path + ": cannot load " + path + ": " +
+                                             (why ? why : "unknown error"));
+    }
+    auto entry = reinterpret_cast<plugin::EntryFunction>(dlsym(handle, NUMERICS_PLUGIN_ENTRY_NAME));
+    if (!entry)
+        throw AppError(ExitCode::PLUGIN,
+                       at.file + ": " + at.path + ": " + path +
+                           " is not a numerics plugin: it does not export " +
+                           NUMERICS_PLUGIN_ENTRY_NAME +
+                           " (define it with NUMERICS_PLUGIN from io/plugin.hpp and build the "
+                           "library with numerics_add_plugin)");
+    HostRegistry registry(lib);
+    int version = 0;
+    try {
+        version = entry(NUMERICS_PLUGIN_API_VERSION, &registry);
+    } catch (const AppError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw AppError(ExitCode::PLUGIN, path + ": the plugin failed to register: " + e.what());
+    }
+    if (version != NUMERICS_PLUGIN_API_VERSION)
+        throw AppError(ExitCode::PLUGIN, at.file + ": " + at.path + ": " + path +
+                                             " was built against plugin API version " +
+                                             std::to_string(version) + ", " + program +
+                                             " has version " +
+                                             std::to_string(NUMERICS_PLUGIN_API_VERSION) +
+                                             ": rebuild the plugin against this numerics");
+    return lib;
+}
+
+template <int Dim>
+const std::map<std::string, plugin::TermFactory<Dim>>& factories(const Library& lib) {
+    if constexpr (Dim == 2)
+        return lib.terms2;
+    else
+        return lib.terms3;
+}
+
+std::string names(const std::vector<std::string>& list) {
+    std::string text;
+    for (const auto& n : list) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+template <int Dim>
+std::shared_ptr<sph::IEquationTerm<Dim>> makeTerm(const Library& lib, const At& t,
+                                                  const std::string& program) {
+    if (!t.v.is_object()) t.fail("an object {\"term\": NAME, parameters...}");
+    const At nameAt = t.required("term");
+    const std::string name = nameAt.string();
+    const auto& mine = factories<Dim>(lib);
+    const auto& other = factories<5 - Dim>(lib);
+    const std::string file = fs::path(lib.path).filename().string();
+    if (!mine.count(name) && other.count(name))
+        nameAt.fail("a term of " + file + " for " + std::to_string(Dim) + "D scenes",
+                    "the plugin provides \"" + name + "\" for " + std::to_string(5 - Dim) +
+                        "D only; " + program + " runs " + std::to_string(Dim) +
+                        "D scenes: the plugin must register a " + std::to_string(Dim) +
+                        "D term of that name");
+    if (!mine.count(name)) {
+        std::vector<std::string> known;
+        for (const auto& [n, f] : mine) known.push_back(n);
+        const std::string guess = detail::closest(name, known);
+        nameAt.fail("a term of " + file + " (" + (known.empty() ? "none" : names(known)) + ")",
+                    guess.empty() ? "" : "did you mean \"" + guess + "\"?");
+    }
+    const std::string label = "term \"" + name + "\" (" + t.path + ", " + file + ")";
+    std::shared_ptr<sph::IEquationTerm<Dim>> term;
+    try {
+        term = mine.at(name)(plugin::Parameters(t.v, t.file, t.path));
+    } catch (const AppError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw AppError(ExitCode::PLUGIN,
+                       label + " failed when made from its parameters: " + std::string(e.what()));
+    }
+    if (!term) throw AppError(ExitCode::PLUGIN, label + ": its factory returned no term");
+    return std::make_shared<PluginTerm<Dim>>(std::move(term), label);
+}
+
+}  // namespace
+
+SceneDocument withAbsolutePluginPaths(const SceneDocument& doc) {
+    SceneDocument out = doc;
+    const auto& plugins = doc.json().contains("plugins") ? doc.json()["plugins"] : nullptr;
+    if (!plugins.is_array()) return out;
+    for (std::size_t i = 0; i < plugins.size(); ++i) {
+        if (!plugins[i].is_object() || !plugins[i].contains("library") ||
+            !plugins[i]["library"].is_string())
+            continue;  // reported by loadPlugins
+        const std::string path =
+            absoluteLibrary(plugins[i]["library"].get<std::string>(), doc.file());
+        out.set("plugins." + std::to_string(i) + ".library=" + nlohmann::json(path).dump());
+    }
+    return out;
+}
+
+template <int Dim>
+ScenePlugins<Dim> loadPlugins(const SceneDocument& doc) {
+    ScenePlugins<Dim> out;
+    const At root{doc.json(), doc.file(), ""};
+    if (!root.has("plugins")) return out;
+    const std::string program = Dim == 2 ? "fluid_sim" : "fluid_sim_3d";
+    const At list = root["plugins"];
+    if (!list.v.is_array())
+        list.fail("an array of plugins, each {\"library\": FILE, \"terms\": [...]}");
+    for (std::size_t i = 0; i < list.v.size(); ++i) {
+        const At p = element(list, i);
+        p.object({"library", "terms", "fields"}, {"library", "terms"});
+        const std::string path = absoluteLibrary(p["library"].string(), doc.file());
+        const Library lib = openLibrary(p["library"], path, program);
+        const std::string key = "plugin " + std::to_string(i);
+        out.fingerprint += key + " library = " + path + "\n";
+        out.fingerprint += key + " library content (FNV-1a) = " + fileHash(path) + "\n";
+        const At terms = p["terms"];
+        if (!terms.v.is_array() || terms.v.empty())
+            terms.fail("a non-empty array of terms, each {\"term\": NAME, parameters...}");
+        for (std::size_t k = 0; k < terms.v.size(); ++k)
+            out.terms += sph::EquationHolder<Dim>(makeTerm<Dim>(lib, element(terms, k), program));
+        if (!p.has("fields")) continue;
+        const At fields = p["fields"];
+        if (!fields.v.is_array()) fields.fail("an array of field names");
+        for (std::size_t k = 0; k < fields.v.size(); ++k) {
+            const At f = element(fields, k);
+            const std::string name = f.string();
+            if (!lib.fields.count(name)) {
+                std::vector<std::string> known;
+                for (const auto& [n, id] : lib.fields) known.push_back(n);
+                const std::string guess = detail::closest(name, known);
+                f.fail("a field of " + fs::path(path).filename().string() + " (" +
+                           (known.empty() ? "it declares none" : names(known)) + ")",
+                       guess.empty() ? "" : "did you mean \"" + guess + "\"?");
+            }
+            out.fields.push_back({lib.fields.at(name), name, f.path});
+        }
+    }
+    return out;
+}
+
+template <int Dim>
+FieldNames pluginFieldNames(const ScenePlugins<Dim>& plugins, const sph::Storage<Dim>& initial,
+                            FieldNames names, const std::string& file) {
+    if (plugins.empty()) return names;
+    for (const auto& f : plugins.fields) {
+        if (!initial.has(f.id))
+            throw AppError(ExitCode::PLUGIN, file + ": " + f.path +
+                                                 ": the plugin declares the field \"" + f.name +
+                                                 "\" (quantity " + std::to_string(int(f.id)) +
+                                                 "), but none of the scene's terms created it");
+        names.add(f.id, f.name);
+    }
+    initial.forEach([&](sph::QuantityId id, const sph::Quantity<Dim>&) {
+        if (userId(id) && names.name(id).empty()) names.hide(id);
+    });
+    return names;
+}
+
+template ScenePlugins<2> loadPlugins<2>(const SceneDocument&);
+template ScenePlugins<3> loadPlugins<3>(const SceneDocument&);
+template FieldNames pluginFieldNames<2>(const ScenePlugins<2>&, const sph::Storage<2>&, FieldNames,
+                                        const std::string&);
+template FieldNames pluginFieldNames<3>(const ScenePlugins<3>&, const sph::Storage<3>&, FieldNames,
+                                        const std::string&);
+
+}  // namespace num::io

@@ -1,0 +1,46 @@
+// The "plugins" of a scene (internal to numerics_io): shared libraries loaded with dlopen, in the
+// order listed, before the run is set up; their terms join the fluid model (extraTerms).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "io/fields.hpp"
+#include "io/scene_loader.hpp"
+#include "sph/equation_term.hpp"
+
+namespace num::io {
+
+template <int Dim>
+struct ScenePlugins {
+    sph::EquationHolder<Dim> terms;  ///< every plugin's terms, in scene order
+    /// The quantities the scene names in a plugin's "fields": id, name, and where it was named.
+    struct Field {
+        sph::QuantityId id;
+        std::string name, path;
+    };
+    std::vector<Field> fields;
+    /// "key = value" lines for the checkpoint's fingerprint: each library and its content.
+    std::string fingerprint;
+    bool empty() const { return terms.size() == 0; }
+};
+
+/// A copy of the document whose plugin library paths are absolute (relative paths are taken
+/// from the scene file's directory), so the scene a checkpoint stores finds them from anywhere.
+SceneDocument withAbsolutePluginPaths(const SceneDocument& doc);
+
+/// Loads the libraries of the scene's "plugins" and makes their terms (each guarded, see
+/// plugin_term.hpp). Scene mistakes (missing file, unknown term, bad parameters, a term of the
+/// other dimension) are AppErrors SCENE; a library that is not a plugin, of another API version
+/// or whose code fails is PLUGIN.
+template <int Dim>
+ScenePlugins<Dim> loadPlugins(const SceneDocument& doc);
+
+/// The output names with the plugins' fields: the fields the scene names are written under
+/// their names, other quantities of user ids are left out. Checks that the terms created every
+/// named field. Without plugins, `names` unchanged.
+template <int Dim>
+FieldNames pluginFieldNames(const ScenePlugins<Dim>& plugins, const sph::Storage<Dim>& initial,
+                            FieldNames names, const std::string& file);
+
+}  // namespace num::io

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <concepts>
 #include <memory>
 #include <optional>
 #include <span>
@@ -15,6 +16,7 @@
 
 #include "sph/settings.hpp"
 #include "sph/storage.hpp"
+#include "sph/type_name.hpp"
 
 namespace num::sph {
 
@@ -52,8 +54,11 @@ class Accumulated {
                                            " requested twice with different types or targets");
                 return;
             }
-        buffers_.push_back({id, target, std::vector<T>(size_)});
+        buffers_.push_back({id, target, std::vector<T>(size_), owner_});
     }
+
+    /// Names the derivative whose buffers the next insert() calls make (for messages).
+    void setOwner(std::string owner) { owner_ = std::move(owner); }
 
     template <class T>
     ArrayView<T> getValue(QuantityId id) {
@@ -113,7 +118,9 @@ class Accumulated {
             std::visit(
                 [&](const auto& v0) {
                     using T = typename std::decay_t<decltype(v0)>::value_type;
-                    ArrayView<T> dst = target<T>(storage, b0);
+                    ArrayView<T> dst;
+                    attributingMissingQuantity([&] { dst = target<T>(storage, b0); },
+                                               [&] { return "the pair sum of " + b0.owner; });
                     if (v0.size() != dst.size())
                         throw std::logic_error("accumulated quantity " +
                                                std::to_string(int(b0.id)) +
@@ -136,6 +143,7 @@ class Accumulated {
         QuantityId id;
         OrderEnum target;
         std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;
+        std::string owner;  ///< the derivative that made the buffer
     };
     template <class T>
     static ArrayView<T> target(Storage<Dim>& s, const Buffer& b) {
@@ -150,6 +158,7 @@ class Accumulated {
     }
     std::vector<Buffer> buffers_;
     Size size_ = 0;
+    std::string owner_ = "a derivative";
 };
 
 /// A pairwise sum over neighbours. The solver calls create once per block, initialize once per
@@ -218,10 +227,16 @@ class FusedDerivative : public DerivativeTemplate<FusedDerivative<Dim, Parts...>
   public:
     explicit FusedDerivative(Parts... parts) : parts_(std::move(parts)...) {}
     void create(Accumulated<Dim>& r) override {
-        std::apply([&](auto&... p) { (p.create(r), ...); }, parts_);
+        std::apply([&](auto&... p) { ((r.setOwner(typeName(p)), p.create(r)), ...); }, parts_);
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
-        std::apply([&](auto&... p) { (p.initialize(s, r), ...); }, parts_);
+        std::apply(
+            [&](auto&... p) {
+                (attributingMissingQuantity([&] { p.initialize(s, r); },
+                                            [&] { return "the derivative " + typeName(p); }),
+                 ...);
+            },
+            parts_);
     }
     bool needsKernelValues() const override {
         return std::apply([](const auto&... p) { return (p.needsKernelValues() || ...); }, parts_);
@@ -259,10 +274,12 @@ class OptionalPart : public DerivativeTemplate<OptionalPart<Part, Dim>, Dim> {
     explicit OptionalPart(Part part) : part_(std::move(part)) {}
     bool present() const { return part_.has_value(); }
     void create(Accumulated<Dim>& r) override {
-        if (part_) part_->create(r);
+        if (part_) r.setOwner(typeName(*part_)), part_->create(r);
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
-        if (part_) part_->initialize(s, r);
+        if (part_)
+            attributingMissingQuantity([&] { part_->initialize(s, r); },
+                                       [&] { return "the derivative " + typeName(*part_); });
     }
     bool needsKernelValues() const override { return part_ && part_->needsKernelValues(); }
     template <bool Symmetric>
@@ -279,20 +296,85 @@ class OptionalPart : public DerivativeTemplate<OptionalPart<Part, Dim>, Dim> {
     std::optional<Part> part_;
 };
 
-/// The derivatives of one block. `require` keeps one derivative per type.
+namespace detail {
+
+/// The constructor arguments of a required derivative, compared with those of a later request.
+struct DerivativeArguments {
+    virtual ~DerivativeArguments() = default;
+    virtual bool equals(const DerivativeArguments& other) const = 0;
+};
+
+template <class... Args>
+struct DerivativeArgumentsOf final : DerivativeArguments {
+    explicit DerivativeArgumentsOf(const Args&... args) : values(args...) {}
+    bool equals(const DerivativeArguments& other) const override {
+        const auto* o = dynamic_cast<const DerivativeArgumentsOf*>(&other);
+        return o && std::apply(
+                        [&](const auto&... a) {
+                            return std::apply([&](const auto&... b) { return (same(a, b) && ...); },
+                                              o->values);
+                        },
+                        values);
+    }
+    /// Arguments without == (e.g. a std::function) never count as equal.
+    template <class T>
+    static bool same(const T& a, const T& b) {
+        if constexpr (std::equality_comparable<T>)
+            return a == b;
+        else
+            return false;
+    }
+    std::tuple<Args...> values;
+};
+
+}  // namespace detail
+
+/// The derivatives of one block, at most one per type: its results go to fixed quantities, so
+/// two of one type would add into the same sums. Two requests for a type with equal
+/// constructor arguments share one derivative (two terms that need the same Laplacian); a
+/// request with other arguments is an error (std::logic_error): give that derivative a type of
+/// its own (e.g. a template parameter) or the same arguments.
 template <int Dim>
 class DerivativeHolder {
   public:
+    /// Adds a derivative made by the caller. Its arguments are unknown here, so a second one of
+    /// its type is an error; require<T>(args...) shares equal requests.
     void require(std::unique_ptr<IDerivative<Dim>> derivative) {
-        const std::type_index type(typeid(*derivative));
-        for (const auto& d : derivatives_)
-            if (std::type_index(typeid(*d)) == type) return;
+        const std::string name = typeName(*derivative);
+        if (const std::size_t k = indexOf(typeid(*derivative)); k < derivatives_.size())
+            throw std::logic_error("DerivativeHolder::require: " + asker() + " gives a second " +
+                                   name + " as an object, after " + requesters_[k] +
+                                   " (require<T>(args...) shares requests with equal arguments)");
         derivatives_.push_back(std::move(derivative));
+        arguments_.push_back(nullptr);
+        requesters_.push_back(asker());
     }
+    /// Requires a derivative T(args...), or shares the one required with equal arguments.
     template <class T, class... Args>
     void require(Args&&... args) {
-        require(std::make_unique<T>(std::forward<Args>(args)...));
+        std::shared_ptr<const detail::DerivativeArguments> key;
+        if constexpr ((std::copy_constructible<std::decay_t<Args>> && ...))
+            key = std::make_shared<const detail::DerivativeArgumentsOf<std::decay_t<Args>...>>(
+                args...);
+        if (const std::size_t k = indexOf(typeid(T)); k < derivatives_.size()) {
+            if (key && arguments_[k] && arguments_[k]->equals(*key)) {
+                if (requesters_[k].find(asker()) == std::string::npos)
+                    requesters_[k] += " and " + asker();
+                return;
+            }
+            throw std::logic_error(
+                "DerivativeHolder::require: " + asker() + " asks for a " + typeName(typeid(T)) +
+                " with constructor arguments other than those of " + requesters_[k] +
+                "; both would add into the same sums. Give the second a type of its own, or the "
+                "same arguments to share it");
+        }
+        derivatives_.push_back(std::make_unique<T>(std::forward<Args>(args)...));
+        arguments_.push_back(std::move(key));
+        requesters_.push_back(asker());
     }
+
+    /// Names the term whose setDerivatives runs next (EquationHolder does), for messages.
+    void setRequester(std::string term) { requester_ = std::move(term); }
 
     /// Replaces the derivatives of the listed types that this holder has (at least two) by one
     /// FusedDerivative of them, evaluated in one pass over the pairs with the per-pair calls
@@ -312,6 +394,8 @@ class DerivativeHolder {
         auto fused =
             std::make_unique<FusedDerivative<Dim, OptionalPart<Parts, Dim>...>>(take<Parts>()...);
         derivatives_.insert(derivatives_.begin() + std::ptrdiff_t(first), std::move(fused));
+        arguments_.insert(arguments_.begin() + std::ptrdiff_t(first), nullptr);
+        requesters_.insert(requesters_.begin() + std::ptrdiff_t(first), std::string());
     }
 
     Size size() const { return Size(derivatives_.size()); }
@@ -321,10 +405,16 @@ class DerivativeHolder {
         return false;
     }
     void create(Accumulated<Dim>& r) {
-        for (auto& d : derivatives_) d->create(r);
+        for (auto& d : derivatives_) r.setOwner(typeName(*d)), d->create(r);
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) {
-        for (auto& d : derivatives_) d->initialize(s, r);
+        for (std::size_t k = 0; k < derivatives_.size(); ++k)
+            attributingMissingQuantity(
+                [&] { derivatives_[k]->initialize(s, r); },
+                [&] {
+                    return "the derivative " + typeName(*derivatives_[k]) +
+                           (requesters_[k].empty() ? "" : " (required by " + requesters_[k] + ")");
+                });
     }
     void evalSymmetric(Size i, ArrayView<const Size> n, ArrayView<const Vector<Dim>> g,
                        const NeighbourGeometry<Dim>& geo) {
@@ -336,11 +426,14 @@ class DerivativeHolder {
     }
 
   private:
+    std::size_t indexOf(const std::type_info& type) const {
+        for (std::size_t k = 0; k < derivatives_.size(); ++k)
+            if (std::type_index(typeid(*derivatives_[k])) == std::type_index(type)) return k;
+        return derivatives_.size();
+    }
     template <class T>
     std::size_t indexOf() const {
-        for (std::size_t k = 0; k < derivatives_.size(); ++k)
-            if (std::type_index(typeid(*derivatives_[k])) == std::type_index(typeid(T))) return k;
-        return derivatives_.size();
+        return indexOf(typeid(T));
     }
     /// Moves the derivative of type T out of the holder (an empty part if there is none).
     template <class T>
@@ -349,10 +442,18 @@ class DerivativeHolder {
         if (k == derivatives_.size()) return OptionalPart<T, Dim>();
         OptionalPart<T, Dim> part(std::move(static_cast<T&>(*derivatives_[k])));
         derivatives_.erase(derivatives_.begin() + std::ptrdiff_t(k));
+        arguments_.erase(arguments_.begin() + std::ptrdiff_t(k));
+        requesters_.erase(requesters_.begin() + std::ptrdiff_t(k));
         return part;
     }
 
     std::vector<std::unique_ptr<IDerivative<Dim>>> derivatives_;
+    std::string asker() const { return requester_.empty() ? "a caller" : requester_; }
+
+    /// The constructor arguments of each derivative (null: unknown or not comparable).
+    std::vector<std::shared_ptr<const detail::DerivativeArguments>> arguments_;
+    std::vector<std::string> requesters_;  ///< the terms that asked for each derivative
+    std::string requester_;
 };
 
 }  // namespace num::sph

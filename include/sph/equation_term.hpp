@@ -20,6 +20,7 @@
 
 #include "sph/derivative.hpp"
 #include "sph/scheduler.hpp"
+#include "sph/type_name.hpp"
 
 namespace num::sph {
 
@@ -86,19 +87,23 @@ class EquationHolder {
     friend EquationHolder operator+(EquationHolder a, const EquationHolder& b) { return a += b; }
 
     void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& s) const {
-        for (auto& t : terms_) t->setDerivatives(d, s);
+        for (auto& t : terms_) {
+            d.setRequester("the term " + typeName(*t));
+            t->setDerivatives(d, s);
+        }
+        d.setRequester("");
     }
     void initialize(IScheduler& sch, Storage<Dim>& s, Float t) const {
-        for (auto& term : terms_) term->initialize(sch, s, t);
+        for (auto& term : terms_) named(*term, [&] { term->initialize(sch, s, t); });
     }
     void finalize(IScheduler& sch, Storage<Dim>& s, Float t) const {
-        for (auto& term : terms_) term->finalize(sch, s, t);
+        for (auto& term : terms_) named(*term, [&] { term->finalize(sch, s, t); });
     }
     void create(Storage<Dim>& s, IMaterial& m) const {
         for (auto& t : terms_) t->create(s, m);
     }
     void limitTimeStep(const Storage<Dim>& s, const RunSettings& rs, TimeStepLimits& l) const {
-        for (auto& t : terms_) t->limitTimeStep(s, rs, l);
+        for (auto& t : terms_) named(*t, [&] { t->limitTimeStep(s, rs, l); });
     }
 
     Size size() const { return Size(terms_.size()); }
@@ -111,6 +116,12 @@ class EquationHolder {
     }
 
   private:
+    /// A quantity missing from the storage names the term that needs it (and what to call).
+    template <class F>
+    static void named(const IEquationTerm<Dim>& term, F&& f) {
+        attributingMissingQuantity(f, [&] { return "the term " + typeName(term); });
+    }
+
     std::vector<std::shared_ptr<IEquationTerm<Dim>>> terms_;
 };
 

@@ -118,6 +118,10 @@ class ParameterSet {
     }
 
     const std::map<std::string, SettingSpec>& specs() const { return specs_; }
+    /// Equal values of every key (e.g. two requests for a derivative made from settings).
+    friend bool operator==(const ParameterSet& a, const ParameterSet& b) {
+        return a.values_ == b.values_;
+    }
 
   private:
     const SettingSpec& specOf(const std::string& key) const {

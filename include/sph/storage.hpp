@@ -77,6 +77,39 @@ class Quantity {
     Data data_;
 };
 
+/// A quantity asked of a storage that does not hold it. Terms and derivatives that meet it
+/// during an evaluation say who needs the quantity (EquationHolder, DerivativeHolder).
+struct MissingQuantity : std::out_of_range {
+    explicit MissingQuantity(QuantityId id_, const std::string& message = "")
+        : std::out_of_range(message.empty() ? "no quantity with id " + std::to_string(int(id_)) +
+                                                  " in the storage"
+                                            : message),
+          id(id_),
+          attributed(!message.empty()) {}
+    QuantityId id;
+    bool attributed;  ///< the message names who needs the quantity
+};
+
+/// The message for `who` that needs a quantity missing from the storage: what to call.
+inline std::string missingQuantityMessage(const std::string& who, QuantityId id) {
+    return who + " needs quantity " + std::to_string(int(id)) +
+           ", which the storage does not hold: the terms' create() has not run on this storage "
+           "since the term was added. Add the term before the storage is made (for a fluid: to "
+           "FluidModel::extraTerms before makeFluidStorage), or call solver.create(storage, "
+           "material) after adding it";
+}
+
+/// Runs f(); a MissingQuantity from it that names nobody yet is thrown again naming `who()`.
+template <class F, class Who>
+void attributingMissingQuantity(F&& f, Who&& who) {
+    try {
+        f();
+    } catch (const MissingQuantity& e) {
+        if (e.attributed) throw;
+        throw MissingQuantity(e.id, missingQuantityMessage(who(), e.id));
+    }
+}
+
 template <int Dim>
 class Storage {
   public:
@@ -154,9 +187,7 @@ class Storage {
 
     Quantity<Dim>& get(QuantityId id) {
         auto it = quantities_.find(id);
-        if (it == quantities_.end())
-            throw std::out_of_range("no quantity with id " + std::to_string(int(id)) +
-                                    " in the storage");
+        if (it == quantities_.end()) throw MissingQuantity(id);
         return it->second;
     }
     const Quantity<Dim>& get(QuantityId id) const { return const_cast<Storage*>(this)->get(id); }

@@ -104,8 +104,9 @@ std::string absoluteLibrary(const std::string& library, const std::string& scene
 Library openLibrary(const At& at, const std::string& path, const std::string& program) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
-        at.fail("the path of a plugin library (a file relative to the scene file, or absolute)",
-                "no such file: " + path);
+        throw AppError(ExitCode::SCENE, at.file + ": " + at.path + ": no plugin library " + path +
+                                            " (expected a file, the path relative to the scene "
+                                            "file or absolute)");
     Library lib;
     lib.path = path;
     dlerror();

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <algorithm>
-#include <concepts>
 #include <memory>
 #include <optional>
 #include <span>
@@ -14,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "sph/derivative_arguments.hpp"
 #include "sph/settings.hpp"
 #include "sph/storage.hpp"
 #include "sph/type_name.hpp"
@@ -295,39 +295,6 @@ class OptionalPart : public DerivativeTemplate<OptionalPart<Part, Dim>, Dim> {
   private:
     std::optional<Part> part_;
 };
-
-namespace detail {
-
-/// The constructor arguments of a required derivative, compared with those of a later request.
-struct DerivativeArguments {
-    virtual ~DerivativeArguments() = default;
-    virtual bool equals(const DerivativeArguments& other) const = 0;
-};
-
-template <class... Args>
-struct DerivativeArgumentsOf final : DerivativeArguments {
-    explicit DerivativeArgumentsOf(const Args&... args) : values(args...) {}
-    bool equals(const DerivativeArguments& other) const override {
-        const auto* o = dynamic_cast<const DerivativeArgumentsOf*>(&other);
-        return o && std::apply(
-                        [&](const auto&... a) {
-                            return std::apply([&](const auto&... b) { return (same(a, b) && ...); },
-                                              o->values);
-                        },
-                        values);
-    }
-    /// Arguments without == (e.g. a std::function) never count as equal.
-    template <class T>
-    static bool same(const T& a, const T& b) {
-        if constexpr (std::equality_comparable<T>)
-            return a == b;
-        else
-            return false;
-    }
-    std::tuple<Args...> values;
-};
-
-}  // namespace detail
 
 /// The derivatives of one block, at most one per type: its results go to fixed quantities, so
 /// two of one type would add into the same sums. Two requests for a type with equal

@@ -8,9 +8,12 @@
 // the same for any number of threads.
 #pragma once
 
+#include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "spatial/cell_grid.hpp"
@@ -44,6 +47,12 @@ struct GradientFactor {
     }
 };
 
+/// Thrown by Solver::evaluate when its abandon check asked to stop part-way (a Ctrl-C during a
+/// step that would take long): the storage is left part-way through the step.
+struct EvaluationAbandoned : std::runtime_error {
+    EvaluationAbandoned() : std::runtime_error("evaluation abandoned") {}
+};
+
 template <int Dim>
 class Solver {
   public:
@@ -73,6 +82,11 @@ class Solver {
         equations_.create(storage, material);
     }
 
+    /// A test the pair loop asks every kAbandonCheckEvery particles of a block (never per pair);
+    /// when it returns true, evaluate() stops and throws EvaluationAbandoned.
+    void setAbandonCheck(std::function<bool()> check) { abandonCheck_ = std::move(check); }
+    static constexpr Size kAbandonCheckEvery = 64;
+
     /// Evaluates every derivative at time t.
     void evaluate(Storage<Dim>& storage, Float t) {
         ArrayView<Vec> x = storage.template getValue<Vec>(QuantityId::POSITION);
@@ -86,6 +100,7 @@ class Solver {
         for (std::size_t b = 0; b < holders_.size(); ++b)
             holders_[b].initialize(storage, accumulated_[symmetric_ ? b : 0]);
         withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k); });
+        if (abandoned_.exchange(false)) throw EvaluationAbandoned();
         Accumulated<Dim>::addInto(
             storage, std::span<const Accumulated<Dim>>(accumulated_),
             [&](Size n, const auto& range) { scheduler_.parallelFor(n, 8192, range); });
@@ -166,6 +181,11 @@ class Solver {
                 sc.pairs = 0;
                 const Size begin = Size(n * b / blocks), end = Size(n * (b + 1) / blocks);
                 for (Size i = begin; i < end; ++i) {
+                    if ((i - begin) % kAbandonCheckEvery == 0 && abandonCheck_ &&
+                        (abandoned_.load(std::memory_order_relaxed) || abandonCheck_())) {
+                        abandoned_.store(true, std::memory_order_relaxed);
+                        break;
+                    }
                     const Size m = symmetric_ ? grid_.collectAfter(i, sc.found)
                                               : grid_.collect(
                                                     i, [i](Size j) { return j != i; }, sc.found);
@@ -211,6 +231,8 @@ class Solver {
     CellGrid<Dim> grid_;
     bool needsW_ = false;
     double meanNeighbours_ = 0;
+    std::function<bool()> abandonCheck_;
+    std::atomic<bool> abandoned_{false};
 };
 
 }  // namespace num::sph

@@ -25,6 +25,7 @@
 #include "run_report.hpp"
 #include "run_state.hpp"
 #include "sph/timestepping.hpp"
+#include "stop_signals.hpp"
 
 namespace num::io {
 
@@ -32,26 +33,6 @@ using sph::QuantityId;
 using sph::Size;
 
 namespace {
-
-volatile std::sig_atomic_t gStop = 0;
-
-/// Ctrl-C, kill and a closed terminal stop the run after a final output and a checkpoint.
-constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
-
-/// For tests: NUMERICS_TEST_SIGNAL="SIGNAL:STEP" raises SIGNAL after step STEP, so the handling
-/// of a signal is tested at a known point of the run, whatever the machine's load.
-std::pair<int, std::uint64_t> testSignal() {
-    const char* v = std::getenv("NUMERICS_TEST_SIGNAL");
-    int sig = 0;
-    unsigned long long step = 0;
-    if (!v || std::sscanf(v, "%d:%llu", &sig, &step) != 2) return {0, 0};
-    return {sig, step};
-}
-
-extern "C" void onSignal(int sig) {
-    gStop = sig;
-    std::signal(sig, SIG_DFL);  // a second Ctrl-C ends the program at once
-}
 
 std::string fmt(const char* f, double v) {
     char buf[64];
@@ -72,6 +53,8 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     const auto wallStart = std::chrono::steady_clock::now();
     // Plugin libraries by absolute path: the scene a checkpoint stores finds them anywhere.
     const SceneDocument doc = withAbsolutePluginPaths(given);
+    const stop::DefaultsOnExit defaultSignalsOnExit;
+    stop::duringSetUp(opt.program);  // a signal ends the program at once until the time loop
     Scene<Dim> scene = readScene<Dim>(doc);
     if (opt.endTime) scene.endTime = *opt.endTime;
     if (opt.outDir) scene.output.directory = *opt.outDir;
@@ -145,9 +128,11 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         return t >= target - 1e-9 * std::max(1e-300, std::abs(target)) - 1e-300;
     };
 
-    gStop = 0;
-    for (int sig : kStopSignals) std::signal(sig, onSignal);
-    const auto [raiseSignal, raiseStep] = testSignal();
+    // From here a signal asks for a stop (stop_signals.hpp): after the step in progress, or at
+    // once when that step is still running half a second later.
+    stop::duringRun();
+    const stop::TestSignal testSignal = stop::testSignal();
+    solver.setAbandonCheck([&] { return stop::abandonStep(run.steps() + 1); });
     Progress progress(opt.quiet                  ? Progress::Mode::QUIET
                       : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
                                                  : Progress::Mode::PLAIN,
@@ -183,10 +168,11 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
 
     std::string status = "completed", message;
     ExitCode failure = ExitCode::OK;
+    bool abandoned = false;
     double particleSteps = 0;
     const std::uint64_t startSteps = run.steps();
     try {
-        while (!reached(run.time(), scene.endTime) && !gStop) {
+        while (!reached(run.time(), scene.endTime) && !stop::requested()) {
             if (run.steps() > 0 && run.steps() % 25 == 0) reorderByCell(storage, solver);
             // An end time on an output time (to round-off) steps to that output time exactly,
             // as a longer run does.
@@ -194,7 +180,13 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             const double stop = reached(scene.endTime, next) ? next : scene.endTime;
             if (stop < next && run.time() + solver.timeStepLimits(storage).dt() > stop)
                 beforeEndStep.emplace(resumable(), storage);
-            const double dt = run.step(stop);
+            double dt = 0;
+            try {
+                dt = run.step(stop);
+            } catch (const sph::EvaluationAbandoned&) {
+                abandoned = true;
+                break;
+            }
             particleSteps += double(storage.size());
             checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
                         fieldNames);
@@ -206,7 +198,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             state.removed += removeOutflow(storage, scene);
             emitters.emit(storage, run.time());
             progress.update(run.time(), dt, storage.size(), run.steps());
-            if (raiseSignal && run.steps() == raiseStep) std::raise(raiseSignal);
+            if (testSignal.signal && run.steps() == testSignal.step) std::raise(testSignal.signal);
             if (reached(run.time(), nextOutputTime())) output(), lastOutput = run.time();
             if (opt.checkpointEvery > 0 &&
                 reached(run.time(), (state.checkpointCount + 1) * opt.checkpointEvery)) {
@@ -215,9 +207,20 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 writeCheckpoint(fmt("checkpoint_%04.0f.chk", double(state.checkpointCount)));
             }
         }
-        if (gStop) status = "interrupted";
-        if (run.time() != lastOutput) output();
-        if (gStop) writeCheckpoint("checkpoint_interrupted.chk");
+        if (stop::requested()) status = "interrupted";
+        if (abandoned) {
+            // The storage is part-way through the abandoned step: no output or checkpoint of it.
+            message = std::string("stopped by ") + stop::signalName(stop::requested()) +
+                      " during step " + std::to_string(run.steps() + 1) +
+                      " from t = " + fmt("%g", run.time()) +
+                      " s: the step was abandoned, the outputs written before stay" +
+                      (lastOutput >= 0 ? " (the last at t = " + fmt("%g", lastOutput) + " s)" : "");
+            if (!opt.quiet) progress.clearLine();
+            std::fprintf(stderr, "%s: %s\n", opt.program.c_str(), message.c_str());
+        } else {
+            if (run.time() != lastOutput) output();
+            if (stop::requested()) writeCheckpoint("checkpoint_interrupted.chk");
+        }
     } catch (const AppError& e) {
         // A plugin term that failed in a step stops the run as an instability does.
         if (e.code() != ExitCode::UNSTABLE && e.code() != ExitCode::PLUGIN) throw;
@@ -240,7 +243,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     addEndOfRun(summary, end, warnings);
     writeFileAtomically(outputs.path("summary.json"), summary.dump(2) + "\n");
     // Until here a first signal only sets the flag: the video and the summary are still made.
-    for (int sig : kStopSignals) std::signal(sig, SIG_DFL);
+    stop::restoreDefaults();
 
     if (status == "unstable" || status == "failed")
         throw AppError(failure, message + " (last good output kept in " + dir + ")");

@@ -22,9 +22,11 @@
 #include <initializer_list>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "sph/equation_term.hpp"
 
@@ -42,7 +44,8 @@ class Parameters {
   public:
     Parameters(nlohmann::json term, std::string file, std::string path);
 
-    /// Only these keys (and "term") may appear; another is an error with a suggestion.
+    /// Only these keys (and "term") may appear; another is an error with a suggestion. Without
+    /// allow(), the keys the factory read are the allowed ones (checked after it returns).
     void allow(std::initializer_list<const char*> keys) const;
     bool has(const std::string& key) const;
 
@@ -65,14 +68,22 @@ class Parameters {
     /// Stops with "file: path.key: expected `expected`, found <the value>".
     [[noreturn]] void fail(const std::string& key, const std::string& expected) const;
 
+    /// The keys of the term's object that no call named (allow or a read), "term" aside.
+    std::vector<std::string> unnamedKeys() const;
+    /// The keys calls named so far.
+    const std::set<std::string>& namedKeys() const { return named_; }
+
     const nlohmann::json& json() const { return json_; }
     const std::string& file() const { return file_; }
     /// The key path of the term in the scene, "plugins.0.terms.1".
     const std::string& path() const { return path_; }
 
   private:
+    const std::string& name(const std::string& key) const { return *named_.insert(key).first; }
+
     nlohmann::json json_;
     std::string file_, path_;
+    mutable std::set<std::string> named_;
 };
 
 /// Makes a term of dimension Dim from its parameters.

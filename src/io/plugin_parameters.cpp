@@ -13,6 +13,7 @@ Parameters::Parameters(nlohmann::json term, std::string file, std::string path)
 
 void Parameters::allow(std::initializer_list<const char*> keys) const {
     std::vector<const char*> allowed(keys);
+    for (const char* k : keys) name(k);
     allowed.push_back("term");
     const At a{json_, file_, path_};
     if (!json_.is_object()) a.fail("an object");
@@ -32,12 +33,12 @@ void Parameters::allow(std::initializer_list<const char*> keys) const {
 }
 
 bool Parameters::has(const std::string& key) const {
-    return json_.is_object() && json_.contains(key);
+    return json_.is_object() && json_.contains(name(key));
 }
 
 double Parameters::number(const std::string& key, double lo, double hi,
                           const std::string& unit) const {
-    return At{json_, file_, path_}.required(key).number(lo, hi, false, unit);
+    return At{json_, file_, path_}.required(name(key)).number(lo, hi, false, unit);
 }
 
 double Parameters::number(const std::string& key, double fallback, double lo, double hi,
@@ -46,34 +47,42 @@ double Parameters::number(const std::string& key, double fallback, double lo, do
 }
 
 double Parameters::positive(const std::string& key, const std::string& unit) const {
-    return At{json_, file_, path_}.required(key).number(0, 1e300, true, unit);
+    return At{json_, file_, path_}.required(name(key)).number(0, 1e300, true, unit);
 }
 
 long Parameters::integer(const std::string& key, long fallback, long lo, long hi) const {
-    return has(key) ? At{json_, file_, path_}[key].integer(lo, hi) : fallback;
+    return has(key) ? At{json_, file_, path_}[key].integer(lo, hi) : fallback;  // has() names it
 }
 
 bool Parameters::boolean(const std::string& key, bool fallback) const {
-    return At{json_, file_, path_}.boolean(key, fallback);
+    return At{json_, file_, path_}.boolean(name(key), fallback);
 }
 
 std::string Parameters::string(const std::string& key) const {
-    return At{json_, file_, path_}.required(key).string();
+    return At{json_, file_, path_}.required(name(key)).string();
 }
 
 std::string Parameters::choice(const std::string& key,
                                std::initializer_list<const char*> choices) const {
-    return At{json_, file_, path_}.required(key).choice(choices);
+    return At{json_, file_, path_}.required(name(key)).choice(choices);
 }
 
 template <int Dim>
 sph::Vector<Dim> Parameters::vector(const std::string& key, const std::string& unit) const {
-    const At a = At{json_, file_, path_}.required(key);
+    const At a = At{json_, file_, path_}.required(name(key));
     a.array(Dim, "numbers" + (unit.empty() ? "" : " [" + unit + "]") + " (one per axis of the " +
                      std::to_string(Dim) + "D scene)");
     sph::Vector<Dim> v;
     for (int k = 0; k < Dim; ++k) v[k] = a[std::size_t(k)].number(-1e300, 1e300, false, unit);
     return v;
+}
+
+std::vector<std::string> Parameters::unnamedKeys() const {
+    std::vector<std::string> keys;
+    if (json_.is_object())
+        for (const auto& [key, value] : json_.items())
+            if (key != "term" && !named_.count(key)) keys.push_back(key);
+    return keys;
 }
 
 void Parameters::fail(const std::string& key, const std::string& expected) const {

@@ -181,8 +181,9 @@ std::shared_ptr<sph::IEquationTerm<Dim>> makeTerm(const Library& lib, const At& 
     }
     const std::string label = "term \"" + name + "\" (" + t.path + ", " + file + ")";
     std::shared_ptr<sph::IEquationTerm<Dim>> term;
+    const plugin::Parameters parameters(t.v, t.file, t.path);
     try {
-        term = mine.at(name)(plugin::Parameters(t.v, t.file, t.path));
+        term = mine.at(name)(parameters);
     } catch (const AppError&) {
         throw;
     } catch (const std::exception& e) {
@@ -190,6 +191,18 @@ std::shared_ptr<sph::IEquationTerm<Dim>> makeTerm(const Library& lib, const At& 
                        label + " failed when made from its parameters: " + std::string(e.what()));
     }
     if (!term) throw AppError(ExitCode::PLUGIN, label + ": its factory returned no term");
+    // A key the factory neither allowed nor read is a mistake (a misspelt parameter).
+    if (const auto unnamed = parameters.unnamedKeys(); !unnamed.empty()) {
+        const std::vector<std::string> known(parameters.namedKeys().begin(),
+                                             parameters.namedKeys().end());
+        const std::string guess = detail::closest(unnamed[0], known);
+        throw sceneError(t.file, t.join(unnamed[0]),
+                         known.empty() ? "no parameters for the term \"" + name + "\""
+                                       : "one of the parameters " + names(known) +
+                                             " of the term \"" + name + "\"",
+                         "the unknown key '" + unnamed[0] + "'",
+                         guess.empty() ? "" : "did you mean '" + guess + "'?");
+    }
     return std::make_shared<PluginTerm<Dim>>(std::move(term), label);
 }
 

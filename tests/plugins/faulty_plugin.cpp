@@ -2,7 +2,8 @@
 //   throws_when_made   its factory throws;
 //   throws_in_create   create() throws (set-up);
 //   throws_in_step     finalize() throws from time "after" [s] on;
-//   only_2d            a term registered for 2D only.
+//   only_2d            a term registered for 2D only;
+//   reads_strength     reads an optional "strength" without allow().
 #include <stdexcept>
 #include <tuple>
 
@@ -49,4 +50,8 @@ NUMERICS_PLUGIN(registry) {
         return std::tuple{When::STEP, p.number("after", 0, 1e300, "s")};
     });
     registry.addOne<Faulty<2>>("only_2d", [](const P&) { return std::tuple{When::NEVER, 0.0}; });
+    registry.add<Faulty>("reads_strength", [](const P& p) {
+        p.number("strength", 1.0, 0, 10);
+        return std::tuple{When::NEVER, 0.0};
+    });
 }

@@ -71,6 +71,17 @@ TEST(PluginErrors, BadParameters) {
                 "'stiffness'?)");
 }
 
+TEST(PluginErrors, KeysTheFactoryDidNotReadAreErrors) {
+    // The term reads "strength" without allow(): a misspelt key is still caught.
+    expectError(
+        "unread_key",
+        sceneWith(FAULTY_PLUGIN, json::array({{{"term", "reads_strength"}, {"strenght", 2}}})),
+        kScene,
+        "scene.json: plugins.0.terms.0.strenght: expected one of the parameters strength "
+        "of the term \"reads_strength\", found the unknown key 'strenght' (did you mean "
+        "'strength'?)");
+}
+
 TEST(PluginErrors, TermThrowsDuringSetUp) {
     expectError("throws_when_made",
                 sceneWith(FAULTY_PLUGIN, json::array({{{"term", "throws_when_made"}}})), kPlugin,

@@ -440,9 +440,9 @@ def app_commit():
         return "unknown"
 
 
-def run_case(name, spacing, bin_dir, threads):
+def run_case(name, spacing, bin_dir, threads, sets=()):
     c = CASES[name]
-    run = run_app(c, spacing, bin_dir, threads)
+    run = run_app(c, spacing, bin_dir, threads, sets)
     try:
         checks, notes, profile = c["compare"](run)
     finally:
@@ -474,6 +474,7 @@ def main():
     r.add_argument("--bin", default=os.path.join(ROOT, "build", "release", "apps"), help="directory of the apps")
     r.add_argument("--threads", type=int, default=2)
     r.add_argument("--json", help="write the result here")
+    r.add_argument("--set", action="append", default=[], metavar="KEY=VALUE", help="passed on to the app (a study of one option; not for the report)")
     r.add_argument("--check", choices=["ci", "gate"], help="exit 1 unless within the CI bound or the issue's gate")
     a = ap.parse_args()
     if a.cmd == "list":
@@ -486,7 +487,7 @@ def main():
         return 0
     spacing = a.spacing if a.spacing else (c["ci"][0] if a.check == "ci" else c["doc"])
     try:
-        res = run_case(a.case, spacing, a.bin, a.threads)
+        res = run_case(a.case, spacing, a.bin, a.threads, a.set)
     except RuntimeError as e:
         # The run itself failed (unstable, refused scene...): recorded, never hidden.
         if a.json:

@@ -35,7 +35,7 @@
 //   TEMPERATURE, MATERIAL (int, index into storage.materials()), KIND (int ParticleKind:
 //   FLUID, WALL, BODY), WALL_VELOCITY and NORMAL (boundary particles: prescribed surface
 //   velocity, unit normal pointing into the fluid), FluidId::BOUNDARY_VELOCITY,
-//   FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY.
+//   FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY, heat_ids::BOUNDARY_TEMPERATURE.
 // Boundary particles (walls and bodies) never move; fluid particles never cross them.
 //
 // Order of the terms (each term's initialize and finalize run in this order):
@@ -192,6 +192,7 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
     s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, wallVelocity);
     s.template insert<Vec>(QuantityId::NORMAL, OrderEnum::ZERO, std::move(normal));
     s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, std::move(wallVelocity));
+    s.template insert<Float>(heat_ids::BOUNDARY_TEMPERATURE, OrderEnum::ZERO, 0.0);
     s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, std::move(slip));
     s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, model.viscosity);
     if (model.materials.empty()) {

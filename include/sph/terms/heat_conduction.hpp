@@ -15,8 +15,11 @@
 // (continuous temperature and flux), so two materials in contact exchange heat correctly.
 //
 // Temperature is QuantityId::TEMPERATURE (first order). Pairs with an ADIABATIC particle
-// exchange nothing (boundary/thermal_condition.hpp). Time-step limit (explicit diffusion):
-// dt <= diffusion_factor h^2 / alpha_max with alpha = k / (rho c).
+// exchange nothing (boundary/thermal_condition.hpp). A FIXED_TEMPERATURE particle shows
+// heat_ids::BOUNDARY_TEMPERATURE where the wall condition provides it (the mirrored
+// temperature that puts the prescribed one on the wall surface), else its own temperature.
+// Time-step limit (explicit diffusion): dt <= diffusion_factor h^2 / alpha_max with alpha = k /
+// (rho c).
 #pragma once
 
 #include <algorithm>
@@ -64,6 +67,9 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
             cond_ = zeros_;
         }
         T_ = s.template getValue<Float>(QuantityId::TEMPERATURE);
+        Tfixed_ = s.has(heat_ids::BOUNDARY_TEMPERATURE)
+                      ? s.template getValue<Float>(heat_ids::BOUNDARY_TEMPERATURE)
+                      : T_;
         m_ = s.template getValue<Float>(QuantityId::MASS);
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         dT_ = results.template getValue<Float>(QuantityId::TEMPERATURE);
@@ -76,7 +82,9 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
         const Float ksum = ka + kb;
         if (!(ksum > 0)) return;
         // 4 k_a k_b / (k_a + k_b) = 2 x harmonic mean; pair.dx = r_ab = x_a - x_b.
-        const Float f = 4.0 * ka * kb / (ksum * rho_[a] * rho_[b]) * (T_[a] - T_[b]) *
+        const Float Ta = cond_[a] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[a] : T_[a];
+        const Float Tb = cond_[b] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[b] : T_[b];
+        const Float f = 4.0 * ka * kb / (ksum * rho_[a] * rho_[b]) * (Ta - Tb) *
                         dot(pair.dx, grad) / (pair.r * pair.r + eta2_);
         dT_[a] += m_[b] * f * invC_[mat_[a]];
         if constexpr (Symmetric) dT_[b] -= m_[a] * f * invC_[mat_[b]];
@@ -87,7 +95,7 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
     std::vector<Float> k_, invC_;
     std::vector<int> zeros_;
     ArrayView<const int> mat_, cond_;
-    ArrayView<const Float> T_, m_, rho_;
+    ArrayView<const Float> T_, Tfixed_, m_, rho_;
     ArrayView<Float> dT_;
 };
 

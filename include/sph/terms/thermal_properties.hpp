@@ -20,6 +20,10 @@ namespace heat_ids {
 inline constexpr QuantityId THERMAL_CONDITION = QuantityId(200);
 /// Heat source per unit mass [W/kg] (Float), e.g. the particles of a heated wall.
 inline constexpr QuantityId HEAT_SOURCE = QuantityId(201);
+/// Temperature a FIXED_TEMPERATURE boundary particle shows to conduction (Float), when the wall
+/// condition provides it: 2 T_b - T~_b, T~_b the Shepard mean of the fluid temperatures around
+/// it, which puts the prescribed T_b on the wall surface (boundary/generalized_wall.hpp).
+inline constexpr QuantityId BOUNDARY_TEMPERATURE = QuantityId(202);
 }  // namespace heat_ids
 
 /// One material's thermal parameters, read once per evaluation (not per pair).

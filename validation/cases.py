@@ -365,6 +365,23 @@ def heat_slabs(run):
     return checks, f"k_R / k_L = {kr / kl:g}, interface T_c = {tc:.6f}", profile
 
 
+def conduction_walls(run):
+    th, tc = (run.scene["boundaries"][s]["thermal"]["temperature"] for s in ("x_min", "x_max"))
+    p, t, dx = run.particles(), run.time(), run.spacing
+    exact = th + (tc - th) * p["x"]
+    err = np.abs(p["temperature"] - exact) / (th - tc)
+    # Nusselt number from the mean temperatures of the first and last particle columns.
+    first, last = p["x"] < dx, p["x"] > 1 - dx
+    nu = (p["temperature"][first].mean() - p["temperature"][last].mean()) / (p["x"][last].mean() - p["x"][first].mean()) / (th - tc)
+    xs = np.linspace(0, 1, 101)
+    profile = {"xlabel": "x", "ylabel": "T", "series": [
+        {"label": f"app, t = {t:g}", "x": p["x"].tolist(), "y": p["temperature"].tolist(), "style": "points"},
+        {"label": "T_h + (T_c - T_h) x", "x": xs.tolist(), "y": (th + (tc - th) * xs).tolist(), "style": "line"}]}
+    checks = [{"metric": f"max |T - T_exact| / (T_h - T_c) at t = {t:g}", "value": float(err.max()), "gate": 0.01},
+              {"metric": "|Nu - 1| (first and last particle columns)", "value": abs(nu - 1), "gate": 0.01}]
+    return checks, f"Nu {nu:.5f}; mean |T - T_exact| / (T_h - T_c) {float(err.mean()):.3g}", profile
+
+
 # ---------------------------------------------------------------------------------------------
 # The cases. "doc": documentation resolution; "study": spacings of the convergence study;
 # "ci": the fast check of tests/validation (spacing, bound, where the bound comes from).
@@ -419,6 +436,7 @@ case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715
 for _ra, _bounds in (("1e3", [0.19, 0.15, 0.077]), ("1e4", [0.34, 0.39, 0.24]), ("1e5", [0.72, 0.93, 0.60])):
     case(f"natural_convection_ra{_ra}", f"natural_convection_ra{_ra}.json", (lambda ra: lambda r: natural_convection(r, ra))(_ra),
          0.04, [0.08, 0.05, 0.04], (0.04, _bounds), doc_note=_TIME + "was 0.02 (50 x 50), now 0.04 (25 x 25)")
+case("conduction_walls_2d", "conduction_walls_2d.json", conduction_walls, 0.04, [0.1, 0.05, 0.04], (0.05, None))
 case("heat_pulse_2d", "heat_pulse_2d.json", heat_pulse, 0.01, [0.02, 0.01, 0.005], (0.02, None))
 case("heat_pulse_3d", "heat_pulse_3d.json", heat_pulse, 0.02, [0.04, 0.03, 0.02], (0.04, [0.030, None]))
 case("heat_slabs_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0.005], (0.02, None))

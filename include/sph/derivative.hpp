@@ -10,6 +10,7 @@
 #include <string>
 #include <tuple>
 #include <typeindex>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -175,6 +176,15 @@ class IDerivative {
     virtual ~IDerivative() = default;
     virtual void create(Accumulated<Dim>& results) = 0;
     virtual void initialize(const Storage<Dim>& input, Accumulated<Dim>& results) = 0;
+    /// Initialises this block's derivative from `first`, the same derivative of block 0,
+    /// initialised for this evaluation just before: a derivative that precomputes per-particle
+    /// arrays shares those of `first` instead of computing them once per block. `first` has
+    /// this derivative's type. By default the derivative initialises itself.
+    virtual void initializeLike(const IDerivative& first, const Storage<Dim>& input,
+                                Accumulated<Dim>& results) {
+        (void)first;
+        initialize(input, results);
+    }
     virtual void evalSymmetric(Size i, ArrayView<const Size> neighs,
                                ArrayView<const Vector<Dim>> grads,
                                const NeighbourGeometry<Dim>& geometry) = 0;
@@ -238,6 +248,17 @@ class FusedDerivative : public DerivativeTemplate<FusedDerivative<Dim, Parts...>
             },
             parts_);
     }
+    void initializeLike(const IDerivative<Dim>& first, const Storage<Dim>& s,
+                        Accumulated<Dim>& r) override {
+        const auto& firstParts = static_cast<const FusedDerivative&>(first).parts_;
+        [&]<std::size_t... k>(std::index_sequence<k...>) {
+            (attributingMissingQuantity(
+                 [&] { std::get<k>(parts_).initializeLike(std::get<k>(firstParts), s, r); },
+                 [&] { return "the derivative " + typeName(std::get<k>(parts_)); }),
+             ...);
+        }
+        (std::index_sequence_for<Parts...>());
+    }
     bool needsKernelValues() const override {
         return std::apply([](const auto&... p) { return (p.needsKernelValues() || ...); }, parts_);
     }
@@ -279,6 +300,13 @@ class OptionalPart : public DerivativeTemplate<OptionalPart<Part, Dim>, Dim> {
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
         if (part_)
             attributingMissingQuantity([&] { part_->initialize(s, r); },
+                                       [&] { return "the derivative " + typeName(*part_); });
+    }
+    void initializeLike(const IDerivative<Dim>& first, const Storage<Dim>& s,
+                        Accumulated<Dim>& r) override {
+        const auto& firstPart = static_cast<const OptionalPart&>(first).part_;
+        if (part_)
+            attributingMissingQuantity([&] { part_->initializeLike(*firstPart, s, r); },
                                        [&] { return "the derivative " + typeName(*part_); });
     }
     bool needsKernelValues() const override { return part_ && part_->needsKernelValues(); }
@@ -378,6 +406,25 @@ class DerivativeHolder {
         for (std::size_t k = 0; k < derivatives_.size(); ++k)
             attributingMissingQuantity(
                 [&] { derivatives_[k]->initialize(s, r); },
+                [&] {
+                    return "the derivative " + typeName(*derivatives_[k]) +
+                           (requesters_[k].empty() ? "" : " (required by " + requesters_[k] + ")");
+                });
+    }
+    /// initialize, sharing what each derivative precomputed in `first`, the holder of block 0
+    /// made by the same terms and initialised for this evaluation just before (see
+    /// IDerivative::initializeLike). A derivative whose type differs initialises itself.
+    void initializeLike(const DerivativeHolder& first, const Storage<Dim>& s, Accumulated<Dim>& r) {
+        for (std::size_t k = 0; k < derivatives_.size(); ++k)
+            attributingMissingQuantity(
+                [&] {
+                    IDerivative<Dim>& d = *derivatives_[k];
+                    if (k < first.derivatives_.size() &&
+                        typeid(d) == typeid(*first.derivatives_[k]))
+                        d.initializeLike(*first.derivatives_[k], s, r);
+                    else
+                        d.initialize(s, r);
+                },
                 [&] {
                     return "the derivative " + typeName(*derivatives_[k]) +
                            (requesters_[k].empty() ? "" : " (required by " + requesters_[k] + ")");

@@ -97,8 +97,9 @@ class Solver {
 
         grid_.build(x, kernel_.supportRadius(), domain_);
         for (auto& a : accumulated_) a.reset(storage.size());
-        for (std::size_t b = 0; b < holders_.size(); ++b)
-            holders_[b].initialize(storage, accumulated_[symmetric_ ? b : 0]);
+        holders_[0].initialize(storage, accumulated_[0]);
+        for (std::size_t b = 1; b < holders_.size(); ++b)
+            holders_[b].initializeLike(holders_[0], storage, accumulated_[symmetric_ ? b : 0]);
         withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k); });
         if (abandoned_.exchange(false)) throw EvaluationAbandoned();
         Accumulated<Dim>::addInto(

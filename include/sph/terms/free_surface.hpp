@@ -52,13 +52,22 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const auto previous = s.template getValue<Float>(FluidId::KERNEL_SUM);
-        volume_.resize(s.size()), atSurface_.resize(s.size());
+        if (!ownsParticles_) particles_ = std::make_shared<PerParticle>(), ownsParticles_ = true;
+        std::vector<Float>& volume = particles_->volume;
+        std::vector<char>& atSurface = particles_->atSurface;
+        volume.resize(s.size()), atSurface.resize(s.size());
         for (Size i = 0; i < s.size(); ++i) {
-            volume_[i] = m[i] / rho[i];
-            atSurface_[i] = isFluid(kind[i]) && atFreeSurface(previous[i], volume_[i], w0_);
+            volume[i] = m[i] / rho[i];
+            atSurface[i] = isFluid(kind[i]) && atFreeSurface(previous[i], volume[i], w0_);
         }
-        c_ = r.template getValue<Float>(FluidId::KERNEL_SUM);
-        nearSurface_ = r.template getValue<Float>(FluidId::SURFACE_NEIGHBOURS);
+        bindResults(r);
+    }
+    /// Shares the volumes and surface flags of block 0's part (computed once per evaluation).
+    void initializeLike(const IDerivative<Dim>& first, const Storage<Dim>&,
+                        Accumulated<Dim>& r) override {
+        particles_ = static_cast<const KernelSumPart&>(first).particles_;
+        ownsParticles_ = false;
+        bindResults(r);
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec&, const PairGeometry<Dim>& pair) {
@@ -71,9 +80,22 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
     }
 
   private:
+    struct PerParticle {
+        std::vector<Float> volume;    ///< m / rho
+        std::vector<char> atSurface;  ///< a fluid particle at a free surface last evaluation
+    };
+    void bindResults(Accumulated<Dim>& r) {
+        volume_ = particles_->volume.data();
+        atSurface_ = particles_->atSurface.data();
+        c_ = r.template getValue<Float>(FluidId::KERNEL_SUM);
+        nearSurface_ = r.template getValue<Float>(FluidId::SURFACE_NEIGHBOURS);
+    }
+
     Float w0_;
-    std::vector<Float> volume_;
-    std::vector<char> atSurface_;
+    std::shared_ptr<PerParticle> particles_;
+    bool ownsParticles_ = false;  ///< false: particles_ is block 0's, read only
+    const Float* volume_ = nullptr;
+    const char* atSurface_ = nullptr;
     ArrayView<Float> c_, nearSurface_;
 };
 

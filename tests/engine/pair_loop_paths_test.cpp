@@ -1,0 +1,195 @@
+// The pair loop's optimised paths against plain ones, bitwise: blocks sharing what block 0's
+// derivatives precomputed per particle (IDerivative::initializeLike) against every block
+// initialising itself, and the fluid parts' gather loops (evalNeighbours<false>) against the
+// generic loop calling eval for one pair at a time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "numerics.hpp"
+#include "sph/terms/artificial_viscosity.hpp"
+#include "sph/terms/continuity_density.hpp"
+#include "sph/terms/delta_sph.hpp"
+#include "sph/terms/free_surface.hpp"
+#include "sph/terms/laminar_viscosity.hpp"
+#include "sph/terms/pressure_gradient.hpp"
+#include "test_physics.hpp"
+
+namespace {
+
+using namespace num::sph;
+using V2 = Vector<2>;
+
+/// Random particles with kinds, volumes and previous kernel sums such that some fluid
+/// particles were at a free surface and some were not.
+Storage<2> particlesWithSurface() {
+    Storage<2> s = enginetest::randomParticles<2>(300, 11);
+    std::vector<int> kind(s.size());
+    std::vector<Float> previous(s.size());
+    for (Size i = 0; i < s.size(); ++i) {
+        kind[i] = i % 5 == 0 ? int(ParticleKind::WALL) : int(ParticleKind::FLUID);
+        previous[i] = i % 3 == 0 ? 0.1 : 2.0;
+    }
+    s.insert<int>(QuantityId::KIND, OrderEnum::ZERO, kind);
+    s.insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, previous);
+    return s;
+}
+
+/// Calls visit(i, neighbours, gradients, geometry) for every particle with all others within
+/// `radius` (brute force; a made-up kernel, nonzero in value and gradient).
+template <class Visit>
+void forEachParticle(const Storage<2>& s, Float radius, Visit&& visit) {
+    const auto x = s.getValue<V2>(QuantityId::POSITION);
+    for (Size i = 0; i < s.size(); ++i) {
+        std::vector<Size> j;
+        std::vector<V2> dx, grad;
+        std::vector<Float> r, w;
+        for (Size k = 0; k < s.size(); ++k) {
+            const Float d = num::norm(x[i] - x[k]);
+            if (k == i || d >= radius) continue;
+            j.push_back(k), dx.push_back(x[i] - x[k]), r.push_back(d);
+            grad.push_back((x[i] - x[k]) * (-1 / radius)), w.push_back(1 - d / radius);
+        }
+        const NeighbourGeometry<2> geometry{ArrayView<const V2>(dx.data(), dx.size()),
+                                            ArrayView<const Float>(r.data(), r.size()),
+                                            ArrayView<const Float>(w.data(), w.size())};
+        visit(i, ArrayView<const Size>(j.data(), j.size()),
+              ArrayView<const V2>(grad.data(), grad.size()), geometry);
+    }
+}
+
+/// Every particle's sum over all others within `radius`, as one block of the asymmetric loop.
+template <class Holder>
+void evaluateAll(Holder& holder, const Storage<2>& s, Float radius) {
+    forEachParticle(s, radius, [&](Size i, auto neighs, auto grads, const auto& geometry) {
+        holder.evalAsymmetric(i, neighs, grads, geometry);
+    });
+}
+
+template <class Require>
+void expectSharedEqualsOwn(Require&& require) {
+    Storage<2> s = particlesWithSurface();
+    DerivativeHolder<2> first, shared, own;
+    require(first), require(shared), require(own);
+    Accumulated<2> rFirst, rShared, rOwn;
+    first.create(rFirst), shared.create(rShared), own.create(rOwn);
+    // Two evaluations: the second with other densities, so a stale copy would show.
+    for (int evaluation = 0; evaluation < 2; ++evaluation) {
+        for (Accumulated<2>* r : {&rFirst, &rShared, &rOwn}) r->reset(s.size());
+        first.initialize(s, rFirst);
+        shared.initializeLike(first, s, rShared);
+        own.initialize(s, rOwn);
+        evaluateAll(shared, s, 0.1);
+        evaluateAll(own, s, 0.1);
+        double largest = 0;
+        for (QuantityId id : {FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS}) {
+            const auto a = rShared.getValue<Float>(id), b = rOwn.getValue<Float>(id);
+            for (Size i = 0; i < s.size(); ++i) {
+                EXPECT_EQ(a[i], b[i]) << "evaluation " << evaluation << ", particle " << i;
+                largest = std::max(largest, std::abs(b[i]));
+            }
+        }
+        EXPECT_GT(largest, 0.0);  // the sums are not all zero
+        for (Float& rho : s.getValue<Float>(QuantityId::DENSITY)) rho *= 1.5;
+    }
+}
+
+TEST(SharedInitialization, KernelSumSharedEqualsOwnBitwise) {
+    expectSharedEqualsOwn([](DerivativeHolder<2>& d) { d.require<KernelSumPart<2>>(0.7); });
+}
+
+TEST(SharedInitialization, FusedKernelSumSharedEqualsOwnBitwise) {
+    using Fused = FusedDerivative<2, OptionalPart<KernelSumPart<2>, 2>>;
+    expectSharedEqualsOwn([](DerivativeHolder<2>& d) {
+        d.require(
+            std::make_unique<Fused>(OptionalPart<KernelSumPart<2>, 2>(KernelSumPart<2>(0.7))));
+    });
+}
+
+/// A part's gather loop against the generic loop of its DerivativeTemplate (eval per pair),
+/// both starting from the same nonzero sums (as after an earlier part of a fused loop).
+template <class Part>
+void expectGatherEqualsPairByPair(Part gather, Part pairByPair, const Storage<2>& s) {
+    Accumulated<2> rGather, rPairs;
+    gather.create(rGather), pairByPair.create(rPairs);
+    for (Accumulated<2>* r : {&rGather, &rPairs}) {
+        r->reset(s.size());
+        for (QuantityId id :
+             {QuantityId::DENSITY, FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS})
+            if (r->has(id))
+                for (Size i = 0; auto& x : r->getValue<Float>(id)) x = 0.1 * Float(i++ % 7);
+        if (r->has(QuantityId::POSITION))
+            for (Size i = 0; auto& a : r->getValue<V2>(QuantityId::POSITION))
+                a = V2{0.3 * Float(i % 5), -0.2 * Float(i % 3)}, ++i;
+    }
+    gather.initialize(s, rGather), pairByPair.initialize(s, rPairs);
+    forEachParticle(s, 0.12, [&](Size i, auto neighs, auto grads, const auto& geometry) {
+        gather.template evalNeighbours<false>(i, neighs, grads, geometry);
+        pairByPair.DerivativeTemplate<Part, 2>::template evalNeighbours<false>(i, neighs, grads,
+                                                                               geometry);
+    });
+    std::size_t changed = 0;
+    for (QuantityId id : {QuantityId::DENSITY, FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS})
+        if (rPairs.has(id)) {
+            const auto a = rGather.getValue<Float>(id), b = rPairs.getValue<Float>(id);
+            for (Size i = 0; i < s.size(); ++i) {
+                EXPECT_EQ(a[i], b[i]) << typeName(gather) << ", particle " << i;
+                changed += b[i] != 0.1 * Float(i % 7);
+            }
+        }
+    if (rPairs.has(QuantityId::POSITION)) {
+        const auto a = rGather.getValue<V2>(QuantityId::POSITION);
+        const auto b = rPairs.getValue<V2>(QuantityId::POSITION);
+        for (Size i = 0; i < s.size(); ++i) {
+            EXPECT_EQ(a[i], b[i]) << typeName(gather) << ", particle " << i;
+            changed += b[i] != V2{0.3 * Float(i % 5), -0.2 * Float(i % 3)};
+        }
+    }
+    EXPECT_GT(changed, s.size() / 2) << typeName(gather);  // most particles got a sum
+}
+
+/// Particle data for the fluid parts: velocities, volumes, viscosities; one particle in seven
+/// a free-slip wall particle (inactive in the viscous term).
+struct FluidPartData {
+    explicit FluidPartData(const Storage<2>& s) {
+        const auto m = s.getValue<Float>(QuantityId::MASS);
+        const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+        const auto p = s.getValue<Float>(QuantityId::PRESSURE);
+        const auto v = s.getDt<V2>(QuantityId::POSITION);
+        for (Size i = 0; i < s.size(); ++i) {
+            continuity->velocity.push_back(v[i]), continuity->volume.push_back(m[i] / rho[i]);
+            delta->volume.push_back(m[i] / rho[i]);
+            pressure->pOverRho2.push_back(p[i] / (rho[i] * rho[i]));
+            velocity->push_back(v[i]);
+            viscous->velocity.push_back(v[i]), viscous->mu.push_back(1e-3 * (1 + Float(i % 4)));
+            viscous->active.push_back(i % 7 != 3);
+        }
+        delta->gravityTerm = V2{0.0, -0.3};
+    }
+    std::shared_ptr<ContinuityData<2>> continuity = std::make_shared<ContinuityData<2>>();
+    std::shared_ptr<DeltaSphData<2>> delta = std::make_shared<DeltaSphData<2>>();
+    std::shared_ptr<PressureGradientData> pressure = std::make_shared<PressureGradientData>();
+    std::shared_ptr<std::vector<V2>> velocity = std::make_shared<std::vector<V2>>();
+    std::shared_ptr<ViscousData<2>> viscous = std::make_shared<ViscousData<2>>();
+};
+
+TEST(GatherLoops, FluidPartsEqualTheirPairByPairEvaluationBitwise) {
+    const Storage<2> s = particlesWithSurface();
+    const FluidPartData d(s);
+    const Float h = 0.05, c0 = 10;
+    expectGatherEqualsPairByPair(ContinuityDensityPart<2>(d.continuity),
+                                 ContinuityDensityPart<2>(d.continuity), s);
+    expectGatherEqualsPairByPair(DeltaSphPart<2>(d.delta, 0.1, c0, h),
+                                 DeltaSphPart<2>(d.delta, 0.1, c0, h), s);
+    expectGatherEqualsPairByPair(PressureGradientPart<2>(d.pressure),
+                                 PressureGradientPart<2>(d.pressure), s);
+    expectGatherEqualsPairByPair(ArtificialViscosityPart<2>(d.velocity, 0.1, c0, h),
+                                 ArtificialViscosityPart<2>(d.velocity, 0.1, c0, h), s);
+    expectGatherEqualsPairByPair(LaminarViscosityPart<2>(d.viscous, h),
+                                 LaminarViscosityPart<2>(d.viscous, h), s);
+    expectGatherEqualsPairByPair(KernelSumPart<2>(0.7), KernelSumPart<2>(0.7), s);
+}
+
+}  // namespace

@@ -6,7 +6,7 @@ Unlike PySPH's own dam_break_2d example, h and the particle mass follow --dx. Pr
 'fluid_particles=N steps=S seconds=T' where T times the solver loop only (the one-time
 compilation of the generated code happens in setup and is excluded).
 
-Usage: /usr/bin/python3 pysph_dam_break_2d.py --dx 0.01 --steps 100 [--openmp]
+Usage: /usr/bin/python3 pysph_dam_break_2d.py --dx 0.01 (--steps 100 | --time 0.05) [--openmp]
 """
 import argparse
 import sys
@@ -26,10 +26,11 @@ HDX = 1.3
 
 
 class DamBreakBench(Application):
-    def __init__(self, dx, steps, **kw):
+    def __init__(self, dx, steps, end_time=None, **kw):
         self.dx = dx
         self.h = HDX * dx
         self.steps = steps
+        self.end_time = end_time
         super().__init__(**kw)
 
     def create_scheme(self):
@@ -40,7 +41,8 @@ class DamBreakBench(Application):
     def configure_scheme(self):
         dt = 0.125 * self.h / C0
         self.scheme.configure_solver(kernel=WendlandQuintic(dim=2), dt=dt,
-                                     tf=dt * self.steps, adaptive_timestep=False,
+                                     tf=self.end_time or dt * self.steps,
+                                     adaptive_timestep=False,
                                      pfreq=10**9)
 
     def create_particles(self):
@@ -67,9 +69,11 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument('--dx', type=float, default=0.01)
     p.add_argument('--steps', type=int, default=100)
+    p.add_argument('--time', type=float, default=None,
+                   help='simulated time [s] (instead of --steps)')
     p.add_argument('--openmp', action='store_true')
     args, rest = p.parse_known_args()
-    app = DamBreakBench(args.dx, args.steps, fname='pysph_bench')
+    app = DamBreakBench(args.dx, args.steps, args.time, fname='pysph_bench')
     argv = ['--disable-output', '-q'] + (['--openmp'] if args.openmp else []) + rest
     app.setup(argv)
     n_fluid = app.particles[0].get_number_of_particles()

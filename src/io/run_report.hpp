@@ -47,9 +47,12 @@ template <int Dim>
 void printRunReport(const std::string& program, const Outputs<Dim>& out, const Scene<Dim>& scene,
                     const EndOfRun& end, const nlohmann::json& summary) {
     const OutputSpec& o = scene.output;
-    const bool completed = summary.at("status") == "completed";
-    std::printf("%s: %s at t = %.4g s\n", program.c_str(),
-                completed ? "finished" : "stopped (Ctrl-C)",
+    const std::string status = summary.at("status");
+    const bool completed = status == "completed";
+    const std::string ended = completed                 ? "finished"
+                              : status == "interrupted" ? "stopped by a signal"
+                                                        : "stopped (" + status + ")";
+    std::printf("%s: %s at t = %.4g s\n", program.c_str(), ended.c_str(),
                 summary.at("final_time").get<double>());
     std::printf("Output written to %s/\n", out.directory().c_str());
     auto item = [](const std::string& file, const std::string& what) {

@@ -186,13 +186,14 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
     s.template insert<Float>(QuantityId::DENSITY, densityOrder, model.restDensity);
     s.template insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO,
                              model.equationOfState().pressure(model.restDensity));
+    // Until the wall condition mirrors it, every particle shows conduction its own temperature.
+    s.template insert<Float>(heat_ids::BOUNDARY_TEMPERATURE, OrderEnum::ZERO, temperature);
     s.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::ZERO, std::move(temperature));
     s.template insert<int>(QuantityId::MATERIAL, OrderEnum::ZERO, std::move(material));
     s.template insert<int>(QuantityId::KIND, OrderEnum::ZERO, std::move(kind));
     s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, wallVelocity);
     s.template insert<Vec>(QuantityId::NORMAL, OrderEnum::ZERO, std::move(normal));
     s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, std::move(wallVelocity));
-    s.template insert<Float>(heat_ids::BOUNDARY_TEMPERATURE, OrderEnum::ZERO, 0.0);
     s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, std::move(slip));
     s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, model.viscosity);
     if (model.materials.empty()) {

@@ -76,5 +76,7 @@ TEST(HeatViscosity, WarmPoiseuilleFollowsViscosityAtItsTemperature) {
     const auto nu = c.storage.getValue<Float>(FluidId::KINEMATIC_VISCOSITY);
     const auto kind = c.kind();
     for (Size i = 0; i < c.storage.size(); ++i)
-        if (isFluid(kind[i])) ASSERT_NEAR(nu[i], nuT, 1e-12 * nuT);
+        if (isFluid(kind[i])) {
+            ASSERT_NEAR(nu[i], nuT, 1e-12 * nuT);
+        }
 }

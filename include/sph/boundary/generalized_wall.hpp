@@ -48,7 +48,8 @@ class GeneralizedWall : public IEquationTerm<Dim> {
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         auto p = s.template getValue<Float>(QuantityId::PRESSURE);
         auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
-        const bool heat = s.has(heat_ids::THERMAL_CONDITION);
+        const bool heat =
+            s.has(heat_ids::THERMAL_CONDITION) && s.has(heat_ids::BOUNDARY_TEMPERATURE);
         const auto T = s.template getValue<Float>(QuantityId::TEMPERATURE);
         const auto cond =
             heat ? s.template getValue<int>(heat_ids::THERMAL_CONDITION) : ArrayView<const int>();
@@ -90,7 +91,11 @@ class GeneralizedWall : public IEquationTerm<Dim> {
         s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, int(WallSlip::NO_SLIP));
-        s.template insert<Float>(heat_ids::BOUNDARY_TEMPERATURE, OrderEnum::ZERO, 0.0);
+        if (s.has(QuantityId::TEMPERATURE)) {  // each particle starts showing its own temperature
+            const auto T = s.template getValue<Float>(QuantityId::TEMPERATURE);
+            s.template insert<Float>(heat_ids::BOUNDARY_TEMPERATURE, OrderEnum::ZERO,
+                                     std::vector<Float>(T.begin(), T.end()));
+        }
     }
 
   private:

@@ -220,13 +220,19 @@ class DerivativeTemplate : public IDerivative<Dim> {
             d.template eval<Symmetric>(i, j, grad);
     }
 
-    /// Evaluates every neighbour of particle i (used by fused derivatives; a derived class may
-    /// hide it with a loop of its own).
+    /// Evaluates every neighbour of particle i (used by fused derivatives). For the gather
+    /// (asymmetric) evaluation a derived class may provide a loop of its own,
+    /// `void gatherNeighbours(i, neighs, grads, geometry)`, which must give eval's result.
     template <bool Symmetric>
     void evalNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>> grads,
                         const NeighbourGeometry<Dim>& geometry) {
-        for (std::size_t k = 0; k < neighs.size(); ++k)
-            evalPair<Symmetric>(i, neighs[k], grads[k], geometry.pair(k));
+        Derived& d = static_cast<Derived&>(*this);
+        if constexpr (!Symmetric && requires { d.gatherNeighbours(i, neighs, grads, geometry); }) {
+            d.gatherNeighbours(i, neighs, grads, geometry);
+        } else {
+            for (std::size_t k = 0; k < neighs.size(); ++k)
+                evalPair<Symmetric>(i, neighs[k], grads[k], geometry.pair(k));
+        }
     }
 };
 

@@ -1,6 +1,6 @@
 // The pair loop's optimised paths against plain ones, bitwise: blocks sharing what block 0's
 // derivatives precomputed per particle (IDerivative::initializeLike) against every block
-// initialising itself, and the fluid parts' gather loops (evalNeighbours<false>) against the
+// initialising itself, and the fluid parts' gather loops (gatherNeighbours) against the
 // generic loop calling eval for one pair at a time.
 #include <gtest/gtest.h>
 
@@ -127,8 +127,8 @@ void expectGatherEqualsPairByPair(Part gather, Part pairByPair, const Storage<2>
     gather.initialize(s, rGather), pairByPair.initialize(s, rPairs);
     forEachParticle(s, 0.12, [&](Size i, auto neighs, auto grads, const auto& geometry) {
         gather.template evalNeighbours<false>(i, neighs, grads, geometry);
-        pairByPair.DerivativeTemplate<Part, 2>::template evalNeighbours<false>(i, neighs, grads,
-                                                                               geometry);
+        for (std::size_t k = 0; k < neighs.size(); ++k)
+            pairByPair.template evalPair<false>(i, neighs[k], grads[k], geometry.pair(k));
     });
     std::size_t changed = 0;
     for (QuantityId id : {QuantityId::DENSITY, FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS})

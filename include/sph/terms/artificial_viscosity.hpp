@@ -47,31 +47,25 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
-    template <bool Symmetric>
-    void evalNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
-                        const NeighbourGeometry<Dim>& geometry) {
-        if constexpr (Symmetric) {
-            Base::template evalNeighbours<true>(i, neighs, grads, geometry);
-        } else {
-            if (!isFluid(kind_[i])) return;
-            const std::vector<Vec>& v = *velocity_;
-            const Vec vi = v[i];
-            const Float rhoi = rho_[i];
-            Vec sum = a_[i];
-            for (std::size_t k = 0; k < neighs.size(); ++k) {
-                const Size j = neighs[k];
-                const Float r = geometry.r[k];
-                const Float vr = dot(vi - v[j], geometry.dx[k]);
-                if (vr >= 0) continue;
-                const Float pi = -alphaC0h_ * vr / ((r * r + eta2_) * 0.5 * (rhoi + rho_[j]));
-                sum -= grads[k] * pi * m_[j];
-            }
-            a_[i] = sum;
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
+                          const NeighbourGeometry<Dim>& geometry) {
+        if (!isFluid(kind_[i])) return;
+        const std::vector<Vec>& v = *velocity_;
+        const Vec vi = v[i];
+        const Float rhoi = rho_[i];
+        Vec sum = a_[i];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size j = neighs[k];
+            const Float r = geometry.r[k];
+            const Float vr = dot(vi - v[j], geometry.dx[k]);
+            if (vr >= 0) continue;
+            const Float pi = -alphaC0h_ * vr / ((r * r + eta2_) * 0.5 * (rhoi + rho_[j]));
+            sum -= grads[k] * pi * m_[j];
         }
+        a_[i] = sum;
     }
 
   private:
-    using Base = DerivativeTemplate<ArtificialViscosityPart<Dim>, Dim>;
     std::shared_ptr<const std::vector<Vec>> velocity_;
     Float alphaC0h_, eta2_;
     ArrayView<const Float> m_, rho_;

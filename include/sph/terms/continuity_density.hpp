@@ -42,27 +42,21 @@ class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Di
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
-    template <bool Symmetric>
-    void evalNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
-                        const NeighbourGeometry<Dim>& geometry) {
-        if constexpr (Symmetric) {
-            Base::template evalNeighbours<true>(i, neighs, grads, geometry);
-        } else {
-            if (!isFluid(kind_[i])) return;
-            const ContinuityData<Dim>& d = *data_;
-            const Vec vi = d.velocity[i];
-            const Float rhoi = rho_[i];
-            Float sum = drho_[i];
-            for (std::size_t k = 0; k < neighs.size(); ++k) {
-                const Size j = neighs[k];
-                sum += rhoi * d.volume[j] * dot(vi - d.velocity[j], grads[k]);
-            }
-            drho_[i] = sum;
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
+                          const NeighbourGeometry<Dim>&) {
+        if (!isFluid(kind_[i])) return;
+        const ContinuityData<Dim>& d = *data_;
+        const Vec vi = d.velocity[i];
+        const Float rhoi = rho_[i];
+        Float sum = drho_[i];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size j = neighs[k];
+            sum += rhoi * d.volume[j] * dot(vi - d.velocity[j], grads[k]);
         }
+        drho_[i] = sum;
     }
 
   private:
-    using Base = DerivativeTemplate<ContinuityDensityPart<Dim>, Dim>;
     std::shared_ptr<const ContinuityData<Dim>> data_;
     ArrayView<const Float> rho_;
     ArrayView<const int> kind_;

@@ -48,31 +48,25 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
-    template <bool Symmetric>
-    void evalNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
-                        const NeighbourGeometry<Dim>& geometry) {
-        if constexpr (Symmetric) {
-            Base::template evalNeighbours<true>(i, neighs, grads, geometry);
-        } else {
-            if (!isFluid(kind_[i])) return;
-            const DeltaSphData<Dim>& d = *data_;
-            const Float rhoi = rho_[i];
-            Float sum = drho_[i];
-            for (std::size_t k = 0; k < neighs.size(); ++k) {
-                const Size j = neighs[k];
-                if (!isFluid(kind_[j])) continue;
-                const Vec& dx = geometry.dx[k];
-                const Float r = geometry.r[k];
-                const Float psi = rhoi - rho_[j] - dot(d.gravityTerm, dx);
-                const Float f = coefficient_ * psi * dot(dx, grads[k]) / (r * r + eta2_);
-                sum += f * d.volume[j];
-            }
-            drho_[i] = sum;
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
+                          const NeighbourGeometry<Dim>& geometry) {
+        if (!isFluid(kind_[i])) return;
+        const DeltaSphData<Dim>& d = *data_;
+        const Float rhoi = rho_[i];
+        Float sum = drho_[i];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size j = neighs[k];
+            if (!isFluid(kind_[j])) continue;
+            const Vec& dx = geometry.dx[k];
+            const Float r = geometry.r[k];
+            const Float psi = rhoi - rho_[j] - dot(d.gravityTerm, dx);
+            const Float f = coefficient_ * psi * dot(dx, grads[k]) / (r * r + eta2_);
+            sum += f * d.volume[j];
         }
+        drho_[i] = sum;
     }
 
   private:
-    using Base = DerivativeTemplate<DeltaSphPart<Dim>, Dim>;
     std::shared_ptr<const DeltaSphData<Dim>> data_;
     Float coefficient_, eta2_;
     ArrayView<const Float> rho_;

@@ -80,24 +80,18 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
-    template <bool Symmetric>
-    void evalNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
-                        const NeighbourGeometry<Dim>& geometry) {
-        if constexpr (Symmetric) {
-            Base::template evalNeighbours<true>(i, neighs, grads, geometry);
-        } else {
-            Float c = c_[i], near = nearSurface_[i];
-            for (std::size_t k = 0; k < neighs.size(); ++k) {
-                const Size j = neighs[k];
-                c += volume_[j] * geometry.w[k];
-                if (atSurface_[j]) near += volume_[j] * geometry.w[k];
-            }
-            c_[i] = c, nearSurface_[i] = near;
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec>,
+                          const NeighbourGeometry<Dim>& geometry) {
+        Float c = c_[i], near = nearSurface_[i];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size j = neighs[k];
+            c += volume_[j] * geometry.w[k];
+            if (atSurface_[j]) near += volume_[j] * geometry.w[k];
         }
+        c_[i] = c, nearSurface_[i] = near;
     }
 
   private:
-    using Base = DerivativeTemplate<KernelSumPart<Dim>, Dim>;
     struct PerParticle {
         std::vector<Float> volume;    ///< m / rho
         std::vector<char> atSurface;  ///< a fluid particle at a free surface last evaluation

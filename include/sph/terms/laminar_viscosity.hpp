@@ -52,31 +52,25 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
-    template <bool Symmetric>
-    void evalNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
-                        const NeighbourGeometry<Dim>& geometry) {
-        if constexpr (Symmetric) {
-            Base::template evalNeighbours<true>(i, neighs, grads, geometry);
-        } else {
-            const ViscousData<Dim>& d = *data_;
-            if (!isFluid(kind_[i]) || !d.active[i]) return;
-            const Vec vi = d.velocity[i];
-            const Float mui = d.mu[i], rhoi = rho_[i];
-            Vec sum = a_[i];
-            for (std::size_t k = 0; k < neighs.size(); ++k) {
-                const Size j = neighs[k];
-                if (!d.active[j]) continue;
-                const Float r = geometry.r[k];
-                const Float factor = (mui + d.mu[j]) / (rhoi * rho_[j]) *
-                                     dot(geometry.dx[k], grads[k]) / (r * r + eta2_);
-                sum += (vi - d.velocity[j]) * factor * m_[j];
-            }
-            a_[i] = sum;
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
+                          const NeighbourGeometry<Dim>& geometry) {
+        const ViscousData<Dim>& d = *data_;
+        if (!isFluid(kind_[i]) || !d.active[i]) return;
+        const Vec vi = d.velocity[i];
+        const Float mui = d.mu[i], rhoi = rho_[i];
+        Vec sum = a_[i];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size j = neighs[k];
+            if (!d.active[j]) continue;
+            const Float r = geometry.r[k];
+            const Float factor = (mui + d.mu[j]) / (rhoi * rho_[j]) *
+                                 dot(geometry.dx[k], grads[k]) / (r * r + eta2_);
+            sum += (vi - d.velocity[j]) * factor * m_[j];
         }
+        a_[i] = sum;
     }
 
   private:
-    using Base = DerivativeTemplate<LaminarViscosityPart<Dim>, Dim>;
     std::shared_ptr<const ViscousData<Dim>> data_;
     Float eta2_;
     ArrayView<const Float> m_, rho_;

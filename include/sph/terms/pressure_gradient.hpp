@@ -42,25 +42,19 @@ class PressureGradientPart : public DerivativeTemplate<PressureGradientPart<Dim>
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
-    template <bool Symmetric>
-    void evalNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
-                        const NeighbourGeometry<Dim>& geometry) {
-        if constexpr (Symmetric) {
-            Base::template evalNeighbours<true>(i, neighs, grads, geometry);
-        } else {
-            if (!isFluid(kind_[i])) return;
-            const Float pr2i = pr2_[i];
-            Vec sum = a_[i];
-            for (std::size_t k = 0; k < neighs.size(); ++k) {
-                const Size j = neighs[k];
-                sum -= grads[k] * (pr2i + pr2_[j]) * m_[j];
-            }
-            a_[i] = sum;
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
+                          const NeighbourGeometry<Dim>&) {
+        if (!isFluid(kind_[i])) return;
+        const Float pr2i = pr2_[i];
+        Vec sum = a_[i];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size j = neighs[k];
+            sum -= grads[k] * (pr2i + pr2_[j]) * m_[j];
         }
+        a_[i] = sum;
     }
 
   private:
-    using Base = DerivativeTemplate<PressureGradientPart<Dim>, Dim>;
     std::shared_ptr<const PressureGradientData> data_;
     ArrayView<const Float> m_;
     ArrayView<const int> kind_;

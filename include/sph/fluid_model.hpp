@@ -119,6 +119,7 @@ struct FluidModel {
     // Particle regularity.
     bool shifting = defaults::shifting;  ///< particle shifting (terms/particle_shifting.hpp)
     Float shiftingCoefficient = defaults::shiftingCoefficient;  ///< A in dr = -A h c0 dt grad C
+    bool shiftingNearWalls = defaults::shiftingNearWalls;       ///< shift within a support of walls
 
     /// No tension at free surfaces (terms/free_surface.hpp).
     bool freeSurfaceNoTension = defaults::freeSurfaceNoTension;
@@ -239,7 +240,9 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     if (model.artificialViscosity > 0)
         eq += makeTerm<ArtificialViscosity<Dim>>(model.artificialViscosity, eos.c0);
     if (model.bodyForce) eq += makeTerm<BodyForceTerm<Dim>>(model.bodyForce);
-    if (model.shifting) eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, eos.c0);
+    if (model.shifting)
+        eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, eos.c0,
+                                              model.shiftingNearWalls);
     eq += makeHeatEquations(model.heat, model.bodyForce);
     eq += model.extraTerms;
     eq += makeTerm<BoundaryHold<Dim>>();

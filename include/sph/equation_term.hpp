@@ -8,6 +8,14 @@
 //   4. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
 //      d2t target gets its sum added;
 //   5. finalize() of every term, in the order the terms were added.
+// An evaluation has no side effects on the state: finalize() combines sums into rates and
+// never moves a particle or changes an evolved quantity, so evaluating twice at the same t
+// gives the same rates (integrators may evaluate several times per step). Not yet so: the
+// free-surface flags come from the previous evaluation's kernel sum (terms/free_surface.hpp).
+// Post-step phase: postStep() of every term, in the order the terms were added, once per step
+// after the integrator (Solver::postStep, called by Run::step with the step's dt and the new
+// time). It reads what the step's last evaluation left in the storage and may change the
+// state: particle shifting, containment, bookkeeping.
 // create() runs once, from Solver::create, before the first evaluation.
 // Terms add to derivatives (+=); a term never assigns a derivative another term writes.
 #pragma once
@@ -63,8 +71,12 @@ class IEquationTerm {
                                 const RunSettings& settings) = 0;
     /// Runs before the pair loop, e.g. to compute pressure from density.
     virtual void initialize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
-    /// Runs after the pair loop; adds the term's contribution to the derivatives.
+    /// Runs after the pair loop; adds the term's contribution to the derivatives. Moves no
+    /// particle and changes no evolved quantity (that belongs in postStep).
     virtual void finalize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
+    /// Runs once per step, after the integrator has advanced the storage from t - dt to t
+    /// (t the new time); may change the state, e.g. move particles. Default: nothing.
+    virtual void postStep(IScheduler&, Storage<Dim>&, Float /*t*/, Float /*dt*/) {}
     /// Creates the quantities the term needs.
     virtual void create(Storage<Dim>& storage, IMaterial& material) const = 0;
     /// Offers the term's time-step limits (Courant, viscous, diffusion...).
@@ -98,6 +110,9 @@ class EquationHolder {
     }
     void finalize(IScheduler& sch, Storage<Dim>& s, Float t) const {
         for (auto& term : terms_) named(*term, [&] { term->finalize(sch, s, t); });
+    }
+    void postStep(IScheduler& sch, Storage<Dim>& s, Float t, Float dt) const {
+        for (auto& term : terms_) named(*term, [&] { term->postStep(sch, s, t, dt); });
     }
     void create(Storage<Dim>& s, IMaterial& m) const {
         for (auto& t : terms_) t->create(s, m);

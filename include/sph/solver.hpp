@@ -1,5 +1,7 @@
 // The solver: one evaluation of all derivatives (neighbour search, terms' initialize, the pair
-// loop over blocks, the sum of the blocks' buffers, terms' finalize), and the time-step limits.
+// loop over blocks, the sum of the blocks' buffers, terms' finalize), the post-step phase
+// (terms' postStep, once per step after the integrator) and the time-step limits. An
+// evaluation has no side effects on the state: what moves particles runs in postStep.
 //
 // Reproducibility: particles are split into blocks, each evaluated by one thread in particle
 // order with its own derivative objects. Symmetric mode: a fixed number of blocks (setting
@@ -107,6 +109,12 @@ class Solver {
             [&](Size n, const auto& range) { scheduler_.parallelFor(n, 8192, range); });
 
         equations_.finalize(scheduler_, storage, t);
+    }
+
+    /// The post-step phase: every term's postStep, in term order, once per step after the
+    /// integrator advanced the storage by dt to time t (sph::Run::step calls it).
+    void postStep(Storage<Dim>& storage, Float t, Float dt) {
+        equations_.postStep(scheduler_, storage, t, dt);
     }
 
     /// The time-step limits at the current state (after an evaluation).

@@ -33,6 +33,7 @@ class ITimeStepping {
   public:
     virtual ~ITimeStepping() = default;
     /// Advances the storage from t to t + dt. Derivatives at t must be current (see prime()).
+    /// The post-step phase is not part of it: Run::step calls Solver::postStep afterwards.
     virtual void step(Solver<Dim>& solver, Storage<Dim>& storage, Float t, Float dt) = 0;
     virtual std::string name() const = 0;
 };
@@ -162,6 +163,8 @@ std::unique_ptr<ITimeStepping<Dim>> makeIntegrator(const std::string& name) {
 }
 
 /// The run loop: adaptive step from the solver's limits, reordering by cell every few steps.
+/// A step is: the integrator (its evaluations have no side effects on the state), then the
+/// post-step phase (Solver::postStep: particle shifting, containment, bookkeeping) once.
 template <int Dim>
 class Run {
   public:
@@ -177,7 +180,8 @@ class Run {
         primed_ = true;
     }
 
-    /// One step, at most up to tEnd. Returns the step taken.
+    /// One step, at most up to tEnd: the integrator, then the post-step phase with the step's
+    /// dt at the new time. Returns the step taken.
     Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
         if (!primed_) prime();
         if (reorderEvery_ > 0 && steps_ > 0 && steps_ % reorderEvery_ == 0) {
@@ -195,6 +199,7 @@ class Run {
         if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
         integrator_.step(solver_, storage_, time_, dt);
         time_ = last ? tEnd : time_ + dt;
+        solver_.postStep(storage_, time_, dt);
         ++steps_;
         lastDt_ = dt;
         return dt;

@@ -30,6 +30,10 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
     void finalize(sph::IScheduler& sch, sph::Storage<Dim>& s, sph::Float t) override {
         guard("finalize", t, [&] { term_->finalize(sch, s, t); });
     }
+    void postStep(sph::IScheduler& sch, sph::Storage<Dim>& s, sph::Float t,
+                  sph::Float dt) override {
+        guard("postStep", t, [&] { term_->postStep(sch, s, t, dt); });
+    }
     void create(sph::Storage<Dim>& s, sph::IMaterial& m) const override {
         guard("create", -1, [&] { term_->create(s, m); });
     }

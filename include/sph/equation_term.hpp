@@ -10,8 +10,8 @@
 //   5. finalize() of every term, in the order the terms were added.
 // An evaluation has no side effects on the state: finalize() combines sums into rates and
 // never moves a particle or changes an evolved quantity, so evaluating twice at the same t
-// gives the same rates (integrators may evaluate several times per step). Not yet so: the
-// free-surface flags come from the previous evaluation's kernel sum (terms/free_surface.hpp).
+// gives the same rates (integrators may evaluate several times per step). One exception is left:
+// the free-surface flags come from the previous evaluation's kernel sum (terms/free_surface.hpp).
 // Post-step phase: postStep() of every term, in the order the terms were added, once per step
 // after the integrator (Solver::postStep, called by Run::step with the step's dt and the new
 // time). It reads what the step's last evaluation left in the storage and may change the

@@ -38,7 +38,8 @@
 //   FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY, heat_ids::BOUNDARY_TEMPERATURE.
 // Boundary particles (walls and bodies) never move; fluid particles never cross them.
 //
-// Order of the terms (each term's initialize and finalize run in this order):
+// Order of the terms (each term's initialize, finalize and postStep run in this order; particle
+// shifting, containment and the heat books act in postStep, once per step after the integrator):
 //   neighbour refresh (for the passes below) -> summation density -> equation of state ->
 //   no tension at free surfaces -> wall condition (Adami et al. 2012) -> continuity (+ delta-SPH)
 //   -> pressure gradient -> laminar viscosity -> artificial viscosity -> body force -> particle

@@ -107,12 +107,9 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                             setup.geometry.domain);
     auto integrator = sph::makeIntegrator<Dim>(scene.integrator);
     sph::Run<Dim> run(storage, solver, *integrator, state.time);
-    sph::Storage<Dim> warmup;
     if (opt.restart) {
-        // Terms keep the time of their last evaluation (e.g. particle shifting): evaluate a copy
-        // at the restart time so they continue exactly as the uninterrupted run.
-        warmup = storage;
-        solver.evaluate(warmup, state.time);
+        // The checkpoint holds the derivatives at its time; terms keep no time of their own (a
+        // step's post-step phase gets its dt from Run), so the run continues as it would have.
         run.setTime(state.time, Size(state.steps));
         run.markPrimed(true);
         outputs.resume(state.time, state.series);

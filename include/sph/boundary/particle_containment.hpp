@@ -1,8 +1,9 @@
 // A safety net that guarantees no fluid particle is ever inside a wall or a solid body. The
 // wall condition's pressure normally keeps fluid away; if a particle still ends up beyond a
 // wall surface (the container box side) or inside a body, it is reflected back across the
-// surface and the velocity component into the solid is removed. Runs in finalize(), i.e.
-// after the drift of the leapfrog step, before the closing half kick.
+// surface and the velocity component into the solid is removed. Runs in the post-step phase
+// (postStep(), once per step after the integrator and after particle shifting), so the
+// velocity a step ends with has no component into the solid.
 #pragma once
 
 #include <vector>
@@ -19,7 +20,8 @@ class ParticleContainment : public IEquationTerm<Dim> {
 
     void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
-    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void postStep(IScheduler& scheduler, Storage<Dim>& s, Float, Float) override {
         auto x = s.template getValue<Vec>(QuantityId::POSITION);
         auto v = s.template getDt<Vec>(QuantityId::POSITION);
         const auto kind = s.template getValue<int>(QuantityId::KIND);

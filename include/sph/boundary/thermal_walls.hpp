@@ -17,7 +17,9 @@
 // Energy books (trapezoidal in time, as the leapfrog and predictor-corrector integrators
 // advance first-order quantities): heatFromFixed() is the heat fixed-temperature particles gave
 // to the others, heatFromSources() the heat the sources added; the total sum m c T of the
-// evolving particles changes by exactly their sum (to round-off).
+// evolving particles changes by exactly their sum (to round-off). Each evaluation measures the
+// powers; the post-step phase books 0.5 (P_start + P_end) dt once per step, P_end the power of
+// the step's last evaluation.
 #pragma once
 
 #include <cmath>
@@ -40,7 +42,7 @@ class ThermalBoundary : public IEquationTerm<Dim> {
     void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
 
-    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
+    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
         const std::vector<ThermalMaterial> table = thermalMaterials(s);
         const auto cond = s.template getValue<int>(heat_ids::THERMAL_CONDITION);
         const auto src = s.template getValue<Float>(heat_ids::HEAT_SOURCE);
@@ -68,7 +70,15 @@ class ThermalBoundary : public IEquationTerm<Dim> {
                     dT[i] += src[i] / table[mat[i]].heatCapacity;
             }
         });
-        book(t, fixedPower, sourcePower);
+        lastFixed_ = fixedPower, lastSource_ = sourcePower;
+        if (!started_) startFixed_ = fixedPower, startSource_ = sourcePower, started_ = true;
+    }
+
+    /// Books the step's heat with the trapezoidal rule.
+    void postStep(IScheduler&, Storage<Dim>&, Float, Float dt) override {
+        fromFixed_ += 0.5 * (startFixed_ + lastFixed_) * dt;
+        fromSources_ += 0.5 * (startSource_ + lastSource_) * dt;
+        startFixed_ = lastFixed_, startSource_ = lastSource_;
     }
 
     void create(Storage<Dim>& storage, IMaterial&) const override {
@@ -103,29 +113,18 @@ class ThermalBoundary : public IEquationTerm<Dim> {
             if (select(i)) src[i] = flux * area / mass;
     }
 
-    /// Heat given by fixed-temperature particles to the others since the first evaluation [J].
+    /// Heat given by fixed-temperature particles to the others in the steps so far [J].
     Float heatFromFixed() const { return fromFixed_; }
-    /// Heat added by heat sources (and flux walls) since the first evaluation [J].
+    /// Heat added by heat sources (and flux walls) in the steps so far [J].
     Float heatFromSources() const { return fromSources_; }
     /// Power of the fixed-temperature particles and of the sources at the last evaluation [W].
     Float fixedPower() const { return lastFixed_; }
     Float sourcePower() const { return lastSource_; }
 
   private:
-    void book(Float t, Float fixedPower, Float sourcePower) {
-        if (started_ && t > lastT_) {
-            fromFixed_ += 0.5 * (lastFixed_ + fixedPower) * (t - lastT_);
-            fromSources_ += 0.5 * (lastSource_ + sourcePower) * (t - lastT_);
-        }
-        started_ = true;
-        lastT_ = t;
-        lastFixed_ = fixedPower;
-        lastSource_ = sourcePower;
-    }
-
     ThermalCondition wallDefault_, bodyDefault_;
-    bool started_ = false;
-    Float lastT_ = 0, lastFixed_ = 0, lastSource_ = 0;
+    bool started_ = false;  // the powers at the start of the first step are known
+    Float startFixed_ = 0, startSource_ = 0, lastFixed_ = 0, lastSource_ = 0;
     Float fromFixed_ = 0, fromSources_ = 0;
 };
 

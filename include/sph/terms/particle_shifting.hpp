@@ -29,11 +29,15 @@
 // lid-driven cavity, Re = 100, 50 x 50, t = 20 (largest error on Ghia et al.'s u and v
 // lines / U): shifting everywhere 0.102 (0.102 on the u line), not near walls 0.056 (0.016 on
 // the u line), no shifting 0.051. The displacement per unit time is kept in SHIFT.
+// Phases: the pair sums (grad C, grad rho, grad v, the wall and surface flags) are made in
+// every evaluation; particles are moved once per step, in postStep, after the integrator, with
+// the step's dt and the sums of the step's last evaluation (at the end of the step).
 #pragma once
 
 #include <algorithm>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "sph/kernel_choice.hpp"
@@ -141,9 +145,13 @@ class ParticleShifting : public IEquationTerm<Dim> {
             }
         });
     }
-    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
-        const Float dt = lastTime_ ? t - *lastTime_ : 0.0;
-        lastTime_ = t;
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    /// Moves the fluid particles by dr (the equation at the top) with the sums of the step's
+    /// last evaluation; dt is the step.
+    void postStep(IScheduler& scheduler, Storage<Dim>& s, Float, Float dt) override {
+        if (data_->volume.size() != s.size())
+            throw std::logic_error(
+                "ParticleShifting::postStep: the storage changed size since the last evaluation");
         auto x = s.template getValue<Vec>(QuantityId::POSITION);
         auto v = s.template getDt<Vec>(QuantityId::POSITION);
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);
@@ -192,7 +200,6 @@ class ParticleShifting : public IEquationTerm<Dim> {
     Float coefficient_, soundSpeed_;
     bool nearWalls_;
     std::optional<RunKernel<Dim>> kernel_;
-    std::optional<Float> lastTime_;
     std::shared_ptr<ShiftingData<Dim>> data_ = std::make_shared<ShiftingData<Dim>>();
 };
 

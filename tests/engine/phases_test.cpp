@@ -1,0 +1,213 @@
+// The phases of a step: an evaluation has no side effects on the state (evaluations at any time,
+// repeated, leave positions, velocities and densities as they were and give bitwise the same
+// rates), and what moves particles (particle shifting, containment) runs once per step in the
+// post-step phase, which Run::step calls after the integrator.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <string>
+#include <type_traits>
+
+#include "numerics.hpp"
+#include "sph/fluid_model.hpp"
+
+namespace {
+
+using namespace num::sph;
+
+/// Every level of every quantity of a and b is bitwise the same.
+template <int Dim>
+::testing::AssertionResult sameState(const Storage<Dim>& a, const Storage<Dim>& b) {
+    std::string diff;
+    a.forEach([&](QuantityId id, const Quantity<Dim>& qa) {
+        if (!b.has(id)) {
+            diff += " quantity " + std::to_string(int(id)) + " missing;";
+            return;
+        }
+        qa.visit([&](const auto& ba) {
+            using T = typename std::decay_t<decltype(ba.value)>::value_type;
+            const auto& bb = b.get(id).template buffers<T>();
+            for (int k = 0; k < qa.levels(); ++k) {
+                const auto &x = ba.level(k), &y = bb.level(k);
+                if (x.size() != y.size() ||
+                    std::memcmp(x.data(), y.data(), x.size() * sizeof(T)) != 0)
+                    diff += " quantity " + std::to_string(int(id)) + " level " + std::to_string(k) +
+                            ";";
+            }
+        });
+    });
+    if (diff.empty()) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << "differ:" << diff;
+}
+
+template <class A, class B>
+bool sameValues(const A& a, const B& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
+}
+
+/// A periodic box full of water on a jittered lattice with random velocities: the particle
+/// concentration has gradients everywhere, no free surface (every kernel sum above 0.9) and no
+/// wall, so shifting moves every particle.
+struct JitteredBox {
+    static constexpr double dx = 0.05;
+    FluidModel<2> model;
+    FluidGeometry<2> geometry;
+    RunSettings settings;
+    Storage<2> storage;
+
+    JitteredBox() {
+        model.maxVelocity = 1;
+        model.shifting = true;
+        geometry.spacing = dx;
+        geometry.domain.max = {{1.0, 1.0}};
+        geometry.domain.periodic = {true, true};
+        geometry.fluid.push_back(
+            FluidRegion<2>::filling(Shape<2>::box(geometry.domain.min, geometry.domain.max)));
+        settings.set("smoothing_length", 1.3 * dx);
+        storage = makeFluidStorage(model, geometry, settings);
+        std::mt19937_64 rng(5);
+        std::uniform_real_distribution<double> jitter(-0.1 * dx, 0.1 * dx), speed(-0.1, 0.1);
+        auto x = storage.getValue<Vector<2>>(QuantityId::POSITION);
+        auto v = storage.getDt<Vector<2>>(QuantityId::POSITION);
+        for (Size i = 0; i < storage.size(); ++i) {
+            x[i] = geometry.domain.wrap(x[i] + Vector<2>{{jitter(rng), jitter(rng)}});
+            v[i] = Vector<2>{{speed(rng), speed(rng)}};
+        }
+    }
+    Solver<2> solver(IScheduler& scheduler) const {
+        return Solver<2>(scheduler, settings, makeFluidEquations(model, geometry), geometry.domain);
+    }
+};
+
+TEST(Phases, EvaluationHasNoSideEffectsWithShifting) {
+    JitteredBox box;
+    SequentialScheduler scheduler;
+    Solver<2> solver = box.solver(scheduler);
+    ASSERT_NE(solver.equations().find<ParticleShifting<2>>(), nullptr);
+    Storage<2>& s = box.storage;
+    const Storage<2> initial = s;
+
+    // Evaluations at several times, as an integrator makes them within and across steps.
+    solver.evaluate(s, 0.0);
+    const Storage<2> first = s;
+    const auto c = s.getValue<Float>(FluidId::KERNEL_SUM);
+    const auto m = s.getValue<Float>(QuantityId::MASS);
+    const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+    const Float w0 = solver.kernel().W(0);
+    for (Size i = 0; i < s.size(); ++i)
+        ASSERT_FALSE(atFreeSurface(c[i], m[i] / rho[i], w0)) << "no free surface in the box";
+    solver.evaluate(s, 1e-3);
+    EXPECT_TRUE(sameState(first, s)) << "a second evaluation, later";
+    solver.evaluate(s, 1e-3);
+    EXPECT_TRUE(sameState(first, s)) << "a third evaluation, at the same time";
+
+    EXPECT_TRUE(sameValues(initial.getValue<Float>(QuantityId::DENSITY),
+                           s.getValue<Float>(QuantityId::DENSITY)))
+        << "evaluate() changed densities";
+    EXPECT_TRUE(sameValues(initial.getValue<Vector<2>>(QuantityId::POSITION),
+                           s.getValue<Vector<2>>(QuantityId::POSITION)))
+        << "evaluate() moved particles";
+    EXPECT_TRUE(sameValues(initial.getDt<Vector<2>>(QuantityId::POSITION),
+                           s.getDt<Vector<2>>(QuantityId::POSITION)))
+        << "evaluate() changed velocities";
+}
+
+TEST(Phases, PostStepShiftsParticlesByTheStepsDisplacement) {
+    JitteredBox box;
+    SequentialScheduler scheduler;
+    Solver<2> solver = box.solver(scheduler);
+    Storage<2>& s = box.storage;
+    solver.evaluate(s, 0.0);
+    Storage<2> twice = s;
+    const Storage<2> before = s;
+    const double dt = 1e-4;
+    solver.postStep(s, dt, dt);
+    solver.postStep(twice, 2 * dt, 2 * dt);
+
+    // dr = -A h c0 dt grad C, |dr| <= 0.1 h (terms/particle_shifting.hpp); SHIFT = dr / dt.
+    const double h = 1.3 * JitteredBox::dx, A = box.model.shiftingCoefficient;
+    const double c0 = box.model.c0();
+    const auto x0 = before.getValue<Vector<2>>(QuantityId::POSITION);
+    const auto x1 = s.getValue<Vector<2>>(QuantityId::POSITION);
+    const auto x2 = twice.getValue<Vector<2>>(QuantityId::POSITION);
+    const auto v0 = before.getDt<Vector<2>>(QuantityId::POSITION);
+    const auto v1 = s.getDt<Vector<2>>(QuantityId::POSITION);
+    const auto gradC = before.getValue<Vector<2>>(FluidId::KERNEL_SUM_GRADIENT);
+    const auto shift = s.getValue<Vector<2>>(QuantityId::SHIFT);
+    Size moved = 0, velocityChanged = 0;
+    for (Size i = 0; i < s.size(); ++i) {
+        const Vector<2> dr = x1[i] - x0[i], expected = gradC[i] * (-A * h * c0 * dt);
+        ASSERT_LE(norm(expected), 0.1 * h) << "the cap is not reached at this dt";
+        EXPECT_LT(norm(dr - expected), 1e-12) << i;
+        EXPECT_LT(norm(shift[i] * dt - dr), 1e-12) << i;
+        // Linear in dt below the cap.
+        EXPECT_LT(norm((x2[i] - x0[i]) - dr * 2.0), 1e-12) << i;
+        moved += norm(dr) > 0;
+        velocityChanged += norm(v1[i] - v0[i]) > 0;
+    }
+    EXPECT_EQ(moved, s.size()) << "every particle is shifted in a jittered periodic box";
+    EXPECT_GT(velocityChanged, s.size() / 2) << "v follows by the Taylor correction";
+}
+
+TEST(Phases, RunStepIsTheIntegratorThenThePostStepPhase) {
+    SequentialScheduler scheduler;
+    JitteredBox a, b;
+    Solver<2> solverA = a.solver(scheduler), solverB = b.solver(scheduler);
+    LeapfrogKDK<2> integratorA, integratorB;
+    num::sph::Run<2> run(a.storage, solverA, integratorA);
+    const double dt = run.step();
+    ASSERT_GT(dt, 0);
+
+    solverB.evaluate(b.storage, 0.0);
+    integratorB.step(solverB, b.storage, 0.0, dt);
+    const Storage<2> withoutPostStep = b.storage;
+    solverB.postStep(b.storage, dt, dt);
+    EXPECT_TRUE(sameState(a.storage, b.storage));
+    EXPECT_FALSE(sameValues(withoutPostStep.getValue<Vector<2>>(QuantityId::POSITION),
+                            b.storage.getValue<Vector<2>>(QuantityId::POSITION)))
+        << "shifting moves particles in the post-step phase";
+}
+
+TEST(Phases, ContainmentReflectsInThePostStepPhaseOnly) {
+    const double dx = 0.05;
+    FluidModel<2> model;
+    model.maxVelocity = 1;
+    model.shifting = false;
+    FluidGeometry<2> geometry;
+    geometry.spacing = dx;
+    geometry.domain.max = {{1.0, 1.0}};
+    geometry.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, 0.5}})));
+    RunSettings settings;
+    settings.set("smoothing_length", 1.3 * dx);
+    Storage<2> s = makeFluidStorage(model, geometry, settings);
+    SequentialScheduler scheduler;
+    Solver<2> solver(scheduler, settings, makeFluidEquations(model, geometry), geometry.domain);
+    ASSERT_NE(solver.equations().find<ParticleContainment<2>>(), nullptr);
+
+    // A fluid particle that has crossed the left wall by 0.3 dx, moving into it.
+    auto x = s.getValue<Vector<2>>(QuantityId::POSITION);
+    auto v = s.getDt<Vector<2>>(QuantityId::POSITION);
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    Size p = 0;
+    while (!isFluid(kind[p]) || x[p][0] > 0.6 * dx || x[p][1] < 0.2) ++p;
+    const double y = x[p][1];
+    x[p][0] = -0.3 * dx;
+    v[p] = Vector<2>{{-0.5, 0.25}};
+
+    solver.evaluate(s, 0.0);
+    solver.evaluate(s, 1e-4);
+    EXPECT_EQ(s.getValue<Vector<2>>(QuantityId::POSITION)[p][0], -0.3 * dx)
+        << "evaluate() moved the particle";
+    EXPECT_EQ(s.getDt<Vector<2>>(QuantityId::POSITION)[p][0], -0.5);
+
+    solver.postStep(s, 1e-4, 1e-4);
+    const Vector<2> xp = s.getValue<Vector<2>>(QuantityId::POSITION)[p];
+    const Vector<2> vp = s.getDt<Vector<2>>(QuantityId::POSITION)[p];
+    EXPECT_NEAR(xp[0], 0.3 * dx, 1e-15);
+    EXPECT_EQ(xp[1], y);
+    EXPECT_EQ(vp[0], 0.0);
+    EXPECT_EQ(vp[1], 0.25);
+}
+
+}  // namespace

@@ -1,7 +1,17 @@
 // Continuity equation (Monaghan 1992, eq. 2.9, in the volume form of Colagrossi & Landrini 2003):
 //   drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij,   V_j = m_j / rho_j.
-// Boundary particles enter with their prescribed wall velocity (the fluid does not flow
-// through a wall moving tangentially); only fluid densities evolve.
+// Only fluid densities evolve. Boundary particles enter with their own velocity, zero: they are
+// held in place (boundary_hold.hpp), and the equation is the time derivative of the kernel sum,
+// in which only their positions appear. A wall's prescribed surface velocity (a sliding lid,
+// WALL_VELOCITY) is a no-slip condition for the viscous terms, not a motion of its particles.
+// It used to enter here, which made a lid a mass source where its particle rows end: in the
+// lid-driven cavity the corner blocks of wall particles are split along the diagonal between
+// the lid (sliding at U) and the side walls (at rest), a jump of U / sqrt(2) normal to the
+// diagonal, so at t = 0 the fluid particle in the upstream top corner expanded at 0.45 U / L
+// and the one in the downstream corner was compressed at 2.5 U / L (relative density rates;
+// 25 x 25, fluid at rest; away from the corners the uniform lid rows cancel). At Re = 1000 the
+// upstream corner emptied (densities down to 0.78 rho0) and the runs stopped unstable (exit 9
+// at t = 0.9 to 28 s at spacings 0.08 to 0.04); now they run the 40 s (docs/validation.md).
 #pragma once
 
 #include <memory>
@@ -13,7 +23,7 @@ namespace num::sph {
 
 template <int Dim>
 struct ContinuityData {
-    std::vector<Vector<Dim>> velocity;  // fluid: v; boundary: prescribed wall velocity
+    std::vector<Vector<Dim>> velocity;  // fluid: v; boundary: zero (held in place)
     std::vector<Float> volume;          // m / rho
 };
 
@@ -72,7 +82,6 @@ class ContinuityDensity : public IEquationTerm<Dim> {
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
         const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-        const auto vw = s.template getValue<Vec>(QuantityId::WALL_VELOCITY);
         const auto m = s.template getValue<Float>(QuantityId::MASS);
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
@@ -80,7 +89,7 @@ class ContinuityDensity : public IEquationTerm<Dim> {
         d.velocity.resize(s.size()), d.volume.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                d.velocity[i] = isFluid(kind[i]) ? v[i] : vw[i];
+                d.velocity[i] = isFluid(kind[i]) ? v[i] : Vec{};
                 d.volume[i] = m[i] / rho[i];
             }
         });
@@ -89,7 +98,6 @@ class ContinuityDensity : public IEquationTerm<Dim> {
     void create(Storage<Dim>& s, IMaterial& material) const override {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST,
                                  material.params().template get<double>("density"));
-        s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vec{});
     }
 
   private:

@@ -96,7 +96,7 @@ struct PhysicsSpec {
     std::string density = "continuity";                         ///< continuity or summation
     double densityDiffusion = sph::defaults::densityDiffusion;  ///< delta-SPH's delta
     bool shifting = sph::defaults::shifting;
-    bool shiftingNearWalls = sph::defaults::shiftingNearWalls;
+    bool shiftingNormalToWalls = sph::defaults::shiftingNormalToWalls;
     bool freeSurfaceNoTension = sph::defaults::freeSurfaceNoTension;
     double gravityRamp = 0;                ///< seconds over which gravity rises from 0
     std::string eos = sph::defaults::eos;  ///< tait or linear

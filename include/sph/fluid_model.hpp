@@ -119,8 +119,8 @@ struct FluidModel {
 
     // Particle regularity.
     bool shifting = defaults::shifting;  ///< particle shifting (terms/particle_shifting.hpp)
-    Float shiftingCoefficient = defaults::shiftingCoefficient;  ///< A in dr = -A h c0 dt grad C
-    bool shiftingNearWalls = defaults::shiftingNearWalls;       ///< shift within a support of walls
+    Float shiftingCoefficient = defaults::shiftingCoefficient;     ///< A in dr = -A h c0 dt grad C
+    bool shiftingNormalToWalls = defaults::shiftingNormalToWalls;  ///< shift towards walls too
 
     /// No tension at free surfaces (terms/free_surface.hpp).
     bool freeSurfaceNoTension = defaults::freeSurfaceNoTension;
@@ -243,7 +243,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     if (model.bodyForce) eq += makeTerm<BodyForceTerm<Dim>>(model.bodyForce);
     if (model.shifting)
         eq += makeTerm<ParticleShifting<Dim>>(model.shiftingCoefficient, eos.c0,
-                                              model.shiftingNearWalls);
+                                              model.shiftingNormalToWalls);
     eq += makeHeatEquations(model.heat, model.bodyForce);
     eq += model.extraTerms;
     eq += makeTerm<BoundaryHold<Dim>>();

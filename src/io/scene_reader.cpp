@@ -390,8 +390,8 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     if (root.has("physics")) {
         const At ph = root["physics"];
         ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting",
-                   "shifting_near_walls", "free_surface_clamp", "gravity_ramp", "max_speed", "eos",
-                   "background_pressure"});
+                   "shifting_normal_to_walls", "free_surface_clamp", "gravity_ramp", "max_speed",
+                   "eos", "background_pressure"});
         s.physics.heat = ph.boolean("heat", s.physics.heat);
         s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
         if (ph.has("density"))
@@ -399,8 +399,8 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.densityDiffusion =
             ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
         s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
-        s.physics.shiftingNearWalls =
-            ph.boolean("shifting_near_walls", s.physics.shiftingNearWalls);
+        s.physics.shiftingNormalToWalls =
+            ph.boolean("shifting_normal_to_walls", s.physics.shiftingNormalToWalls);
         s.physics.freeSurfaceNoTension =
             ph.boolean("free_surface_clamp", s.physics.freeSurfaceNoTension);
         s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");

@@ -222,7 +222,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         fluid.artificialViscosity.value_or(sph::defaults::artificialViscosityFor(
             fluid.viscosity, scene.hOverSpacing * dx, m.c0(), Dim));
     m.shifting = scene.physics.shifting;
-    m.shiftingNearWalls = scene.physics.shiftingNearWalls;
+    m.shiftingNormalToWalls = scene.physics.shiftingNormalToWalls;
     m.freeSurfaceNoTension = scene.physics.freeSurfaceNoTension;
     bool gravityOn = false;
     for (int k = 0; k < Dim; ++k)

@@ -32,9 +32,10 @@ inline constexpr QuantityId DENSITY_GRADIENT = QuantityId(108);
 /// sum_j V_j W_ij over the neighbours j that were at a free surface (C_j < 0.9) in the previous
 /// evaluation (Float): > 0 within one kernel support of a free surface.
 inline constexpr QuantityId SURFACE_NEIGHBOURS = QuantityId(109);
-/// sum_j V_j W_ij over the boundary neighbours j (walls and bodies) of the last evaluation
-/// (Float): > 0 within one kernel support of a wall, from particle shifting.
-inline constexpr QuantityId WALL_NEIGHBOURS = QuantityId(110);
+/// sum_j V_j grad_i W_ij over the boundary neighbours j (walls and bodies) of the last
+/// evaluation (Vector): points towards the walls within one kernel support of them, zero
+/// elsewhere; from particle shifting.
+inline constexpr QuantityId WALL_DIRECTION = QuantityId(110);
 }  // namespace FluidId
 
 enum class WallSlip : int { NO_SLIP = 0, FREE_SLIP = 1 };

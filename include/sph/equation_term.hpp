@@ -2,12 +2,15 @@
 //
 // Order of the hooks in one evaluation (Solver::evaluate):
 //   1. the highest time derivative of every quantity is set to zero;
-//   2. initialize() of every term, in the order the terms were added;
-//   3. neighbour search, then initialize() of every derivative and the pair loop over the
-//      derivatives the terms required (setDerivatives, once per block when the solver is made);
-//   4. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
+//   2. the neighbour search: one cell grid of the positions, used by every pass of the
+//      evaluation; beginEvaluation() of every term receives it (EvaluationContext);
+//   3. initialize() of every term, in the order the terms were added (positions stay as the
+//      grid has them until the evaluation ends);
+//   4. initialize() of every derivative and the pair loop over the derivatives the terms
+//      required (setDerivatives, once per block when the solver is made);
+//   5. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
 //      d2t target gets its sum added;
-//   5. finalize() of every term, in the order the terms were added.
+//   6. finalize() of every term, in the order the terms were added.
 // An evaluation has no side effects on the state: finalize() combines sums into rates and
 // never moves a particle or changes an evolved quantity, so evaluating twice at the same t
 // gives the same rates (integrators may evaluate several times per step). One exception is left:
@@ -26,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "spatial/cell_grid.hpp"
 #include "sph/derivative.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/type_name.hpp"
@@ -61,6 +65,15 @@ inline Float diffusionTimeStep(Float factor, Float h, Float alpha) {
     return factor * h * h / alpha;
 }
 
+/// What the solver has prepared when an evaluation starts (IEquationTerm::beginEvaluation):
+/// the cell grid of the storage's current positions, of radius the kernel's support radius, in
+/// the solver's domain, which the pair loop uses too. Valid until the evaluation ends; particle
+/// i of the storage is particle i of the grid (CellGrid::forEachNeighbourOf).
+template <int Dim>
+struct EvaluationContext {
+    const CellGrid<Dim>& grid;
+};
+
 template <int Dim>
 class IEquationTerm {
   public:
@@ -69,6 +82,10 @@ class IEquationTerm {
     /// Requires the derivatives (pairwise sums) the term needs. Called once per block.
     virtual void setDerivatives(DerivativeHolder<Dim>& derivatives,
                                 const RunSettings& settings) = 0;
+    /// Runs at the start of each evaluation, before any term's initialize, with the
+    /// evaluation's neighbour grid: a term that gathers over neighbours before the pair loop
+    /// keeps a reference to it for its initialize. Default: nothing.
+    virtual void beginEvaluation(const EvaluationContext<Dim>&) {}
     /// Runs before the pair loop, e.g. to compute pressure from density.
     virtual void initialize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
     /// Runs after the pair loop; adds the term's contribution to the derivatives. Moves no
@@ -104,6 +121,9 @@ class EquationHolder {
             t->setDerivatives(d, s);
         }
         d.setRequester("");
+    }
+    void beginEvaluation(const EvaluationContext<Dim>& context) const {
+        for (auto& term : terms_) named(*term, [&] { term->beginEvaluation(context); });
     }
     void initialize(IScheduler& sch, Storage<Dim>& s, Float t) const {
         for (auto& term : terms_) named(*term, [&] { term->initialize(sch, s, t); });

@@ -1,7 +1,13 @@
-// The solver: one evaluation of all derivatives (neighbour search, terms' initialize, the pair
-// loop over blocks, the sum of the blocks' buffers, terms' finalize), the post-step phase
-// (terms' postStep, once per step after the integrator) and the time-step limits. An
-// evaluation has no side effects on the state: what moves particles runs in postStep.
+// The solver: one evaluation of all derivatives (neighbour search, terms' beginEvaluation and
+// initialize, the pair loop over blocks, the sum of the blocks' buffers, terms' finalize), the
+// post-step phase (terms' postStep, once per step after the integrator) and the time-step
+// limits. An evaluation has no side effects on the state: what moves particles runs in
+// postStep.
+//
+// One neighbour structure per evaluation: the cell grid is built once, after the periodic wrap
+// and before the terms' initialize, and serves every pass: the gathers terms run before the
+// pair loop (the wall condition, density by summation: EvaluationContext, NeighbourGather) and
+// the pair loop itself.
 //
 // Reproducibility: particles are split into blocks, each evaluated by one thread in particle
 // order with its own derivative objects. Symmetric mode: a fixed number of blocks (setting
@@ -95,9 +101,10 @@ class Solver {
         if (domain_.anyPeriodic())
             for (Vec& p : x) p = domain_.wrap(p);
         zeroHighestDerivatives(storage);
+        grid_.build(x, kernel_.supportRadius(), domain_);
+        equations_.beginEvaluation(EvaluationContext<Dim>{grid_});
         equations_.initialize(scheduler_, storage, t);
 
-        grid_.build(x, kernel_.supportRadius(), domain_);
         for (auto& a : accumulated_) a.reset(storage.size());
         holders_[0].initialize(storage, accumulated_[0]);
         for (std::size_t b = 1; b < holders_.size(); ++b)

@@ -24,6 +24,9 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
     void setDerivatives(sph::DerivativeHolder<Dim>& d, const sph::RunSettings& s) override {
         guard("setDerivatives", -1, [&] { term_->setDerivatives(d, s); });
     }
+    void beginEvaluation(const sph::EvaluationContext<Dim>& context) override {
+        guard("beginEvaluation", -1, [&] { term_->beginEvaluation(context); });
+    }
     void initialize(sph::IScheduler& sch, sph::Storage<Dim>& s, sph::Float t) override {
         guard("initialize", t, [&] { term_->initialize(sch, s, t); });
     }

@@ -2,12 +2,15 @@
 // number of threads, and the adaptive time step.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "heat_diffusion.hpp"
 #include "numerics.hpp"
+#include "sph/terms/neighbour_gather.hpp"
 #include "spring_force.hpp"
 #include "test_physics.hpp"
 
@@ -151,6 +154,103 @@ TEST(Scheduler, ThreadPoolRunsEveryChunkOnceAndPassesErrorsOn) {
                                       if (b == 57) throw std::runtime_error("chunk 57");
                                   }),
                  std::runtime_error);
+}
+
+/// A term that gathers over neighbours before the pair loop, as the wall condition does: it
+/// records the grid beginEvaluation gave it and, in initialize, every particle's neighbours as
+/// the shared gather finds them.
+template <int Dim>
+class GatherProbe : public IEquationTerm<Dim> {
+  public:
+    explicit GatherProbe(std::shared_ptr<const NeighbourGather<Dim>> gather)
+        : gather_(std::move(gather)) {}
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
+    void beginEvaluation(const EvaluationContext<Dim>& context) override {
+        grid = &context.grid;
+        ++begun;
+    }
+    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        EXPECT_EQ(begun, ++initialized) << "beginEvaluation runs before initialize";
+        std::vector<Size> all(s.size());
+        for (Size i = 0; i < s.size(); ++i) all[i] = i;
+        found.assign(s.size(), {});
+        gather_->forEach(scheduler, all, [&](Size i, auto&& visit) {
+            visit([&](Size j, const Vector<Dim>&, Float, Float) { found[i].push_back(j); });
+            std::sort(found[i].begin(), found[i].end());
+        });
+    }
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void create(Storage<Dim>&, IMaterial&) const override {}
+
+    const num::CellGrid<Dim>* grid = nullptr;
+    int begun = 0, initialized = 0;
+    std::vector<std::vector<Size>> found;
+
+  private:
+    std::shared_ptr<const NeighbourGather<Dim>> gather_;
+};
+
+/// One neighbour structure per evaluation: the gathers before the pair loop search the solver's
+/// own grid, built on the positions of this evaluation, and find exactly the neighbours of a
+/// brute-force search (nearest periodic images, the particle itself included).
+template <int Dim>
+void checkGatherSharesTheSolversGrid(bool periodic) {
+    SCOPED_TRACE(periodic ? "periodic" : "open");
+    RunSettings settings;
+    settings.set("smoothing_length", 0.06);
+    Storage<Dim> s = enginetest::randomParticles<Dim>(Dim == 2 ? 400 : 1500, 23);
+    ParallelScheduler scheduler(3);
+    const num::Domain<Dim> domain = unitBox<Dim>(periodic);
+    auto gather = std::make_shared<NeighbourGather<Dim>>();
+    Solver<Dim> solver(scheduler, settings,
+                       makeTerm<NeighbourRefresh<Dim>>(gather) + makeTerm<GatherProbe<Dim>>(gather),
+                       domain);
+    Material material;
+    solver.create(s, material);
+    const auto* probe = solver.equations().template find<GatherProbe<Dim>>();
+    ASSERT_NE(probe, nullptr);
+    const double R = solver.kernel().supportRadius();
+    for (int evaluation = 0; evaluation < 2; ++evaluation) {
+        solver.evaluate(s, 0);
+        EXPECT_EQ(probe->grid, &solver.grid()) << "the pair loop's grid, not a second one";
+        EXPECT_EQ(probe->begun, evaluation + 1);
+        const auto x = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
+        std::size_t pairs = 0;
+        for (Size i = 0; i < s.size(); ++i) {
+            std::vector<Size> expected;
+            for (Size j = 0; j < s.size(); ++j) {
+                const auto dx = periodic ? domain.minimumImage(x[i] - x[j]) : x[i] - x[j];
+                if (normSqr(dx) < R * R) expected.push_back(j);
+            }
+            pairs += expected.size();
+            ASSERT_EQ(probe->found[i], expected) << "particle " << i;
+        }
+        EXPECT_GT(pairs, 5 * std::size_t(s.size()));
+        // The next evaluation sees moved particles: the grid is rebuilt for it.
+        auto xm = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
+        for (Size i = 0; i < s.size(); ++i)
+            xm[i] = domain.wrap(xm[i] + Vector<Dim>::filled(0.3 * R * ((i % 7) - 3.0)));
+        if (!periodic)
+            for (Size i = 0; i < s.size(); ++i)
+                for (int k = 0; k < Dim; ++k) xm[i][k] = std::clamp(xm[i][k], 0.0, 1.0);
+    }
+}
+
+TEST(Solver, GathersBeforeThePairLoopSearchTheSolversOneGrid) {
+    for (bool periodic : {false, true}) {
+        checkGatherSharesTheSolversGrid<2>(periodic);
+        checkGatherSharesTheSolversGrid<3>(periodic);
+    }
+}
+
+TEST(Solver, GatherWithoutAGridSaysSo) {
+    NeighbourGather<2> gather;
+    RunSettings settings;
+    settings.set("smoothing_length", 0.1);
+    gather.setKernel(settings);
+    SequentialScheduler scheduler;
+    const std::vector<Size> targets{0};
+    EXPECT_THROW(gather.forEach(scheduler, targets, [](Size, auto&&) {}), std::logic_error);
 }
 
 /// A term that offers the given limits.

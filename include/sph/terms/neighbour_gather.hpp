@@ -1,13 +1,16 @@
 // A gather pass over neighbours that runs before the main pair loop, for quantities the pair
 // loop needs already finished: density by summation, and the pressure and velocity of wall
-// particles extrapolated from the fluid. NeighbourRefresh (a term placed first) rebuilds the
-// cell grid once per evaluation; later terms' initialize() use it.
+// particles extrapolated from the fluid. It searches the solver's cell grid of the evaluation,
+// the one the pair loop uses (same positions, radius and domain), so a step builds one grid:
+// NeighbourRefresh (a term) binds the shared gather to it at the start of each evaluation
+// (IEquationTerm::beginEvaluation); later terms' initialize() use it.
 #pragma once
 
 #include <cmath>
 #include <memory>
 #include <optional>
 #include <span>
+#include <stdexcept>
 
 #include "spatial/cell_grid.hpp"
 #include "sph/equation_term.hpp"
@@ -20,20 +23,26 @@ class NeighbourGather {
   public:
     using Vec = Vector<Dim>;
 
-    explicit NeighbourGather(const Domain<Dim>& domain) : domain_(domain) {}
+    NeighbourGather() = default;
+    /// The grid searched is the solver's, in the solver's domain; the domain given here is not
+    /// used (kept for callers written when the gather built a grid of its own).
+    explicit NeighbourGather(const Domain<Dim>&) {}
 
     void setKernel(const RunSettings& settings) { kernel_.emplace(settings); }
     const RunKernel<Dim>& kernel() const { return *kernel_; }
 
-    void build(ArrayView<const Vec> x) {
-        x_ = x;
-        grid_.build(x, kernel_->supportRadius(), domain_);
-    }
+    /// The grid of the current evaluation (built on the storage's positions with the kernel's
+    /// support radius); valid until the evaluation ends.
+    void use(const CellGrid<Dim>& grid) { grid_ = &grid; }
 
     /// For every i in `targets`, in parallel: f(i, visit), where visit(g) calls
     /// g(j, dx = x_i - x_j, r, W(r)) for every neighbour j, i itself included.
     template <class F>
     void forEach(IScheduler& scheduler, std::span<const Size> targets, F&& f) const {
+        if (!grid_)
+            throw std::logic_error(
+                "NeighbourGather: no neighbour grid (NeighbourRefresh binds the solver's grid "
+                "at the start of each evaluation)");
         withKernel<Dim>(kernel_->type, [&](auto k) {
             using Kernel = decltype(k);
             const Float h = kernel_->h;
@@ -41,7 +50,7 @@ class NeighbourGather {
                 for (Size t = b; t < e; ++t) {
                     const Size i = targets[t];
                     auto visit = [&](auto&& g) {
-                        grid_.forEachNeighbour(x_[i], [&](Size j, const Vec& dx, Float r2) {
+                        grid_->forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
                             const Float r = std::sqrt(r2);
                             g(j, dx, r, Kernel::W(r, h));
                         });
@@ -53,13 +62,11 @@ class NeighbourGather {
     }
 
   private:
-    Domain<Dim> domain_;
     std::optional<RunKernel<Dim>> kernel_;
-    CellGrid<Dim> grid_;
-    ArrayView<const Vec> x_;
+    const CellGrid<Dim>* grid_ = nullptr;
 };
 
-/// Rebuilds the shared gather grid at the start of each evaluation.
+/// Binds the shared gather to the solver's grid at the start of each evaluation.
 template <int Dim>
 class NeighbourRefresh : public IEquationTerm<Dim> {
   public:
@@ -69,9 +76,10 @@ class NeighbourRefresh : public IEquationTerm<Dim> {
     void setDerivatives(DerivativeHolder<Dim>&, const RunSettings& settings) override {
         gather_->setKernel(settings);
     }
-    void initialize(IScheduler&, Storage<Dim>& s, Float) override {
-        gather_->build(s.template getValue<Vector<Dim>>(QuantityId::POSITION));
+    void beginEvaluation(const EvaluationContext<Dim>& context) override {
+        gather_->use(context.grid);
     }
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     void create(Storage<Dim>&, IMaterial&) const override {}
 

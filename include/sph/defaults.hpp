@@ -31,8 +31,8 @@ inline constexpr bool shifting = true;
 inline constexpr double shiftingCoefficient = 0.5;
 // Within a kernel support of a wall or body, particles are shifted along the wall only: the
 // component towards or away from it damps the boundary layer (lid-driven cavity, Re = 100,
-// 50 x 50: error on Ghia et al.'s profiles 0.040 of the lid speed along walls only, 0.102 with
-// it; terms/particle_shifting.hpp).
+// 50 x 50: error on Ghia et al.'s profiles 0.026 of the lid speed along walls only, 0.102 with
+// it before the continuity fix and 0.040 without it then; terms/particle_shifting.hpp).
 inline constexpr bool shiftingNormalToWalls = false;
 
 // No tension at free surfaces (terms/free_surface.hpp).

@@ -162,7 +162,20 @@ std::unique_ptr<ITimeStepping<Dim>> makeIntegrator(const std::string& name) {
                         "' (expected leapfrog, predictor_corrector or euler)");
 }
 
-/// The run loop: adaptive step from the solver's limits, reordering by cell every few steps.
+/// Reorders the particles by cell of a grid built from their positions now, so neighbours are
+/// near in memory. Depends on positions only (not on the last evaluation's grid, which the
+/// post-step phase has moved away from), so a restarted run reorders as the uninterrupted one.
+template <int Dim>
+void reorderByCell(Storage<Dim>& s, const Solver<Dim>& solver) {
+    CellGrid<Dim> grid;
+    grid.build(s.template getValue<Vector<Dim>>(QuantityId::POSITION),
+               solver.kernel().supportRadius(), solver.domain());
+    s.reorder(std::vector<Size>(grid.sortedOrder().begin(), grid.sortedOrder().end()));
+}
+
+/// The run loop: adaptive step from the solver's limits, reordering by cell every few steps
+/// (setting "reorder_every"). The apps drive it too: the step, the reorder and the restart
+/// (setTime, markPrimed) exist once.
 /// A step is: the integrator (its evaluations have no side effects on the state), then the
 /// post-step phase (Solver::postStep: particle shifting, containment, bookkeeping) once.
 template <int Dim>
@@ -184,10 +197,8 @@ class Run {
     /// dt at the new time. Returns the step taken.
     Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
         if (!primed_) prime();
-        if (reorderEvery_ > 0 && steps_ > 0 && steps_ % reorderEvery_ == 0) {
-            storage_.reorder(std::vector<Size>(solver_.grid().sortedOrder().begin(),
-                                               solver_.grid().sortedOrder().end()));
-        }
+        if (reorderEvery_ > 0 && steps_ > 0 && steps_ % reorderEvery_ == 0)
+            reorderByCell(storage_, solver_);
         const TimeStepLimits limits = solver_.timeStepLimits(storage_);
         Float dt = limits.dt();
         criterion_ = limits.criterion();

@@ -1,5 +1,5 @@
 // The pieces of the time loop (internal to numerics_io): the state a checkpoint keeps besides
-// the particles, health checks, open boundaries, reordering, summary.json and the final report.
+// the particles, health checks, open boundaries, summary.json and the final report.
 #pragma once
 
 #include <cmath>
@@ -54,16 +54,6 @@ std::vector<double> conservationVector(const sph::Storage<Dim>& s, const sph::Ve
     for (int k = 0; k < Dim; ++k) v.push_back(c.momentum[k]);
     v.push_back(c.kinetic), v.push_back(c.potential), v.push_back(c.thermal);
     return v;
-}
-
-/// Reorders particles by cell so neighbours are near in memory. Depends on positions only, so
-/// a restarted run reorders exactly as the uninterrupted one.
-template <int Dim>
-void reorderByCell(sph::Storage<Dim>& s, const sph::Solver<Dim>& solver) {
-    CellGrid<Dim> grid;
-    grid.build(s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION),
-               solver.kernel().supportRadius(), solver.domain());
-    s.reorder(std::vector<sph::Size>(grid.sortedOrder().begin(), grid.sortedOrder().end()));
 }
 
 /// The first particle whose field is not finite, or -1: position and every written field

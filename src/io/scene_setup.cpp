@@ -246,7 +246,6 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
     s.set("threads", std::int64_t(threads));
     s.set("cfl", scene.cfl);
     if (scene.dtMax > 0) s.set("dt_max", scene.dtMax);
-    s.set("reorder_every", std::int64_t(0));  // the app reorders (restart-safe)
 
     sph::FluidGeometry<Dim>& geo = setup.geometry;
     geo.spacing = dx;

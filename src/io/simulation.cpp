@@ -170,7 +170,6 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     const std::uint64_t startSteps = run.steps();
     try {
         while (!reached(run.time(), scene.endTime) && !stop::requested()) {
-            if (run.steps() > 0 && run.steps() % 25 == 0) reorderByCell(storage, solver);
             // An end time on an output time (to round-off) steps to that output time exactly,
             // as a longer run does.
             const double next = nextOutputTime();

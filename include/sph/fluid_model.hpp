@@ -223,7 +223,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     const bool summation = model.density == DensityMode::SUMMATION;
 
     EquationHolder<Dim> eq = makeHeatPreEquations(model.heat);
-    auto gather = std::make_shared<NeighbourGather<Dim>>(geometry.domain);
+    auto gather = std::make_shared<NeighbourGather<Dim>>();
     if (summation || boundaries) eq += makeTerm<NeighbourRefresh<Dim>>(gather);
     if (summation) eq += makeTerm<SummationDensity<Dim>>(gather);
     eq += makeTerm<EquationOfStateTerm<Dim>>(eos);

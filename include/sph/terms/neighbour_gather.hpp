@@ -23,10 +23,6 @@ class NeighbourGather {
   public:
     using Vec = Vector<Dim>;
 
-    NeighbourGather() = default;
-    /// The grid searched is the solver's, in the solver's domain; the domain given here is not
-    /// used (kept for callers written when the gather built a grid of its own).
-    explicit NeighbourGather(const Domain<Dim>&) {}
 
     void setKernel(const RunSettings& settings) { kernel_.emplace(settings); }
     const RunKernel<Dim>& kernel() const { return *kernel_; }

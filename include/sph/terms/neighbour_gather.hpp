@@ -23,7 +23,6 @@ class NeighbourGather {
   public:
     using Vec = Vector<Dim>;
 
-
     void setKernel(const RunSettings& settings) { kernel_.emplace(settings); }
     const RunKernel<Dim>& kernel() const { return *kernel_; }
 

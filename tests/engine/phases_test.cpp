@@ -4,6 +4,7 @@
 // post-step phase, which Run::step calls after the integrator.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <string>
@@ -149,6 +150,57 @@ TEST(Phases, PostStepShiftsParticlesByTheStepsDisplacement) {
     EXPECT_EQ(moved, s.size()) << "every particle is shifted in a jittered periodic box";
     EXPECT_GT(velocityChanged, s.size() / 2) << "v follows by the Taylor correction";
 }
+
+/// Within a kernel support of a wall, shifting moves particles along the wall only: the component
+/// along n = sum over wall neighbours of V_j grad W_ij is removed (terms/particle_shifting.hpp),
+/// unless shiftingNormalToWalls asks for it.
+void expectShiftAlongWalls(bool normalToWalls) {
+    const double dx = 0.05;
+    FluidModel<2> model;
+    model.maxVelocity = 1;
+    model.shiftingNormalToWalls = normalToWalls;
+    FluidGeometry<2> geometry;
+    geometry.spacing = dx;
+    geometry.domain.max = {{1.0, 1.0}};
+    geometry.fluid.push_back(
+        FluidRegion<2>::filling(Shape<2>::box(geometry.domain.min, geometry.domain.max)));
+    RunSettings settings;
+    settings.set("smoothing_length", 1.3 * dx);
+    Storage<2> s = makeFluidStorage(model, geometry, settings);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> jitter(-0.1 * dx, 0.1 * dx);
+    auto x = s.getValue<Vector<2>>(QuantityId::POSITION);
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    for (Size i = 0; i < s.size(); ++i)
+        if (isFluid(kind[i])) x[i] += Vector<2>{{jitter(rng), jitter(rng)}};
+    SequentialScheduler scheduler;
+    Solver<2> solver(scheduler, settings, makeFluidEquations(model, geometry), geometry.domain);
+    solver.evaluate(s, 0.0);
+    const Storage<2> before = s;
+    solver.postStep(s, 1e-4, 1e-4);
+
+    // The displacement as shifting computed it (SHIFT = dr / dt): x1 - x0 would carry the
+    // round-off of positions, 1e-10 of dr here.
+    const auto shift = s.getValue<Vector<2>>(QuantityId::SHIFT);
+    const auto n = before.getValue<Vector<2>>(FluidId::WALL_DIRECTION);
+    Size nearWall = 0, alongOnly = 0, moved = 0;
+    for (Size i = 0; i < s.size(); ++i) {
+        if (!isFluid(kind[i]) || normSqr(n[i]) == 0) continue;
+        ++nearWall;
+        const Vector<2> dr = shift[i];
+        moved += norm(dr) > 0;
+        alongOnly += std::abs(dot(dr, n[i])) <= 1e-12 * norm(dr) * norm(n[i]);
+    }
+    ASSERT_GT(nearWall, 50u) << "the box has particles within a support of its walls";
+    EXPECT_GT(moved, nearWall / 2) << "near-wall particles are still shifted";
+    if (normalToWalls)
+        EXPECT_LT(alongOnly, nearWall / 10) << "with the normal component kept";
+    else
+        EXPECT_EQ(alongOnly, nearWall) << "only along the walls";
+}
+
+TEST(Phases, ShiftingNearWallsIsAlongThemByDefault) { expectShiftAlongWalls(false); }
+TEST(Phases, ShiftingNormalToWallsKeepsTheNormalComponent) { expectShiftAlongWalls(true); }
 
 TEST(Phases, RunStepIsTheIntegratorThenThePostStepPhase) {
     SequentialScheduler scheduler;

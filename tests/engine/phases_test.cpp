@@ -151,21 +151,29 @@ TEST(Phases, PostStepShiftsParticlesByTheStepsDisplacement) {
     EXPECT_GT(velocityChanged, s.size() / 2) << "v follows by the Taylor correction";
 }
 
+/// A unit box with walls on every side, water up to fillHeight, spacing dx, h = 1.3 dx.
+struct WalledBox {
+    static constexpr double dx = 0.05;
+    FluidGeometry<2> geometry;
+    RunSettings settings;
+    explicit WalledBox(double fillHeight) {
+        geometry.spacing = dx;
+        geometry.domain.max = {{1.0, 1.0}};
+        geometry.fluid.push_back(
+            FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, fillHeight}})));
+        settings.set("smoothing_length", 1.3 * dx);
+    }
+};
+
 /// Within a kernel support of a wall, shifting moves particles along the wall only: the component
 /// along n = sum over wall neighbours of V_j grad W_ij is removed (terms/particle_shifting.hpp),
 /// unless shiftingNormalToWalls asks for it.
 void expectShiftAlongWalls(bool normalToWalls) {
-    const double dx = 0.05;
+    const double dx = WalledBox::dx;
     FluidModel<2> model;
     model.maxVelocity = 1;
     model.shiftingNormalToWalls = normalToWalls;
-    FluidGeometry<2> geometry;
-    geometry.spacing = dx;
-    geometry.domain.max = {{1.0, 1.0}};
-    geometry.fluid.push_back(
-        FluidRegion<2>::filling(Shape<2>::box(geometry.domain.min, geometry.domain.max)));
-    RunSettings settings;
-    settings.set("smoothing_length", 1.3 * dx);
+    const auto [geometry, settings] = WalledBox(1.0);
     Storage<2> s = makeFluidStorage(model, geometry, settings);
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> jitter(-0.1 * dx, 0.1 * dx);
@@ -222,16 +230,11 @@ TEST(Phases, RunStepIsTheIntegratorThenThePostStepPhase) {
 }
 
 TEST(Phases, ContainmentReflectsInThePostStepPhaseOnly) {
-    const double dx = 0.05;
+    const double dx = WalledBox::dx;
     FluidModel<2> model;
     model.maxVelocity = 1;
     model.shifting = false;
-    FluidGeometry<2> geometry;
-    geometry.spacing = dx;
-    geometry.domain.max = {{1.0, 1.0}};
-    geometry.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, 0.5}})));
-    RunSettings settings;
-    settings.set("smoothing_length", 1.3 * dx);
+    const auto [geometry, settings] = WalledBox(0.5);
     Storage<2> s = makeFluidStorage(model, geometry, settings);
     SequentialScheduler scheduler;
     Solver<2> solver(scheduler, settings, makeFluidEquations(model, geometry), geometry.domain);

@@ -2,10 +2,11 @@
 //
 // Order of the hooks in one evaluation (Solver::evaluate):
 //   1. the highest time derivative of every quantity is set to zero;
-//   2. the neighbour search: one cell grid of the positions, used by every pass of the
-//      evaluation; beginEvaluation() of every term receives it (EvaluationContext);
+//   2. the neighbour search: the neighbour lists of the positions (Verlet lists, rebuilt only
+//      when particles moved far enough), used by every pass of the evaluation;
+//      beginEvaluation() of every term receives them (EvaluationContext);
 //   3. initialize() of every term, in the order the terms were added (positions stay as the
-//      grid has them until the evaluation ends);
+//      lists read them until the evaluation ends);
 //   4. initialize() of every derivative and the pair loop over the derivatives the terms
 //      required (setDerivatives, once per block when the solver is made);
 //   5. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
@@ -29,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "spatial/cell_grid.hpp"
+#include "spatial/neighbour_list.hpp"
 #include "sph/derivative.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/type_name.hpp"
@@ -66,12 +67,14 @@ inline Float diffusionTimeStep(Float factor, Float h, Float alpha) {
 }
 
 /// What the solver has prepared when an evaluation starts (IEquationTerm::beginEvaluation):
-/// the cell grid of the storage's current positions, of radius the kernel's support radius, in
-/// the solver's domain, which the pair loop uses too. Valid until the evaluation ends; particle
-/// i of the storage is particle i of the grid (CellGrid::forEachNeighbourOf).
+/// the neighbour lists of the storage's current positions, of radius the kernel's support
+/// radius, in the solver's domain, which the pair loop uses too. Valid until the evaluation
+/// ends; particle i of the storage is particle i of the lists:
+/// neighbours.forEachNeighbourOf(i, f) calls f(j, dx = x_i - x_j, r2) for every j within the
+/// support radius (nearest images, i itself included), in increasing j.
 template <int Dim>
 struct EvaluationContext {
-    const CellGrid<Dim>& grid;
+    const VerletList<Dim>& neighbours;
 };
 
 template <int Dim>
@@ -83,8 +86,8 @@ class IEquationTerm {
     virtual void setDerivatives(DerivativeHolder<Dim>& derivatives,
                                 const RunSettings& settings) = 0;
     /// Runs at the start of each evaluation, before any term's initialize, with the
-    /// evaluation's neighbour grid: a term that gathers over neighbours before the pair loop
-    /// keeps a reference to it for its initialize. Default: nothing.
+    /// evaluation's neighbour lists: a term that gathers over neighbours before the pair loop
+    /// keeps a reference to them for its initialize. Default: nothing.
     virtual void beginEvaluation(const EvaluationContext<Dim>&) {}
     /// Runs before the pair loop, e.g. to compute pressure from density.
     virtual void initialize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;

@@ -4,10 +4,13 @@
 // limits. An evaluation has no side effects on the state: what moves particles runs in
 // postStep.
 //
-// One neighbour structure per evaluation: the cell grid is built once, after the periodic wrap
-// and before the terms' initialize, and serves every pass: the gathers terms run before the
+// One neighbour structure for every pass: Verlet lists (spatial/neighbour_list.hpp), updated
+// after the periodic wrap and before the terms' initialize, rebuilt only when a particle has
+// moved more than half the skin (setting "neighbour_skin") since the last build or when the
+// particles were renumbered (invalidateNeighbours). They serve the gathers terms run before the
 // pair loop (the wall condition, density by summation: EvaluationContext, NeighbourGather) and
-// the pair loop itself.
+// the pair loop itself. Neighbours are filtered by the current distance and come in increasing
+// index, so results do not depend on the skin or on when the lists were built.
 //
 // Reproducibility: particles are split into blocks, each evaluated by one thread in particle
 // order with its own derivative objects. Symmetric mode: a fixed number of blocks (setting
@@ -24,7 +27,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "spatial/cell_grid.hpp"
+#include "spatial/neighbour_list.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
 
@@ -82,6 +85,8 @@ class Solver {
             holders_[b].create(accumulated_[symmetric_ ? b : 0]);
         }
         needsW_ = holders_[0].needsKernelValues();
+        neighbours_.configure(kernel_.supportRadius(), settings_.get<double>("neighbour_skin"),
+                              domain_);
     }
 
     /// Creates the quantities every term needs (once, before the first evaluation).
@@ -101,8 +106,9 @@ class Solver {
         if (domain_.anyPeriodic())
             for (Vec& p : x) p = domain_.wrap(p);
         zeroHighestDerivatives(storage);
-        grid_.build(x, kernel_.supportRadius(), domain_);
-        equations_.beginEvaluation(EvaluationContext<Dim>{grid_});
+        neighbours_.update(
+            x, [&](std::size_t n, const auto& body) { scheduler_.parallelFor(Size(n), 1, body); });
+        equations_.beginEvaluation(EvaluationContext<Dim>{neighbours_});
         equations_.initialize(scheduler_, storage, t);
 
         for (auto& a : accumulated_) a.reset(storage.size());
@@ -151,7 +157,11 @@ class Solver {
 
     /// Mean number of neighbours per particle in the last evaluation (each pair counted twice).
     double meanNeighbours() const { return meanNeighbours_; }
-    const CellGrid<Dim>& grid() const { return grid_; }
+    /// The neighbour lists of the last evaluation.
+    const VerletList<Dim>& neighbours() const { return neighbours_; }
+    /// Forces the neighbour lists to be rebuilt at the next evaluation: call it after
+    /// reordering, adding or removing particles (reorderByCell does).
+    void invalidateNeighbours() { neighbours_.invalidate(); }
     const EquationHolder<Dim>& equations() const { return equations_; }
     const Domain<Dim>& domain() const { return domain_; }
     const RunSettings& settings() const { return settings_; }
@@ -168,7 +178,7 @@ class Solver {
     }
 
     struct Scratch {
-        typename CellGrid<Dim>::Neighbours found;
+        typename VerletList<Dim>::Neighbours found;
         std::vector<Vec> grads;
         std::vector<Float> r, w;
         std::size_t pairs = 0;
@@ -202,9 +212,8 @@ class Solver {
                         abandoned_.store(true, std::memory_order_relaxed);
                         break;
                     }
-                    const Size m = symmetric_ ? grid_.collectAfter(i, sc.found)
-                                              : grid_.collect(
-                                                    i, [i](Size j) { return j != i; }, sc.found);
+                    const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)
+                                              : neighbours_.collect(i, sc.found);
                     sc.pairs += m;
                     if (sc.r.size() < m) {
                         sc.r.resize(2 * m), sc.grads.resize(2 * m);
@@ -244,7 +253,7 @@ class Solver {
     std::vector<DerivativeHolder<Dim>> holders_;
     std::vector<Scratch> scratch_;
     std::vector<Accumulated<Dim>> accumulated_;
-    CellGrid<Dim> grid_;
+    VerletList<Dim> neighbours_;
     bool needsW_ = false;
     double meanNeighbours_ = 0;
     std::function<bool()> abandonCheck_;

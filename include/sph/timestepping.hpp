@@ -165,12 +165,14 @@ std::unique_ptr<ITimeStepping<Dim>> makeIntegrator(const std::string& name) {
 /// Reorders the particles by cell of a grid built from their positions now, so neighbours are
 /// near in memory. Depends on positions only (not on the last evaluation's grid, which the
 /// post-step phase has moved away from), so a restarted run reorders as the uninterrupted one.
+/// The solver's neighbour lists are invalidated: they index particles by their old order.
 template <int Dim>
-void reorderByCell(Storage<Dim>& s, const Solver<Dim>& solver) {
+void reorderByCell(Storage<Dim>& s, Solver<Dim>& solver) {
     CellGrid<Dim> grid;
     grid.build(s.template getValue<Vector<Dim>>(QuantityId::POSITION),
                solver.kernel().supportRadius(), solver.domain());
     s.reorder(std::vector<Size>(grid.sortedOrder().begin(), grid.sortedOrder().end()));
+    solver.invalidateNeighbours();
 }
 
 /// The run loop: adaptive step from the solver's limits, reordering by cell every few steps

@@ -157,8 +157,8 @@ TEST(Scheduler, ThreadPoolRunsEveryChunkOnceAndPassesErrorsOn) {
 }
 
 /// A term that gathers over neighbours before the pair loop, as the wall condition does: it
-/// records the grid beginEvaluation gave it and, in initialize, every particle's neighbours as
-/// the shared gather finds them.
+/// records the neighbour lists beginEvaluation gave it and, in initialize, every particle's
+/// neighbours as the shared gather finds them, in the order it finds them.
 template <int Dim>
 class GatherProbe : public IEquationTerm<Dim> {
   public:
@@ -166,7 +166,7 @@ class GatherProbe : public IEquationTerm<Dim> {
         : gather_(std::move(gather)) {}
     void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
     void beginEvaluation(const EvaluationContext<Dim>& context) override {
-        grid = &context.grid;
+        neighbours = &context.neighbours;
         ++begun;
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
@@ -176,13 +176,12 @@ class GatherProbe : public IEquationTerm<Dim> {
         found.assign(s.size(), {});
         gather_->forEach(scheduler, all, [&](Size i, auto&& visit) {
             visit([&](Size j, const Vector<Dim>&, Float, Float) { found[i].push_back(j); });
-            std::sort(found[i].begin(), found[i].end());
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     void create(Storage<Dim>&, IMaterial&) const override {}
 
-    const num::CellGrid<Dim>* grid = nullptr;
+    const num::VerletList<Dim>* neighbours = nullptr;
     int begun = 0, initialized = 0;
     std::vector<std::vector<Size>> found;
 
@@ -190,11 +189,12 @@ class GatherProbe : public IEquationTerm<Dim> {
     std::shared_ptr<const NeighbourGather<Dim>> gather_;
 };
 
-/// One neighbour structure per evaluation: the gathers before the pair loop search the solver's
-/// own grid, built on the positions of this evaluation, and find exactly the neighbours of a
-/// brute-force search (nearest periodic images, the particle itself included).
+/// One neighbour structure for every pass: the gathers before the pair loop read the solver's
+/// own neighbour lists, valid for the positions of this evaluation, and find exactly the
+/// neighbours of a brute-force search (nearest periodic images, the particle itself included),
+/// in increasing index.
 template <int Dim>
-void checkGatherSharesTheSolversGrid(bool periodic) {
+void checkGatherSharesTheSolversNeighbours(bool periodic) {
     SCOPED_TRACE(periodic ? "periodic" : "open");
     RunSettings settings;
     settings.set("smoothing_length", 0.06);
@@ -212,7 +212,8 @@ void checkGatherSharesTheSolversGrid(bool periodic) {
     const double R = solver.kernel().supportRadius();
     for (int evaluation = 0; evaluation < 2; ++evaluation) {
         solver.evaluate(s, 0);
-        EXPECT_EQ(probe->grid, &solver.grid()) << "the pair loop's grid, not a second one";
+        EXPECT_EQ(probe->neighbours, &solver.neighbours())
+            << "the pair loop's lists, not a second structure";
         EXPECT_EQ(probe->begun, evaluation + 1);
         const auto x = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
         std::size_t pairs = 0;
@@ -226,7 +227,7 @@ void checkGatherSharesTheSolversGrid(bool periodic) {
             ASSERT_EQ(probe->found[i], expected) << "particle " << i;
         }
         EXPECT_GT(pairs, 5 * std::size_t(s.size()));
-        // The next evaluation sees moved particles: the grid is rebuilt for it.
+        // The next evaluation sees moved particles (beyond the skin: the lists are rebuilt).
         auto xm = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
         for (Size i = 0; i < s.size(); ++i)
             xm[i] = domain.wrap(xm[i] + Vector<Dim>::filled(0.3 * R * ((i % 7) - 3.0)));
@@ -236,14 +237,14 @@ void checkGatherSharesTheSolversGrid(bool periodic) {
     }
 }
 
-TEST(Solver, GathersBeforeThePairLoopSearchTheSolversOneGrid) {
+TEST(Solver, GathersBeforeThePairLoopReadTheSolversOneNeighbourStructure) {
     for (bool periodic : {false, true}) {
-        checkGatherSharesTheSolversGrid<2>(periodic);
-        checkGatherSharesTheSolversGrid<3>(periodic);
+        checkGatherSharesTheSolversNeighbours<2>(periodic);
+        checkGatherSharesTheSolversNeighbours<3>(periodic);
     }
 }
 
-TEST(Solver, GatherWithoutAGridSaysSo) {
+TEST(Solver, GatherWithoutNeighbourListsSaysSo) {
     NeighbourGather<2> gather;
     RunSettings settings;
     settings.set("smoothing_length", 0.1);

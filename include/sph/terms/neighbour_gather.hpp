@@ -1,9 +1,10 @@
 // A gather pass over neighbours that runs before the main pair loop, for quantities the pair
 // loop needs already finished: density by summation, and the pressure and velocity of wall
-// particles extrapolated from the fluid. It searches the solver's cell grid of the evaluation,
-// the one the pair loop uses (same positions, radius and domain), so a step builds one grid:
-// NeighbourRefresh (a term) binds the shared gather to it at the start of each evaluation
-// (IEquationTerm::beginEvaluation); later terms' initialize() use it.
+// particles extrapolated from the fluid. It reads the solver's neighbour lists of the
+// evaluation, the ones the pair loop uses (same positions, radius and domain), so every pass
+// shares one neighbour structure: NeighbourRefresh (a term) binds the shared gather to them at
+// the start of each evaluation (IEquationTerm::beginEvaluation); later terms' initialize() use
+// them.
 #pragma once
 
 #include <cmath>
@@ -12,7 +13,7 @@
 #include <span>
 #include <stdexcept>
 
-#include "spatial/cell_grid.hpp"
+#include "spatial/neighbour_list.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
 
@@ -26,17 +27,17 @@ class NeighbourGather {
     void setKernel(const RunSettings& settings) { kernel_.emplace(settings); }
     const RunKernel<Dim>& kernel() const { return *kernel_; }
 
-    /// The grid of the current evaluation (built on the storage's positions with the kernel's
-    /// support radius); valid until the evaluation ends.
-    void use(const CellGrid<Dim>& grid) { grid_ = &grid; }
+    /// The neighbour lists of the current evaluation (of the storage's positions, with the
+    /// kernel's support radius); valid until the evaluation ends.
+    void use(const VerletList<Dim>& neighbours) { neighbours_ = &neighbours; }
 
     /// For every i in `targets`, in parallel: f(i, visit), where visit(g) calls
-    /// g(j, dx = x_i - x_j, r, W(r)) for every neighbour j, i itself included.
+    /// g(j, dx = x_i - x_j, r, W(r)) for every neighbour j, i itself included, in increasing j.
     template <class F>
     void forEach(IScheduler& scheduler, std::span<const Size> targets, F&& f) const {
-        if (!grid_)
+        if (!neighbours_)
             throw std::logic_error(
-                "NeighbourGather: no neighbour grid (NeighbourRefresh binds the solver's grid "
+                "NeighbourGather: no neighbour lists (NeighbourRefresh binds the solver's lists "
                 "at the start of each evaluation)");
         withKernel<Dim>(kernel_->type, [&](auto k) {
             using Kernel = decltype(k);
@@ -45,7 +46,7 @@ class NeighbourGather {
                 for (Size t = b; t < e; ++t) {
                     const Size i = targets[t];
                     auto visit = [&](auto&& g) {
-                        grid_->forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
+                        neighbours_->forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
                             const Float r = std::sqrt(r2);
                             g(j, dx, r, Kernel::W(r, h));
                         });
@@ -58,10 +59,10 @@ class NeighbourGather {
 
   private:
     std::optional<RunKernel<Dim>> kernel_;
-    const CellGrid<Dim>* grid_ = nullptr;
+    const VerletList<Dim>* neighbours_ = nullptr;
 };
 
-/// Binds the shared gather to the solver's grid at the start of each evaluation.
+/// Binds the shared gather to the solver's neighbour lists at the start of each evaluation.
 template <int Dim>
 class NeighbourRefresh : public IEquationTerm<Dim> {
   public:
@@ -72,7 +73,7 @@ class NeighbourRefresh : public IEquationTerm<Dim> {
         gather_->setKernel(settings);
     }
     void beginEvaluation(const EvaluationContext<Dim>& context) override {
-        gather_->use(context.grid);
+        gather_->use(context.neighbours);
     }
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}

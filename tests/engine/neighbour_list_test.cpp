@@ -1,0 +1,279 @@
+// The Verlet neighbour lists against a brute-force oracle (every particle's neighbours, in
+// increasing index, bit for bit), in 2D and 3D with periodic axes, after displacements below
+// half the skin (lists kept) and above (rebuilt), after a renumbering; and a short fluid run
+// that is bitwise the same for any skin and any number of threads.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include "numerics.hpp"
+#include "spatial/neighbour_list.hpp"
+#include "sph/fluid_model.hpp"
+
+namespace {
+
+template <int Dim>
+using V = num::Vec<double, Dim>;
+
+struct Pair {
+    std::uint32_t j;
+    V<3> dx;  // padded to 3 components, so that one type serves every Dim
+    bool operator==(const Pair&) const = default;
+};
+
+template <int Dim>
+V<3> pad(const V<Dim>& v) {
+    V<3> p{};
+    for (int k = 0; k < Dim; ++k) p[k] = v[k];
+    return p;
+}
+
+/// Every j with |x_i - x_j| < radius (nearest image on periodic axes), in increasing j.
+template <int Dim>
+std::vector<Pair> oracle(const std::vector<V<Dim>>& x, std::uint32_t i, double radius,
+                         const num::Domain<Dim>& d) {
+    std::vector<Pair> out;
+    for (std::uint32_t j = 0; j < x.size(); ++j) {
+        V<Dim> dx = x[i] - x[j];
+        for (int k = 0; k < Dim; ++k)
+            if (d.periodic[k]) dx[k] -= d.length(k) * std::round(dx[k] / d.length(k));
+        if (normSqr(dx) < radius * radius) out.push_back({j, pad<Dim>(dx)});
+    }
+    return out;
+}
+
+/// Every query of the lists (forEachNeighbourOf, collect, collectAfter) gives the oracle's
+/// neighbours, in its order, with its pair vectors bit for bit.
+template <int Dim>
+void expectOracle(const num::VerletList<Dim>& list, const std::vector<V<Dim>>& x, double radius,
+                  const num::Domain<Dim>& d) {
+    typename num::VerletList<Dim>::Neighbours flat;
+    std::size_t pairs = 0;
+    for (std::uint32_t i = 0; i < x.size(); ++i) {
+        const std::vector<Pair> expected = oracle(x, i, radius, d);
+        pairs += expected.size();
+        std::vector<Pair> found, others, after;
+        list.forEachNeighbourOf(i, [&](std::uint32_t j, const V<Dim>& dx, double r2) {
+            EXPECT_EQ(r2, normSqr(dx));
+            found.push_back({j, pad<Dim>(dx)});
+        });
+        ASSERT_EQ(found, expected) << "particle " << i;
+        for (std::uint32_t k = 0, n = list.collect(i, flat); k < n; ++k)
+            others.push_back({flat.j[k], pad<Dim>(flat.dx[k])});
+        for (std::uint32_t k = 0, n = list.collectAfter(i, flat); k < n; ++k)
+            after.push_back({flat.j[k], pad<Dim>(flat.dx[k])});
+        std::vector<Pair> expectedOthers, expectedAfter;
+        for (const Pair& p : expected) {
+            if (p.j != i) expectedOthers.push_back(p);
+            if (p.j > i) expectedAfter.push_back(p);
+        }
+        ASSERT_EQ(others, expectedOthers) << "collect, particle " << i;
+        ASSERT_EQ(after, expectedAfter) << "collectAfter, particle " << i;
+    }
+    EXPECT_GT(pairs, 8 * x.size()) << "a meaningful number of neighbours";
+}
+
+template <int Dim>
+num::Domain<Dim> unitDomain(unsigned periodicMask) {
+    num::Domain<Dim> d;
+    d.min = V<Dim>::filled(0.0), d.max = V<Dim>::filled(1.0);
+    for (int k = 0; k < Dim; ++k) d.periodic[k] = (periodicMask >> k) & 1;
+    return d;
+}
+
+template <int Dim>
+std::vector<V<Dim>> randomPositions(std::size_t n, std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<V<Dim>> x(n);
+    for (auto& p : x)
+        for (int k = 0; k < Dim; ++k) p[k] = unit(rng);
+    return x;
+}
+
+/// Moves every particle by a random displacement of length below `maxStep` (wrapped into the
+/// domain on periodic axes: a particle may jump by a period).
+template <int Dim>
+void displace(std::vector<V<Dim>>& x, double maxStep, const num::Domain<Dim>& d,
+              std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (auto& p : x) {
+        V<Dim> s;
+        for (int k = 0; k < Dim; ++k) s[k] = u(rng);
+        p = d.wrap(p + s * (maxStep / std::sqrt(double(Dim))));
+    }
+}
+
+template <int Dim>
+void checkAgainstOracle(unsigned periodicMask) {
+    SCOPED_TRACE(::testing::Message() << Dim << "D, periodic axes mask " << periodicMask);
+    const num::Domain<Dim> d = unitDomain<Dim>(periodicMask);
+    const double radius = Dim == 2 ? 0.06 : 0.12, skin = 0.25;
+    std::mt19937_64 rng(17 + periodicMask);
+    std::vector<V<Dim>> x = randomPositions<Dim>(Dim == 2 ? 1500 : 2000, rng);
+    num::VerletList<Dim> list;
+    list.configure(radius, skin, d);
+    ASSERT_TRUE(list.update(x));
+    expectOracle(list, x, radius, d);
+
+    // Below half the skin: the lists are kept and still give the oracle's neighbours.
+    for (int round = 0; round < 3; ++round) {
+        displace(x, 0.16 * skin * radius, d, rng);
+        EXPECT_FALSE(list.update(x)) << "round " << round;
+        expectOracle(list, x, radius, d);
+    }
+    EXPECT_EQ(list.builds(), 1u);
+    // Above half the skin (one particle is enough): rebuilt.
+    x[x.size() / 2] = d.wrap(x[x.size() / 2] + V<Dim>::filled(0.6 * skin * radius));
+    EXPECT_TRUE(list.update(x));
+    expectOracle(list, x, radius, d);
+    displace(x, 2 * skin * radius, d, rng);
+    EXPECT_TRUE(list.update(x));
+    expectOracle(list, x, radius, d);
+    EXPECT_EQ(list.builds(), 3u);
+
+    // A renumbering: invalidate() rebuilds; the displacement test alone would too.
+    std::vector<V<Dim>> shuffled = x;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    EXPECT_TRUE(list.update(shuffled));
+    expectOracle(list, shuffled, radius, d);
+    list.invalidate();
+    EXPECT_TRUE(list.update(shuffled));
+    expectOracle(list, shuffled, radius, d);
+    // Fewer particles: rebuilt.
+    shuffled.resize(shuffled.size() - 100);
+    EXPECT_TRUE(list.update(shuffled));
+    expectOracle(list, shuffled, radius, d);
+
+    // Skin 0: rebuilt at every update, same neighbours.
+    list.configure(radius, 0, d);
+    EXPECT_TRUE(list.update(shuffled));
+    EXPECT_TRUE(list.update(shuffled));
+    expectOracle(list, shuffled, radius, d);
+}
+
+TEST(VerletList, MatchesTheOracle2D) {
+    for (unsigned mask = 0; mask < 4; ++mask) checkAgainstOracle<2>(mask);
+}
+TEST(VerletList, MatchesTheOracle3D) {
+    for (unsigned mask : {0u, 1u, 6u, 7u}) checkAgainstOracle<3>(mask);
+}
+
+/// The candidates' radius is capped at half a short period, which narrows the skin there.
+TEST(VerletList, ShortPeriodNarrowsTheSkin) {
+    num::Domain<2> d = unitDomain<2>(1);
+    d.max[0] = 0.25;
+    std::mt19937_64 rng(3);
+    std::vector<V<2>> x = randomPositions<2>(800, rng);
+    for (auto& p : x) p[0] *= 0.25;
+    num::VerletList<2> list;
+    list.configure(0.1, 0.5, d);
+    EXPECT_EQ(list.listRadius(), 0.125);
+    list.update(x);
+    expectOracle(list, x, 0.1, d);
+    displace(x, 0.01, d, rng);
+    EXPECT_FALSE(list.update(x));
+    expectOracle(list, x, 0.1, d);
+}
+
+/// Runs body over [0, n) in chunks on several threads, the chunks in reverse order.
+struct ReverseThreads {
+    template <class Body>
+    void operator()(std::size_t n, Body&& body) const {
+        std::vector<std::thread> threads;
+        for (std::size_t c = n; c-- > 0;) threads.emplace_back([&body, c] { body(c, c + 1); });
+        for (auto& t : threads) t.join();
+    }
+};
+
+TEST(VerletList, BuildIsTheSameOnAnyThreads) {
+    const num::Domain<3> d = unitDomain<3>(5);
+    std::mt19937_64 rng(11);
+    const std::vector<V<3>> x = randomPositions<3>(3000, rng);
+    num::VerletList<3> one, many;
+    one.configure(0.1, 0.2, d), many.configure(0.1, 0.2, d);
+    one.update(x);
+    many.update(x, ReverseThreads{});
+    for (std::uint32_t i = 0; i < x.size(); ++i) {
+        const auto a = one.candidates(i), b = many.candidates(i);
+        ASSERT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << i;
+        ASSERT_TRUE(std::is_sorted(a.begin(), a.end())) << i;
+    }
+}
+
+TEST(VerletList, NonFinitePositionIsReported) {
+    std::vector<V<2>> x(10, V<2>::filled(0.5));
+    num::VerletList<2> list;
+    list.configure(0.1, 0.2, unitDomain<2>(0));
+    list.update(x);
+    x[3][1] = std::nan("");
+    EXPECT_THROW(list.update(x), std::invalid_argument);
+}
+
+using namespace num::sph;
+
+/// Every level of every quantity of a and b is bitwise the same.
+bool sameState(const Storage<2>& a, const Storage<2>& b) {
+    bool same = a.size() == b.size();
+    a.forEach([&](QuantityId id, const Quantity<2>& qa) {
+        qa.visit([&](const auto& ba) {
+            using T = typename std::decay_t<decltype(ba.value)>::value_type;
+            const auto& bb = b.get(id).template buffers<T>();
+            for (int k = 0; k < qa.levels(); ++k)
+                same &= ba.level(k).size() == bb.level(k).size() &&
+                        std::memcmp(ba.level(k).data(), bb.level(k).data(),
+                                    ba.level(k).size() * sizeof(T)) == 0;
+        });
+    });
+    return same;
+}
+
+/// A dam break in a walled box (walls, free surface, shifting, reordering every 25 steps), run
+/// for `steps` steps with the given skin, threads and evaluation mode. Returns the final state
+/// and the number of list builds.
+std::pair<Storage<2>, std::size_t> damBreak(double skin, Size threads, const std::string& mode,
+                                            int steps) {
+    const double dx = 0.025;
+    FluidModel<2> model;
+    model.maxVelocity = 2;
+    model.bodyForce = [](Float) { return Vector<2>{{0.0, -9.81}}; };
+    FluidGeometry<2> geometry;
+    geometry.spacing = dx;
+    geometry.domain.max = {{1.0, 0.6}};
+    geometry.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{0.4, 0.4}})));
+    RunSettings settings;
+    settings.set("smoothing_length", 1.3 * dx)
+        .set("neighbour_skin", skin)
+        .set("threads", threads)
+        .set("evaluation", mode)
+        .set("reorder_every", 25);
+    Storage<2> s = makeFluidStorage(model, geometry, settings);
+    // The thread pool rather than OpenMP, whose spinning threads are slow on a busy machine.
+    const auto scheduler = makeScheduler(threads == 1 ? "seq" : "threads", threads);
+    Solver<2> solver(*scheduler, settings, makeFluidEquations(model, geometry), geometry.domain);
+    LeapfrogKDK<2> leapfrog;
+    num::sph::Run<2> run(s, solver, leapfrog);
+    for (int k = 0; k < steps; ++k) run.step();
+    return {std::move(s), solver.neighbours().builds()};
+}
+
+TEST(VerletList, FluidRunIsBitwiseTheSameForAnySkinAndThreads) {
+    const int steps = 80, reorders = 3;  // reordering every 25 steps
+    for (const std::string mode : {"asymmetric", "symmetric"}) {
+        SCOPED_TRACE(mode);
+        const auto [reference, everyTime] = damBreak(0, 1, mode, steps);
+        EXPECT_EQ(everyTime, std::size_t(steps + 1)) << "skin 0: built at every evaluation";
+        const auto [thin, builds] = damBreak(0.05, 1, mode, steps);
+        EXPECT_LT(builds, std::size_t(steps / 2)) << "with a skin the lists are kept a while";
+        EXPECT_GT(builds, std::size_t(1 + reorders)) << "and rebuilt as particles move";
+        EXPECT_TRUE(sameState(reference, thin)) << "skin 0.05 against skin 0";
+        EXPECT_TRUE(sameState(reference, damBreak(0.2, 2, mode, steps).first)) << "skin 0.2";
+        EXPECT_TRUE(sameState(reference, damBreak(0.5, 2, mode, steps).first)) << "skin 0.5";
+    }
+}
+
+}  // namespace

@@ -1,13 +1,14 @@
 // Verlet neighbour lists: for every particle, the candidates j within radius (1 + skin) of a
-// build, i itself included, sorted by increasing j (flat arrays: offsets and indices). A list is
-// kept while no particle has moved more than skin radius / 2 since its build: every pair within
-// radius is then still among the candidates (triangle inequality). Queries filter the candidates
-// by the current distance, so the neighbours found and their order (increasing j) depend only on
-// the current positions: never on the skin, on when the list was built or on the number of
-// threads that built it.
+// build, i itself included, sorted by increasing j. A list is kept while no particle has moved
+// more than skin radius / 2 since its build: every pair within radius is then still among the
+// candidates (triangle inequality). Queries filter the candidates by the current distance, so
+// the neighbours found and their order (increasing j) depend only on the current positions:
+// never on the skin, on when the list was built or on the number of threads that built it.
 // Rebuilt when a particle moved too far, when the number of particles changed, or after
 // invalidate() (the caller reordered, added or removed particles; the displacement test alone
 // would catch a renumbering too, as it compares positions index by index).
+// The candidates of each block of kChunk particles are one flat array, filled by one task of the
+// build (no copy into a global array).
 #pragma once
 
 #include <algorithm>
@@ -73,8 +74,9 @@ class VerletList {
     void forEachNeighbourOf(Index i, F&& f) const {
         const double r2max = radius_ * radius_;
         const Vector xi = x_[i];
-        for (std::size_t k = offsets_[i]; k < offsets_[i + 1]; ++k) {
-            const Index j = indices_[k];
+        const Index* cand = first(i);
+        for (Index k = 0; k < count_[i]; ++k) {
+            const Index j = cand[k];
             const Vector dx = pairVector(xi, x_[j]);
             const double r2 = normSqr(dx);
             if (r2 < r2max) f(j, dx, r2);
@@ -97,23 +99,22 @@ class VerletList {
     /// The hot path of the gather pair loop: candidates are written unconditionally and kept by
     /// advancing the count, so the loop has no branch per candidate.
     Index collect(Index i, Neighbours& out) const {
-        const std::size_t self = offsets_[i] + self_[i];
-        out.reserve(offsets_[i + 1] - offsets_[i]);
-        Index n = collectRange(i, offsets_[i], self, out, 0);
-        return out.count = collectRange(i, self + 1, offsets_[i + 1], out, n);
+        const Index* cand = first(i);
+        out.reserve(count_[i]);
+        const Index n = collectRange(i, cand, cand + self_[i], out, 0);
+        return out.count = collectRange(i, cand + self_[i] + 1, cand + count_[i], out, n);
     }
 
     /// The neighbours j > i of particle i, in increasing j: every pair is found from exactly one
     /// of its particles. For symmetric pair loops.
     Index collectAfter(Index i, Neighbours& out) const {
-        out.reserve(offsets_[i + 1] - offsets_[i]);
-        return out.count = collectRange(i, offsets_[i] + self_[i] + 1, offsets_[i + 1], out, 0);
+        const Index* cand = first(i);
+        out.reserve(count_[i]);
+        return out.count = collectRange(i, cand + self_[i] + 1, cand + count_[i], out, 0);
     }
 
     /// Candidates of particle i at the last build (within listRadius(), i included, increasing).
-    std::span<const Index> candidates(Index i) const {
-        return {indices_.data() + offsets_[i], indices_.data() + offsets_[i + 1]};
-    }
+    std::span<const Index> candidates(Index i) const { return {first(i), count_[i]}; }
     double radius() const { return radius_; }
     double listRadius() const { return listRadius_; }
     /// How often the lists were built.
@@ -122,29 +123,30 @@ class VerletList {
   private:
     static constexpr std::size_t kChunk = 512;  // particles per task of the build and the check
 
+    const Index* first(Index i) const { return parts_[i / kChunk].data() + start_[i]; }
+
     Vector pairVector(const Vector& xi, const Vector& xj) const {
         Vector dx;
         for (int k = 0; k < Dim; ++k) dx[k] = xi[k] - xj[k];
         return periodic_ ? domain_.minimumImage(dx) : dx;
     }
 
-    Index collectRange(Index i, std::size_t b, std::size_t e, Neighbours& out, Index n) const {
+    Index collectRange(Index i, const Index* b, const Index* e, Neighbours& out, Index n) const {
         return periodic_ ? collectRange<true>(i, b, e, out, n)
                          : collectRange<false>(i, b, e, out, n);
     }
 
     template <bool Periodic>
-    Index collectRange(Index i, std::size_t b, std::size_t e, Neighbours& out, Index n) const {
+    Index collectRange(Index i, const Index* b, const Index* e, Neighbours& out, Index n) const {
         const double r2max = radius_ * radius_;
-        const Index* cand = indices_.data();
         const Vector* X = x_.data();
         Index* J = out.j.data();
         Vector* DX = out.dx.data();
         double* R2 = out.r2.data();
         const Vector xi = X[i];
         Index count = n;  // a local count: stores through J may not alias it
-        for (std::size_t k = b; k < e; ++k) {
-            const Index j = cand[k];
+        for (const Index* k = b; k < e; ++k) {
+            const Index j = *k;
             Vector dx;
             for (int d = 0; d < Dim; ++d) dx[d] = xi[d] - X[j][d];
             if constexpr (Periodic) dx = domain_.minimumImage(dx);
@@ -178,31 +180,24 @@ class VerletList {
         grid_.build(x_, listRadius_, domain_);  // throws on a non-finite position
         const std::size_t n = x_.size(), chunks = (n + kChunk - 1) / kChunk;
         parts_.resize(chunks);
-        counts_.resize(n);
+        start_.resize(n);
+        count_.resize(n);
         self_.resize(n);
         parallelFor(chunks, [&](auto c0, auto c1) {
             for (std::size_t c = c0; c < std::size_t(c1); ++c) {
                 std::vector<Index>& part = parts_[c];
                 part.clear();
                 for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
-                    const std::size_t first = part.size();
+                    const auto begin = std::ptrdiff_t(part.size());
                     grid_.forEachNeighbourOf(
                         Index(i), [&](Index j, const Vector&, double) { part.push_back(j); });
-                    std::sort(part.begin() + first, part.end());
-                    counts_[i] = Index(part.size() - first);
-                    self_[i] = Index(std::lower_bound(part.begin() + first, part.end(), Index(i)) -
-                                     (part.begin() + first));
+                    std::sort(part.begin() + begin, part.end());
+                    start_[i] = Index(begin);
+                    count_[i] = Index(part.size() - std::size_t(begin));
+                    self_[i] = Index(std::lower_bound(part.begin() + begin, part.end(), Index(i)) -
+                                     (part.begin() + begin));
                 }
             }
-        });
-        offsets_.resize(n + 1);
-        offsets_[0] = 0;
-        for (std::size_t i = 0; i < n; ++i) offsets_[i + 1] = offsets_[i] + counts_[i];
-        indices_.resize(offsets_[n]);
-        parallelFor(chunks, [&](auto c0, auto c1) {
-            for (std::size_t c = c0; c < std::size_t(c1); ++c)
-                std::copy(parts_[c].begin(), parts_[c].end(),
-                          indices_.begin() + std::ptrdiff_t(offsets_[c * kChunk]));
         });
         built_.assign(x_.begin(), x_.end());
         // Half the skin, less a margin for the rounding of distances at the particles'
@@ -221,10 +216,10 @@ class VerletList {
     bool periodic_ = false, valid_ = false;
     std::size_t builds_ = 0;
     std::span<const Vector> x_;
-    std::vector<Vector> built_;                   // positions at the last build
-    std::vector<std::size_t> offsets_;            // candidates of i: [offsets_[i], offsets_[i+1])
-    std::vector<Index> indices_, counts_, self_;  // self_: where i is in its own candidates
-    std::vector<std::vector<Index>> parts_;       // per chunk, reused across builds
+    std::vector<Vector> built_;              // positions at the last build
+    std::vector<std::vector<Index>> parts_;  // candidates of each chunk, reused across builds
+    // Candidates of i: count_[i] from start_[i] in parts_[i / kChunk]; i itself at self_[i].
+    std::vector<Index> start_, count_, self_;
     std::vector<char> moved_;
     CellGrid<Dim> grid_;
 };

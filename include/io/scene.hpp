@@ -93,7 +93,9 @@ struct OutputSpec {
 
 struct PhysicsSpec {
     bool heat = true, buoyancy = true;
-    std::string density = "continuity";                         ///< continuity or summation
+    /// auto, continuity or summation; auto: summation in a box that is closed by walls on every
+    /// side and filled with fluid (no free surface, bodies or emitters), else continuity
+    std::string density = "auto";
     double densityDiffusion = sph::defaults::densityDiffusion;  ///< delta-SPH's delta
     bool shifting = sph::defaults::shifting;
     bool shiftingNormalToWalls = sph::defaults::shiftingNormalToWalls;

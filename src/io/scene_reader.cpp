@@ -395,7 +395,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.heat = ph.boolean("heat", s.physics.heat);
         s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
         if (ph.has("density"))
-            s.physics.density = ph["density"].choice({"continuity", "summation"});
+            s.physics.density = ph["density"].choice({"auto", "continuity", "summation"});
         s.physics.densityDiffusion =
             ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
         s.physics.shifting = ph.boolean("shifting", s.physics.shifting);

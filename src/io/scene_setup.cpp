@@ -1,6 +1,8 @@
 // Scene -> engine: settings, fluid model with heat terms, geometry, initial particles, emitters.
 #include "io/scene_setup.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <mutex>
 
@@ -156,6 +158,36 @@ std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
     return out;
 }
 
+/// Whether the fluid fills a box closed by walls on every side, with no bodies or emitters:
+/// no free surface, so the density is the kernel sum (docs/physics.md, "Closed boxes"). Every
+/// lattice site (the sites fluid particles are made on) must lie in a fluid block.
+template <int Dim>
+bool filledClosedBox(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo) {
+    if (!scene.bodies.empty() || !scene.emitters.empty() || geo.fluid.empty()) return false;
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi)
+            if (scene.sides[k][hi].type != SideType::WALL) return false;
+    const double dx = geo.spacing;
+    std::array<long, Dim> n{};
+    long sites = 1;
+    for (int k = 0; k < Dim; ++k) {
+        n[k] = std::max(1L, std::lround((geo.domain.max[k] - geo.domain.min[k]) / dx));
+        sites *= n[k];
+    }
+    for (long c = 0; c < sites; ++c) {
+        sph::Vector<Dim> x;
+        long rest = c;
+        for (int k = 0; k < Dim; ++k) {
+            x[k] = geo.domain.min[k] + (rest % n[k] + 0.5) * dx;
+            rest /= n[k];
+        }
+        bool inside = false;
+        for (const sph::FluidRegion<Dim>& r : geo.fluid) inside |= r.shape.contains(x);
+        if (!inside) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 template <int Dim>
@@ -214,8 +246,6 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
     m.soundSpeed = fluid.soundSpeed ? *fluid.soundSpeed : 0.0;
     m.eos = scene.physics.eos == "linear" ? sph::EosType::LINEAR : sph::EosType::TAIT;
     m.backgroundPressure = scene.physics.backgroundPressure;
-    m.density = scene.physics.density == "summation" ? sph::DensityMode::SUMMATION
-                                                     : sph::DensityMode::CONTINUITY;
     m.deltaSph = scene.physics.densityDiffusion;
     m.viscosity = fluid.viscosity;
     m.artificialViscosity =
@@ -283,6 +313,9 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         geo.bodies.push_back(body);
     }
     setup.wallLayers = sph::wallLayersFor(sph::RunKernel<Dim>(s).supportRadius(), dx);
+    const bool summation = scene.physics.density == "summation" ||
+                           (scene.physics.density == "auto" && filledClosedBox(scene, geo));
+    m.density = summation ? sph::DensityMode::SUMMATION : sph::DensityMode::CONTINUITY;
 
     // One template particle per emitter, made by the model itself so it has every quantity.
     for (const Emitter<Dim>& e : scene.emitters) {

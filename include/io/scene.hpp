@@ -93,8 +93,9 @@ struct OutputSpec {
 
 struct PhysicsSpec {
     bool heat = true, buoyancy = true;
-    /// auto, continuity or summation; auto: summation in a box that is closed by walls on every
-    /// side and filled with fluid (no free surface, bodies or emitters), else continuity
+    /// auto, continuity or summation; auto: summation under gravity in a box that is closed by
+    /// walls on every side and filled with fluid (no free surface, bodies or emitters), else
+    /// continuity
     std::string density = "auto";
     double densityDiffusion = sph::defaults::densityDiffusion;  ///< delta-SPH's delta
     bool shifting = sph::defaults::shifting;

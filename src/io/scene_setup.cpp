@@ -158,9 +158,10 @@ std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
     return out;
 }
 
-/// Whether the fluid fills a box closed by walls on every side, with no bodies or emitters:
-/// no free surface, so the density is the kernel sum (docs/physics.md, "Closed boxes"). Every
-/// lattice site (the sites fluid particles are made on) must lie in a fluid block.
+/// Whether the fluid fills a box closed by walls on every side, with no bodies or emitters: no
+/// free surface; under gravity the density is then the kernel sum (docs/physics.md, "Closed
+/// boxes"). Every lattice site (the sites fluid particles are made on) must lie in a fluid
+/// block.
 template <int Dim>
 bool filledClosedBox(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo) {
     if (!scene.bodies.empty() || !scene.emitters.empty() || geo.fluid.empty()) return false;
@@ -313,8 +314,9 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         geo.bodies.push_back(body);
     }
     setup.wallLayers = sph::wallLayersFor(sph::RunKernel<Dim>(s).supportRadius(), dx);
-    const bool summation = scene.physics.density == "summation" ||
-                           (scene.physics.density == "auto" && filledClosedBox(scene, geo));
+    const bool summation =
+        scene.physics.density == "summation" ||
+        (scene.physics.density == "auto" && gravityOn && filledClosedBox(scene, geo));
     m.density = summation ? sph::DensityMode::SUMMATION : sph::DensityMode::CONTINUITY;
 
     // One template particle per emitter, made by the model itself so it has every quantity.

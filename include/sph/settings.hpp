@@ -181,7 +181,9 @@ class RunSettings : public ParameterSet {
             {"dt_fixed", 0.0, "fixed time step [s]; 0 selects the adaptive step", 0.0, inf},
             {"reorder_every", std::int64_t(25), "steps between reorderings by cell (0: never)", 0,
              1e9},
-            {"neighbour_skin", 0.2,
+            // 0.1: fluid_sim on the 2D dam break ran 10 % faster than with the cell grid at 0.1
+            // and 0.2 alike, slower at 0.3; in 3D the candidates grow as (1 + skin)^3.
+            {"neighbour_skin", 0.1,
              "skin of the neighbour lists, a fraction of the support radius: they are rebuilt when "
              "a particle moved more than half of it (0: at every evaluation); results do not "
              "depend on it",

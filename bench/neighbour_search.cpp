@@ -1,10 +1,12 @@
-// Micro-benchmarks of the cell-grid neighbour search: build (counting sort) and query, 2D/3D.
+// Micro-benchmarks of the neighbour search, 2D/3D: the cell grid (build by counting sort, query)
+// and the Verlet lists built from it (build with a skin of 0.2, query of every particle).
 #include <benchmark/benchmark.h>
 
 #include <random>
 #include <vector>
 
 #include "spatial/cell_grid.hpp"
+#include "spatial/neighbour_list.hpp"
 
 namespace {
 
@@ -60,10 +62,46 @@ void queryAll(benchmark::State& state) {
     state.counters["neighbours"] = double(pairs) / double(x.size());
 }
 
+template <int Dim>
+void buildVerlet(benchmark::State& state) {
+    const double dx = 0.01, radius = 2 * 1.3 * dx;
+    const auto x = lattice<Dim>(int(state.range(0)), dx);
+    num::VerletList<Dim> list;
+    list.configure(radius, 0.2, num::Domain<Dim>{});
+    for (auto _ : state) {
+        list.invalidate();
+        list.update(x);
+        benchmark::DoNotOptimize(list.candidates(0).data());
+    }
+    state.SetItemsProcessed(state.iterations() * x.size());
+}
+
+template <int Dim>
+void queryVerlet(benchmark::State& state) {
+    const double dx = 0.01, radius = 2 * 1.3 * dx;
+    const auto x = lattice<Dim>(int(state.range(0)), dx);
+    num::VerletList<Dim> list;
+    list.configure(radius, 0.2, num::Domain<Dim>{});
+    list.update(x);
+    std::size_t pairs = 0;
+    for (auto _ : state) {
+        pairs = 0;
+        for (std::uint32_t i = 0; i < x.size(); ++i)
+            list.forEachNeighbourOf(i, [&](auto, const auto&, double) { ++pairs; });
+        benchmark::DoNotOptimize(pairs);
+    }
+    state.SetItemsProcessed(state.iterations() * x.size());
+    state.counters["neighbours"] = double(pairs) / double(x.size());
+}
+
 }  // namespace
 
 BENCHMARK(buildGrid<2>)->Arg(141)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(queryAll<2>)->Arg(141)->Arg(1000)->Unit(benchmark::kMillisecond);
 BENCHMARK(buildGrid<3>)->Arg(27)->Arg(58)->Unit(benchmark::kMillisecond);
 BENCHMARK(queryAll<3>)->Arg(27)->Arg(58)->Unit(benchmark::kMillisecond);
+BENCHMARK(buildVerlet<2>)->Arg(141)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(queryVerlet<2>)->Arg(141)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(buildVerlet<3>)->Arg(27)->Arg(58)->Unit(benchmark::kMillisecond);
+BENCHMARK(queryVerlet<3>)->Arg(27)->Arg(58)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

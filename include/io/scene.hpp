@@ -114,6 +114,7 @@ struct Scene {
     std::array<std::array<BoundarySide<Dim>, 2>, Dim> sides{};  ///< [axis][0 = low, 1 = high]
     double spacing = 0.02, hOverSpacing = sph::defaults::hOverSpacing;
     std::string kernel = sph::defaults::kernel;
+    std::string evaluation = sph::defaults::evaluation;  ///< the pair loop: asymmetric or symmetric
     double endTime = 1, cfl = sph::defaults::cfl, dtMax = 0;
     std::string integrator = "leapfrog";
     VectorField<Dim> gravity{};

@@ -248,12 +248,13 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     readSides(root["boundaries"], s);
 
     const At p = root["particles"];
-    p.object({"spacing", "h_over_spacing", "kernel"}, {"spacing"});
+    p.object({"spacing", "h_over_spacing", "kernel", "evaluation"}, {"spacing"});
     s.spacing = p["spacing"].number(0, 1e300, true, "m");
     s.hOverSpacing = p.number("h_over_spacing", s.hOverSpacing, 0.8, 3.0);
     if (p.has("kernel"))
         s.kernel =
             p["kernel"].choice({"cubic_spline", "wendland_c2", "wendland_c4", "quintic_spline"});
+    if (p.has("evaluation")) s.evaluation = p["evaluation"].choice({"asymmetric", "symmetric"});
 
     const At t = root["time"];
     t.object({"end", "cfl", "integrator", "dt_max"}, {"end"});

@@ -273,6 +273,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
 
     sph::RunSettings& s = setup.settings;
     s.set("kernel", scene.kernel);
+    s.set("evaluation", scene.evaluation);
     s.set("smoothing_length", scene.hOverSpacing * dx);
     s.set("threads", std::int64_t(threads));
     s.set("cfl", scene.cfl);

@@ -78,3 +78,12 @@ TEST(SceneReader, SetCreatesAMissingParentObject) {
     // A value that is not an object is not replaced by one.
     EXPECT_THROW(doc.set("time.end.value=1"), AppError);
 }
+
+TEST(SceneReader, PairLoopEvaluation) {
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    EXPECT_EQ(readScene<2>(doc).evaluation, "asymmetric");  // defaults::evaluation
+    doc.set("particles.evaluation=\"symmetric\"");
+    EXPECT_EQ(readScene<2>(doc).evaluation, "symmetric");
+    doc.set("particles.evaluation=\"pairs\"");
+    EXPECT_THROW(readScene<2>(doc), AppError);
+}

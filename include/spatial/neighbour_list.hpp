@@ -184,13 +184,16 @@ class VerletList {
         count_.resize(n);
         self_.resize(n);
         parallelFor(chunks, [&](auto c0, auto c1) {
+            // The grid's branch-free search (a branch per candidate would be mispredicted often).
+            typename CellGrid<Dim>::Neighbours found;
             for (std::size_t c = c0; c < std::size_t(c1); ++c) {
                 std::vector<Index>& part = parts_[c];
                 part.clear();
                 for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
                     const auto begin = std::ptrdiff_t(part.size());
-                    grid_.forEachNeighbourOf(
-                        Index(i), [&](Index j, const Vector&, double) { part.push_back(j); });
+                    const Index m = grid_.collect(
+                        Index(i), [](Index) { return true; }, found);
+                    part.insert(part.end(), found.j.begin(), found.j.begin() + m);
                     std::sort(part.begin() + begin, part.end());
                     start_[i] = Index(begin);
                     count_[i] = Index(part.size() - std::size_t(begin));

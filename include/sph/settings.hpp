@@ -164,7 +164,7 @@ class RunSettings : public ParameterSet {
             {"smoothing_length", 0.013, "smoothing length h [m]", 1e-300, inf},
             {"threads", std::int64_t(1), "worker threads of the parallel scheduler", 1, 1024},
             {"evaluation",
-             std::string("asymmetric"),
+             std::string(defaults::evaluation),
              "pair evaluation: asymmetric (gather per particle) or symmetric (each pair once)",
              0,
              0,

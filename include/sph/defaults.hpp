@@ -15,8 +15,8 @@ inline constexpr const char* kernel = "wendland_c2";
 inline constexpr double hOverSpacing = 1.5;
 
 // The pair loop: "asymmetric" (each particle gathers from all its neighbours) or "symmetric"
-// (each pair once, both particles written: about 1.4 to 1.7 times as fast for the 2D dam break,
-// momentum conserved to round-off, other round-off). The validation report measures the
+// (each pair once, both particles written: 1.1 to 1.3 times as fast on the 2D and 3D dam breaks
+// of docs/performance.md, momentum conserved to round-off, other round-off). The validation report measures the
 // asymmetric loop; the symmetric one is selectable from a scene (particles.evaluation).
 inline constexpr const char* evaluation = "asymmetric";
 

@@ -83,17 +83,9 @@ class VerletList {
         }
     }
 
-    /// Neighbour lists in flat arrays, filled by collect(): j, dx = x_i - x_j and r2 = |dx|^2 of
-    /// the first `count` entries are valid (the arrays may be longer).
-    struct Neighbours {
-        std::vector<Index> j;
-        std::vector<Vector> dx;
-        std::vector<double> r2;
-        Index count = 0;
-        void reserve(std::size_t n) {
-            if (j.size() < n) j.resize(2 * n), dx.resize(2 * n), r2.resize(2 * n);
-        }
-    };
+    /// Neighbour lists in flat arrays, filled by collect() (the cell grid's: j, dx = x_i - x_j and
+    /// r2 = |dx|^2 of the first `count` entries are valid; the arrays may be longer).
+    using Neighbours = typename CellGrid<Dim>::Neighbours;
 
     /// The neighbours j != i of particle i, in increasing j, into `out`; returns their number.
     /// The hot path of the gather pair loop: candidates are written unconditionally and kept by

@@ -16,8 +16,9 @@ inline constexpr double hOverSpacing = 1.5;
 
 // The pair loop: "asymmetric" (each particle gathers from all its neighbours) or "symmetric"
 // (each pair once, both particles written: 1.1 to 1.3 times as fast on the 2D and 3D dam breaks
-// of docs/performance.md, momentum conserved to round-off, other round-off). The validation report measures the
-// asymmetric loop; the symmetric one is selectable from a scene (particles.evaluation).
+// of docs/performance.md, momentum conserved to round-off, other round-off). The validation report
+// measures the asymmetric loop; the symmetric one is selectable from a scene
+// (particles.evaluation).
 inline constexpr const char* evaluation = "asymmetric";
 
 // Time step: dt <= cfl h / (c0 + max|v|).

@@ -5,13 +5,16 @@
 //   2. the neighbour search: the neighbour lists of the positions (Verlet lists, rebuilt only
 //      when particles moved far enough), used by every pass of the evaluation;
 //      beginEvaluation() of every term receives them (EvaluationContext);
-//   3. initialize() of every term, in the order the terms were added (positions stay as the
-//      lists read them until the evaluation ends);
-//   4. initialize() of every derivative and the pair loop over the derivatives the terms
-//      required (setDerivatives, once per block when the solver is made);
-//   5. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
-//      d2t target gets its sum added;
-//   6. finalize() of every term, in the order the terms were added.
+//   3. the passes (sph/evaluation_schedule.hpp), each:
+//      a. initialize() of the pass's terms, in the order the terms were added (positions stay
+//         as the lists read them until the evaluation ends);
+//      b. initialize() of every derivative the pass's terms required (setDerivatives, once per
+//         block when the solver is made) and the pair loop over them;
+//      c. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
+//         d2t target gets its sum added;
+//      d. finalize() of the pass's terms, in the order the terms were added.
+//   A term goes to the first pass in which what it reads is ready (access()): a term that reads
+//   another's pair sums runs one pass later. Terms that declare nothing share the first pass.
 // An evaluation has no side effects on the state: finalize() combines sums into rates and
 // never moves a particle or changes an evolved quantity, so evaluating twice at the same t
 // gives the same rates (integrators may evaluate several times per step). One exception is left:
@@ -27,11 +30,13 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "spatial/neighbour_list.hpp"
 #include "sph/derivative.hpp"
+#include "sph/evaluation_schedule.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/type_name.hpp"
 
@@ -101,6 +106,10 @@ class IEquationTerm {
     virtual void create(Storage<Dim>& storage, IMaterial& material) const = 0;
     /// Offers the term's time-step limits (Courant, viscous, diffusion...).
     virtual void limitTimeStep(const Storage<Dim>&, const RunSettings&, TimeStepLimits&) const {}
+    /// What the term reads, prepares and produces, from which the solver orders the terms into
+    /// passes (sph/evaluation_schedule.hpp). Default: nothing declared (the first pass, in the
+    /// order the terms were added).
+    virtual TermAccess access() const { return {}; }
 };
 
 /// An ordered set of terms, built with makeTerm and + / +=.
@@ -118,30 +127,47 @@ class EquationHolder {
     }
     friend EquationHolder operator+(EquationHolder a, const EquationHolder& b) { return a += b; }
 
-    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& s) const {
-        for (auto& t : terms_) {
-            d.setRequester("the term " + typeName(*t));
-            t->setDerivatives(d, s);
+    /// Requires the derivatives of the terms listed (indices in the order added), in that order.
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& s,
+                        std::span<const std::size_t> which) const {
+        for (std::size_t k : which) {
+            d.setRequester("the term " + typeName(*terms_[k]));
+            terms_[k]->setDerivatives(d, s);
         }
         d.setRequester("");
     }
-    void beginEvaluation(const EvaluationContext<Dim>& context) const {
-        for (auto& term : terms_) named(*term, [&] { term->beginEvaluation(context); });
+    /// Requires the derivatives of every term, in the order added.
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& s) const {
+        std::vector<std::size_t> all(terms_.size());
+        for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+        setDerivatives(d, s, all);
     }
-    void initialize(IScheduler& sch, Storage<Dim>& s, Float t) const {
-        for (auto& term : terms_) named(*term, [&] { term->initialize(sch, s, t); });
+    /// Calls hook(term) for the terms listed, in that order; a quantity missing from the
+    /// storage names the term that needs it.
+    template <class Hook>
+    void forTerms(std::span<const std::size_t> which, Hook&& hook) const {
+        for (std::size_t k : which) named(*terms_[k], [&] { hook(*terms_[k]); });
     }
-    void finalize(IScheduler& sch, Storage<Dim>& s, Float t) const {
-        for (auto& term : terms_) named(*term, [&] { term->finalize(sch, s, t); });
+    /// Calls hook(term) for every term, in the order added.
+    template <class Hook>
+    void forTerms(Hook&& hook) const {
+        for (auto& term : terms_) named(*term, [&] { hook(*term); });
     }
-    void postStep(IScheduler& sch, Storage<Dim>& s, Float t, Float dt) const {
-        for (auto& term : terms_) named(*term, [&] { term->postStep(sch, s, t, dt); });
+    /// The passes of an evaluation, from the terms' declarations (throws std::logic_error
+    /// when they cannot be satisfied).
+    EvaluationSchedule schedule() const {
+        std::vector<TermAccess> access;
+        for (auto& t : terms_) access.push_back(t->access());
+        return scheduleEvaluation(access, names());
+    }
+    /// The terms' type names, in the order added.
+    std::vector<std::string> names() const {
+        std::vector<std::string> out;
+        for (auto& t : terms_) out.push_back(typeName(*t));
+        return out;
     }
     void create(Storage<Dim>& s, IMaterial& m) const {
         for (auto& t : terms_) t->create(s, m);
-    }
-    void limitTimeStep(const Storage<Dim>& s, const RunSettings& rs, TimeStepLimits& l) const {
-        for (auto& t : terms_) named(*t, [&] { t->limitTimeStep(s, rs, l); });
     }
 
     Size size() const { return Size(terms_.size()); }
@@ -163,8 +189,8 @@ class EquationHolder {
     std::vector<std::shared_ptr<IEquationTerm<Dim>>> terms_;
 };
 
-/// A term that only fuses the pair sums other terms required (DerivativeHolder::fuse): place it
-/// after them. Built-in and user derivatives fuse the same way, e.g.
+/// A term that only fuses the pair sums other terms required (DerivativeHolder::fuse), in every
+/// pass: place it after them. Built-in and user derivatives fuse the same way, e.g.
 ///     eq += makeTerm<FuseDerivatives<2, MyForce<2>, MyHeating<2>>>();
 template <int Dim, class... Parts>
 class FuseDerivatives : public IEquationTerm<Dim> {
@@ -175,6 +201,7 @@ class FuseDerivatives : public IEquationTerm<Dim> {
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     void create(Storage<Dim>&, IMaterial&) const override {}
+    TermAccess access() const override { return {.placement = PassPlacement::EVERY}; }
 };
 
 /// An EquationHolder with one term of type T made from args.

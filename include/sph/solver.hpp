@@ -1,8 +1,8 @@
-// The solver: one evaluation of all derivatives (neighbour search, terms' beginEvaluation and
-// initialize, the pair loop over blocks, the sum of the blocks' buffers, terms' finalize), the
-// post-step phase (terms' postStep, once per step after the integrator) and the time-step
-// limits. An evaluation has no side effects on the state: what moves particles runs in
-// postStep.
+// The solver: one evaluation of all derivatives (neighbour search, terms' beginEvaluation, then
+// the passes of sph/evaluation_schedule.hpp, each: its terms' initialize, the pair loop over
+// blocks, the sum of the blocks' buffers, its terms' finalize), the post-step phase (terms'
+// postStep, once per step after the integrator) and the time-step limits. An evaluation has no
+// side effects on the state: what moves particles runs in postStep.
 //
 // One neighbour structure for every pass: Verlet lists (spatial/neighbour_list.hpp), updated
 // after the periodic wrap and before the terms' initialize, rebuilt only when a particle has
@@ -77,14 +77,20 @@ class Solver {
           domain_(domain),
           kernel_(settings),
           symmetric_(settings.get<std::string>("evaluation") == "symmetric"),
-          holders_(blockCount(settings, symmetric_, scheduler.threadCount())),
-          scratch_(holders_.size()),
-          accumulated_(symmetric_ ? holders_.size() : 1) {
-        for (std::size_t b = 0; b < holders_.size(); ++b) {
-            equations_.setDerivatives(holders_[b], settings_);
-            holders_[b].create(accumulated_[symmetric_ ? b : 0]);
+          schedule_(equations_.schedule()),
+          passes_(schedule_.passes.size()),
+          scratch_(blockCount(settings, symmetric_, scheduler.threadCount())) {
+        for (std::size_t p = 0; p < passes_.size(); ++p) {
+            PairPass& pass = passes_[p];
+            pass.holders.resize(scratch_.size());
+            pass.accumulated.resize(symmetric_ ? scratch_.size() : 1);
+            for (std::size_t b = 0; b < pass.holders.size(); ++b) {
+                equations_.setDerivatives(pass.holders[b], settings_,
+                                          schedule_.passes[p].derivatives);
+                pass.holders[b].create(pass.accumulated[symmetric_ ? b : 0]);
+            }
+            pass.needsW = pass.holders[0].needsKernelValues();
         }
-        needsW_ = holders_[0].needsKernelValues();
         neighbours_.configure(kernel_.supportRadius(), settings_.get<double>("neighbour_skin"),
                               domain_);
     }
@@ -108,26 +114,34 @@ class Solver {
         zeroHighestDerivatives(storage);
         neighbours_.update(
             x, [&](std::size_t n, const auto& body) { scheduler_.parallelFor(Size(n), 1, body); });
-        equations_.beginEvaluation(EvaluationContext<Dim>{neighbours_});
-        equations_.initialize(scheduler_, storage, t);
-
-        for (auto& a : accumulated_) a.reset(storage.size());
-        holders_[0].initialize(storage, accumulated_[0]);
-        for (std::size_t b = 1; b < holders_.size(); ++b)
-            holders_[b].initializeLike(holders_[0], storage, accumulated_[symmetric_ ? b : 0]);
-        withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k); });
-        if (abandoned_.exchange(false)) throw EvaluationAbandoned();
-        Accumulated<Dim>::addInto(
-            storage, std::span<const Accumulated<Dim>>(accumulated_),
-            [&](Size n, const auto& range) { scheduler_.parallelFor(n, 8192, range); });
-
-        equations_.finalize(scheduler_, storage, t);
+        const EvaluationContext<Dim> context{neighbours_};
+        equations_.forTerms([&](auto& term) { term.beginEvaluation(context); });
+        for (std::size_t p = 0; p < passes_.size(); ++p) {
+            const EvaluationSchedule::Pass& order = schedule_.passes[p];
+            equations_.forTerms(order.terms,
+                                [&](auto& term) { term.initialize(scheduler_, storage, t); });
+            PairPass& pass = passes_[p];
+            if (p == 0 || pass.holders[0].size() > 0) {
+                for (auto& a : pass.accumulated) a.reset(storage.size());
+                pass.holders[0].initialize(storage, pass.accumulated[0]);
+                for (std::size_t b = 1; b < pass.holders.size(); ++b)
+                    pass.holders[b].initializeLike(pass.holders[0], storage,
+                                                   pass.accumulated[symmetric_ ? b : 0]);
+                withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k, pass); });
+                if (abandoned_.exchange(false)) throw EvaluationAbandoned();
+                Accumulated<Dim>::addInto(
+                    storage, std::span<const Accumulated<Dim>>(pass.accumulated),
+                    [&](Size n, const auto& range) { scheduler_.parallelFor(n, 8192, range); });
+            }
+            equations_.forTerms(order.terms,
+                                [&](auto& term) { term.finalize(scheduler_, storage, t); });
+        }
     }
 
     /// The post-step phase: every term's postStep, in term order, once per step after the
     /// integrator advanced the storage by dt to time t (sph::Run::step calls it).
     void postStep(Storage<Dim>& storage, Float t, Float dt) {
-        equations_.postStep(scheduler_, storage, t, dt);
+        equations_.forTerms([&](auto& term) { term.postStep(scheduler_, storage, t, dt); });
     }
 
     /// The time-step limits at the current state (after an evaluation).
@@ -151,7 +165,8 @@ class Solver {
         if (a2max > 0)
             limits.offer("acceleration", settings_.get<double>("acceleration_factor") *
                                              std::sqrt(kernel_.h / std::sqrt(a2max)));
-        equations_.limitTimeStep(storage, settings_, limits);
+        equations_.forTerms(
+            [&](const auto& term) { term.limitTimeStep(storage, settings_, limits); });
         return limits;
     }
 
@@ -163,6 +178,8 @@ class Solver {
     /// reordering, adding or removing particles (reorderByCell does).
     void invalidateNeighbours() { neighbours_.invalidate(); }
     const EquationHolder<Dim>& equations() const { return equations_; }
+    /// The passes of an evaluation (EvaluationSchedule::describe names their terms).
+    const EvaluationSchedule& schedule() const { return schedule_; }
     const Domain<Dim>& domain() const { return domain_; }
     const RunSettings& settings() const { return settings_; }
     const RunKernel<Dim>& kernel() const { return kernel_; }
@@ -176,6 +193,14 @@ class Solver {
         const auto blocks = std::size_t(s.get<std::int64_t>("blocks"));
         return symmetric ? blocks : std::max<std::size_t>(blocks, 8 * std::size_t(threads));
     }
+
+    /// One pair loop of an evaluation: the derivatives of each block and the buffers they sum
+    /// into (one per block in symmetric mode, one shared in asymmetric mode).
+    struct PairPass {
+        std::vector<DerivativeHolder<Dim>> holders;
+        std::vector<Accumulated<Dim>> accumulated;
+        bool needsW = false;
+    };
 
     struct Scratch {
         typename VerletList<Dim>::Neighbours found;
@@ -196,9 +221,10 @@ class Solver {
     }
 
     template <class Kernel>
-    void pairLoop(Storage<Dim>& storage, Kernel) {
+    void pairLoop(Storage<Dim>& storage, Kernel, PairPass& pass) {
         const std::uint64_t n = storage.size();
-        const std::uint64_t blocks = holders_.size();
+        const std::uint64_t blocks = pass.holders.size();
+        const bool needsW = pass.needsW;
         const Float h = kernel_.h;
         const GradientFactor<Kernel> gradient(h);
         scheduler_.parallelFor(Size(blocks), 1, [&](Size b0, Size b1) {
@@ -217,7 +243,7 @@ class Solver {
                     sc.pairs += m;
                     if (sc.r.size() < m) {
                         sc.r.resize(2 * m), sc.grads.resize(2 * m);
-                        if (needsW_) sc.w.resize(2 * m);
+                        if (needsW) sc.w.resize(2 * m);
                     }
                     const Vec* dx = sc.found.dx.data();
                     const double* r2 = sc.found.r2.data();
@@ -225,17 +251,17 @@ class Solver {
                     Vec* grads = sc.grads.data();
                     for (Size k = 0; k < m; ++k) r[k] = std::sqrt(r2[k]);
                     for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradient.factor(r[k]);
-                    if (needsW_)
+                    if (needsW)
                         for (Size k = 0; k < m; ++k) sc.w[k] = Kernel::W(r[k], h);
                     const ArrayView<const Size> neighs(sc.found.j.data(), m);
                     const ArrayView<const Vec> g(grads, m);
                     const NeighbourGeometry<Dim> geo{
                         ArrayView<const Vec>(dx, m), ArrayView<const Float>(r, m),
-                        ArrayView<const Float>(sc.w.data(), needsW_ ? m : 0)};
+                        ArrayView<const Float>(sc.w.data(), needsW ? m : 0)};
                     if (symmetric_)
-                        holders_[b].evalSymmetric(i, neighs, g, geo);
+                        pass.holders[b].evalSymmetric(i, neighs, g, geo);
                     else
-                        holders_[b].evalAsymmetric(i, neighs, g, geo);
+                        pass.holders[b].evalAsymmetric(i, neighs, g, geo);
                 }
             }
         });
@@ -250,11 +276,10 @@ class Solver {
     Domain<Dim> domain_;
     RunKernel<Dim> kernel_;
     bool symmetric_;
-    std::vector<DerivativeHolder<Dim>> holders_;
-    std::vector<Scratch> scratch_;
-    std::vector<Accumulated<Dim>> accumulated_;
+    EvaluationSchedule schedule_;
+    std::vector<PairPass> passes_;
+    std::vector<Scratch> scratch_;  // per block, shared by the passes
     VerletList<Dim> neighbours_;
-    bool needsW_ = false;
     double meanNeighbours_ = 0;
     std::function<bool()> abandonCheck_;
     std::atomic<bool> abandoned_{false};

@@ -45,6 +45,12 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
         guard("limitTimeStep", -1, [&] { term_->limitTimeStep(s, rs, l); });
     }
 
+    sph::TermAccess access() const override {
+        sph::TermAccess result;
+        guard("access", -1, [&] { result = term_->access(); });
+        return result;
+    }
+
     const std::string& label() const { return label_; }
 
   private:

@@ -28,6 +28,8 @@ class BoundaryHold : public IEquationTerm<Dim> {
             }
         });
     }
+    /// The last pass: boundary particles shed every term's rates.
+    TermAccess access() const override { return {.placement = PassPlacement::LAST}; }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<int>(QuantityId::KIND, OrderEnum::ZERO, int(ParticleKind::FLUID));
     }

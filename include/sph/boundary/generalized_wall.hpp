@@ -87,6 +87,11 @@ class GeneralizedWall : public IEquationTerm<Dim> {
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
 
+    TermAccess access() const override {
+        return {.reads = {QuantityId::PRESSURE, QuantityId::DENSITY, QuantityId::TEMPERATURE},
+                .prepares = {QuantityId::PRESSURE, QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY,
+                             heat_ids::BOUNDARY_TEMPERATURE}};
+    }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});

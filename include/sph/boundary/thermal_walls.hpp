@@ -81,6 +81,8 @@ class ThermalBoundary : public IEquationTerm<Dim> {
         startFixed_ = lastFixed_, startSource_ = lastSource_;
     }
 
+    /// The last pass: fixed temperatures hold against every term's dT/dt.
+    TermAccess access() const override { return {.placement = PassPlacement::LAST}; }
     void create(Storage<Dim>& storage, IMaterial&) const override {
         storage.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST, 0.0);
         storage.template insert<Float>(heat_ids::HEAT_SOURCE, OrderEnum::ZERO, 0.0);

@@ -93,6 +93,9 @@ class ArtificialViscosity : public IEquationTerm<Dim> {
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    TermAccess access() const override {
+        return {.reads = {QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY}};
+    }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
     }

@@ -95,6 +95,7 @@ class ContinuityDensity : public IEquationTerm<Dim> {
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    TermAccess access() const override { return {.reads = {QuantityId::DENSITY}}; }
     void create(Storage<Dim>& s, IMaterial& material) const override {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST,
                                  material.params().template get<double>("density"));

@@ -96,6 +96,7 @@ class DeltaSph : public IEquationTerm<Dim> {
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    TermAccess access() const override { return {.reads = {QuantityId::DENSITY}}; }
     void create(Storage<Dim>& s, IMaterial& material) const override {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST,
                                  material.params().template get<double>("density"));

@@ -60,6 +60,9 @@ class EquationOfStateTerm : public IEquationTerm<Dim> {
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
 
+    TermAccess access() const override {
+        return {.reads = {QuantityId::DENSITY}, .prepares = {QuantityId::PRESSURE}};
+    }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO, eos_.rho0);
         s.template insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO, eos_.backgroundPressure);

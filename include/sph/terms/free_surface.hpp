@@ -138,6 +138,11 @@ class FreeSurfaceNoTension : public IEquationTerm<Dim> {
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    TermAccess access() const override {
+        return {.reads = {QuantityId::PRESSURE, QuantityId::DENSITY},
+                .prepares = {QuantityId::PRESSURE, QuantityId::DENSITY},
+                .produces = {FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS}};
+    }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, 1.0);
         s.template insert<Float>(FluidId::SURFACE_NEIGHBOURS, OrderEnum::ZERO, 0.0);

@@ -112,6 +112,10 @@ class HeatConduction : public IEquationTerm<Dim> {
 
     /// Temperature (first order, starting at the material's reference temperature where it
     /// does not exist yet), density and material index.
+    TermAccess access() const override {
+        return {.reads = {QuantityId::TEMPERATURE, heat_ids::BOUNDARY_TEMPERATURE,
+                          QuantityId::DENSITY}};
+    }
     void create(Storage<Dim>& storage, IMaterial& material) const override {
         const ParameterSet& p = material.params();
         storage.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST,

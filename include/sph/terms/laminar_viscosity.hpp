@@ -108,6 +108,10 @@ class LaminarViscosity : public IEquationTerm<Dim> {
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    TermAccess access() const override {
+        return {.reads = {QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY,
+                          FluidId::KINEMATIC_VISCOSITY}};
+    }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, nu_);
         s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});

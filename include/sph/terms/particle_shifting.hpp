@@ -192,6 +192,11 @@ class ParticleShifting : public IEquationTerm<Dim> {
             }
         });
     }
+    TermAccess access() const override {
+        return {.reads = {QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY},
+                .produces = {FluidId::KERNEL_SUM_GRADIENT, FluidId::DENSITY_GRADIENT,
+                             FluidId::WALL_DIRECTION}};
+    }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Vec>(QuantityId::SHIFT, OrderEnum::ZERO, Vec{});
         s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});

@@ -77,6 +77,9 @@ class PressureGradient : public IEquationTerm<Dim> {
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    TermAccess access() const override {
+        return {.reads = {QuantityId::PRESSURE, QuantityId::DENSITY}};
+    }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO, 0.0);
     }

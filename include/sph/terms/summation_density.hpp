@@ -31,6 +31,7 @@ class SummationDensity : public IEquationTerm<Dim> {
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    TermAccess access() const override { return {.prepares = {QuantityId::DENSITY}}; }
     void create(Storage<Dim>& s, IMaterial& material) const override {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO,
                                  material.params().template get<double>("density"));

@@ -63,6 +63,9 @@ class TemperatureViscosity : public IEquationTerm<Dim> {
         });
     }
 
+    TermAccess access() const override {
+        return {.reads = {QuantityId::TEMPERATURE}, .prepares = {FluidId::KINEMATIC_VISCOSITY}};
+    }
     void create(Storage<Dim>& storage, IMaterial& material) const override {
         const ParameterSet& p = material.params();
         storage.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST,

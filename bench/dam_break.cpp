@@ -16,10 +16,13 @@
 //                              mark VmHWM, reset after set-up) minus the resident memory before
 //                              the scene was built, divided by all particles
 //   setup_bytes_per_particle   the same with the peak of the set-up (particle generation) too
+//   state_hash                 FNV-1a of every level of every quantity at the end: equal hashes
+//                              mean bitwise equal runs (to check that a change kept the results)
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -53,6 +56,23 @@ double cpuSeconds() {
     getrusage(RUSAGE_SELF, &u);
     return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
            1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+/// FNV-1a over the bytes of every level of every quantity, in quantity order.
+template <int Dim>
+std::uint64_t stateHash(const num::sph::Storage<Dim>& storage) {
+    std::uint64_t h = 1469598103934665603ull;
+    storage.forEach([&](num::sph::QuantityId, const num::sph::Quantity<Dim>& q) {
+        q.visit([&](const auto& b) {
+            for (int k = 0; k < q.levels(); ++k) {
+                const auto& v = b.level(k);
+                const auto* bytes = reinterpret_cast<const unsigned char*>(v.data());
+                for (std::size_t i = 0; i < v.size() * sizeof(v[0]); ++i)
+                    h = (h ^ bytes[i]) * 1099511628211ull;
+            }
+        });
+    });
+    return h;
 }
 
 double median(std::vector<double> v) {
@@ -111,10 +131,11 @@ int runCase(const Options& o) {
         "particles=%.0f steps=%d repeats=%d particle_steps_per_second=%.4e "
         "ns_per_particle_step=%.2f ns_per_any_particle_step=%.2f neighbours=%.2f "
         "cpu_ns_per_particle_step=%.2f bytes_per_particle=%.0f setup_bytes_per_particle=%.0f "
-        "load=%.2f sim_time=%.4g\n",
+        "load=%.2f sim_time=%.4g state_hash=%016llx\n",
         Dim, so.dx, o.backend.c_str(), o.threads, int(o.heat), o.evaluation.c_str(), fluid, all,
         o.steps, o.repeats, mrate, 1e9 / mrate, median(perAny), median(neighbours), median(cpu),
-        bytes, setupBytes, loadAverage(), scene->run->time());
+        bytes, setupBytes, loadAverage(), scene->run->time(),
+        static_cast<unsigned long long>(stateHash(scene->storage)));
     return 0;
 }
 

@@ -7,8 +7,9 @@
 // Rebuilt when a particle moved too far, when the number of particles changed, or after
 // invalidate() (the caller reordered, added or removed particles; the displacement test alone
 // would catch a renumbering too, as it compares positions index by index).
-// The candidates of each block of kChunk particles are one flat array, filled by one task of the
-// build (no copy into a global array).
+// The candidates of each block of kChunk particles are one flat array of the exact size, filled
+// by one task of the build (no copy into a global array). The cell grid they are found with is
+// held during the build only.
 #pragma once
 
 #include <algorithm>
@@ -169,31 +170,51 @@ class VerletList {
 
     template <class ParallelFor>
     void build(ParallelFor& parallelFor) {
-        grid_.build(x_, listRadius_, domain_);  // throws on a non-finite position
+        // The positions of the last build are not needed while building: released first, so
+        // that they and the cell grid are never held at once (the peak memory of a build).
+        valid_ = false;  // until the build completes (the grid throws on a non-finite position)
+        std::vector<Vector>().swap(built_);
         const std::size_t n = x_.size(), chunks = (n + kChunk - 1) / kChunk;
         parts_.resize(chunks);
         start_.resize(n);
         count_.resize(n);
         self_.resize(n);
-        parallelFor(chunks, [&](auto c0, auto c1) {
-            // The grid's branch-free search (a branch per candidate would be mispredicted often).
-            typename CellGrid<Dim>::Neighbours found;
-            for (std::size_t c = c0; c < std::size_t(c1); ++c) {
-                std::vector<Index>& part = parts_[c];
-                part.clear();
-                for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
-                    const auto begin = std::ptrdiff_t(part.size());
-                    const Index m = grid_.collect(
-                        Index(i), [](Index) { return true; }, found);
-                    part.insert(part.end(), found.j.begin(), found.j.begin() + m);
-                    std::sort(part.begin() + begin, part.end());
-                    start_[i] = Index(begin);
-                    count_[i] = Index(part.size() - std::size_t(begin));
-                    self_[i] = Index(std::lower_bound(part.begin() + begin, part.end(), Index(i)) -
-                                     (part.begin() + begin));
+        {
+            // Held during the build only: the queries read the candidates, never the grid.
+            CellGrid<Dim> grid;
+            grid.build(x_, listRadius_, domain_);  // throws on a non-finite position
+            parallelFor(chunks, [&](auto c0, auto c1) {
+                // The grid's branch-free search (a branch per candidate would be mispredicted
+                // often).
+                typename CellGrid<Dim>::Neighbours found;
+                // One chunk's candidates, then copied into its array: sized exactly, not by the
+                // doubling of a growing vector.
+                std::vector<Index> chunk;
+                for (std::size_t c = c0; c < std::size_t(c1); ++c) {
+                    chunk.clear();
+                    for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+                        const auto begin = std::ptrdiff_t(chunk.size());
+                        const Index m = grid.collect(
+                            Index(i), [](Index) { return true; }, found);
+                        chunk.insert(chunk.end(), found.j.begin(), found.j.begin() + m);
+                        std::sort(chunk.begin() + begin, chunk.end());
+                        start_[i] = Index(begin);
+                        count_[i] = Index(chunk.size() - std::size_t(begin));
+                        self_[i] =
+                            Index(std::lower_bound(chunk.begin() + begin, chunk.end(), Index(i)) -
+                                  (chunk.begin() + begin));
+                    }
+                    std::vector<Index>& part = parts_[c];
+                    // Kept when it is at most 1/16 too large (the counts change little between
+                    // builds), else reallocated to the exact size.
+                    if (part.capacity() < chunk.size() ||
+                        part.capacity() > chunk.size() + chunk.size() / 16)
+                        part = std::vector<Index>(chunk.begin(), chunk.end());
+                    else
+                        part.assign(chunk.begin(), chunk.end());
                 }
-            }
-        });
+            });
+        }
         built_.assign(x_.begin(), x_.end());
         // Half the skin, less a margin for the rounding of distances at the particles'
         // coordinates (no margin is needed in exact arithmetic).
@@ -212,11 +233,10 @@ class VerletList {
     std::size_t builds_ = 0;
     std::span<const Vector> x_;
     std::vector<Vector> built_;              // positions at the last build
-    std::vector<std::vector<Index>> parts_;  // candidates of each chunk, reused across builds
+    std::vector<std::vector<Index>> parts_;  // candidates of each chunk
     // Candidates of i: count_[i] from start_[i] in parts_[i / kChunk]; i itself at self_[i].
     std::vector<Index> start_, count_, self_;
     std::vector<char> moved_;
-    CellGrid<Dim> grid_;
 };
 
 }  // namespace num

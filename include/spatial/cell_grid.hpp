@@ -111,14 +111,14 @@ class CellGrid {
 
         // Positions are copied in cell order, so that the search reads them contiguously. On
         // periodic axes each particle is placed at the image whose cell it is sorted into, so
-        // that the image shift of a neighbour follows from the cell offset alone.
-        std::vector<Vector> placed(n);
+        // that the image shift of a neighbour follows from the cell offset alone. The image is
+        // found again when copying (no array of them: less peak memory).
         cellOf_.resize(n);
         start_.assign(total + 1, 0);
         for (Index i = 0; i < n; ++i) {
-            placed[i] = x[i];
+            Vector placed = x[i];
             std::array<int, Dim> c;
-            locate(placed[i], c);
+            locate(placed, c);
             cellOf_[i] = cellIndex(c);
             ++start_[cellOf_[i] + 1];
         }
@@ -131,7 +131,10 @@ class CellGrid {
             const Index s = fill[cellOf_[i]]++;
             sorted_[s] = i;
             slot_[i] = s;
-            sortedX_[s] = placed[i];
+            Vector placed = x[i];
+            std::array<int, Dim> c;
+            locate(placed, c);
+            sortedX_[s] = placed;
         }
     }
 

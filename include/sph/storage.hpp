@@ -274,7 +274,26 @@ class Storage {
                 throw std::invalid_argument("reorder: not a permutation of the particles");
             seen[p] = 1;
         }
-        gather(permutation);
+        // In place, cycle by cycle: a copy of each array (gather's) would raise the peak memory
+        // of every reordering by the largest array.
+        for (auto& [id, q] : quantities_) {
+            q.visit([&](auto& b) {
+                for (int k = 0; k < q.levels(); ++k) {
+                    auto& v = b.level(k);
+                    std::fill(seen.begin(), seen.end(), char(0));
+                    for (std::size_t start = 0; start < permutation.size(); ++start) {
+                        if (seen[start]) continue;
+                        auto first = std::move(v[start]);
+                        std::size_t n = start;
+                        for (seen[n] = 1; permutation[n] != start; n = permutation[n]) {
+                            v[n] = std::move(v[permutation[n]]);
+                            seen[permutation[n]] = 1;
+                        }
+                        v[n] = std::move(first);
+                    }
+                }
+            });
+        }
     }
 
     /// Keeps the particles listed, in the order listed (indices may repeat: copies).

@@ -8,8 +8,11 @@
 // invalidate() (the caller reordered, added or removed particles; the displacement test alone
 // would catch a renumbering too, as it compares positions index by index).
 // The candidates of each block of kChunk particles are one flat array of the exact size, filled
-// by one task of the build (no copy into a global array). The cell grid they are found with is
-// held during the build only.
+// by one task of the build (no copy into a global array). A particle's candidates are stored as
+// its first one and the gaps to the next in 16 bits (a larger gap takes three slots: 0, then its
+// high and low halves): half the memory of 32-bit indices, as neighbours are near in index once
+// the particles are ordered by cell. The cell grid they are found with is held during the build
+// only.
 #pragma once
 
 #include <algorithm>
@@ -75,13 +78,11 @@ class VerletList {
     void forEachNeighbourOf(Index i, F&& f) const {
         const double r2max = radius_ * radius_;
         const Vector xi = x_[i];
-        const Index* cand = first(i);
-        for (Index k = 0; k < count_[i]; ++k) {
-            const Index j = cand[k];
+        forEachCandidate(i, [&](Index j) {
             const Vector dx = pairVector(xi, x_[j]);
             const double r2 = normSqr(dx);
             if (r2 < r2max) f(j, dx, r2);
-        }
+        });
     }
 
     /// Neighbour lists in flat arrays, filled by collect() (the cell grid's: j, dx = x_i - x_j and
@@ -92,22 +93,31 @@ class VerletList {
     /// The hot path of the gather pair loop: candidates are written unconditionally and kept by
     /// advancing the count, so the loop has no branch per candidate.
     Index collect(Index i, Neighbours& out) const {
-        const Index* cand = first(i);
-        out.reserve(count_[i]);
-        const Index n = collectRange(i, cand, cand + self_[i], out, 0);
-        return out.count = collectRange(i, cand + self_[i] + 1, cand + count_[i], out, n);
+        const Slot* s = slots(i);
+        const Index n = slotCount(i), self = selfSlot(i);
+        out.reserve(n + 1);
+        // The candidates up to i itself, which is kept last (r2 = 0) and then dropped, then
+        // those after it.
+        Index count = collectRange(i, true, first_[i], s, s + self, out, 0);
+        count -= Index(count > 0 && out.j[count - 1] == i);  // not kept if x_i is not finite
+        return out.count = collectRange(i, false, i, s + self, s + n, out, count);
     }
 
     /// The neighbours j > i of particle i, in increasing j: every pair is found from exactly one
     /// of its particles. For symmetric pair loops.
     Index collectAfter(Index i, Neighbours& out) const {
-        const Index* cand = first(i);
-        out.reserve(count_[i]);
-        return out.count = collectRange(i, cand + self_[i] + 1, cand + count_[i], out, 0);
+        const Slot* s = slots(i);
+        const Index n = slotCount(i);
+        out.reserve(n);
+        return out.count = collectRange(i, false, i, s + selfSlot(i), s + n, out, 0);
     }
 
     /// Candidates of particle i at the last build (within listRadius(), i included, increasing).
-    std::span<const Index> candidates(Index i) const { return {first(i), count_[i]}; }
+    std::vector<Index> candidates(Index i) const {
+        std::vector<Index> out;
+        forEachCandidate(i, [&](Index j) { out.push_back(j); });
+        return out;
+    }
     double radius() const { return radius_; }
     double listRadius() const { return listRadius_; }
     /// How often the lists were built.
@@ -115,8 +125,54 @@ class VerletList {
 
   private:
     static constexpr std::size_t kChunk = 512;  // particles per task of the build and the check
+    using Slot = std::uint16_t;  // a gap between candidates, or a third of a long one
+    static constexpr Index kLongGaps = Index(1) << 31;  // in self_: a gap takes three slots
 
-    const Index* first(Index i) const { return parts_[i / kChunk].data() + start_[i]; }
+    const Slot* slots(Index i) const { return parts_[i / kChunk].data() + start_[i]; }
+    /// The number of slots of particle i: up to the next particle's, or to its chunk's end.
+    Index slotCount(Index i) const {
+        const std::size_t next = std::size_t(i) + 1;
+        const Index end = next % kChunk != 0 && next < start_.size()
+                              ? start_[next]
+                              : Index(parts_[i / kChunk].size());
+        return end - start_[i];
+    }
+    /// The first slot after i itself: the candidates after i are decoded from there.
+    Index selfSlot(Index i) const { return self_[i] & ~kLongGaps; }
+
+    /// Calls g(j) for each candidate decoded from the slots [b, e), which follow candidate j.
+    template <class G>
+    static void decode(Index j, const Slot* b, const Slot* e, G&& g) {
+        for (const Slot* s = b; s < e; ++s) {
+            Index gap = *s;
+            if (gap == 0) [[unlikely]] {  // a gap of 2^16 or more: its high and low halves follow
+                gap = Index(s[1]) << 16 | Index(s[2]);
+                s += 2;
+            }
+            g(j += gap);  // one call site: g is inlined once
+        }
+    }
+
+    template <class G>
+    void forEachCandidate(Index i, G&& g) const {
+        const Slot* s = slots(i);
+        g(first_[i]);
+        decode(first_[i], s, s + slotCount(i), g);
+    }
+
+    /// Appends the gap from candidate `from` to `to` (to > from) to `out`; returns whether it
+    /// is a long one.
+    static bool encodeGap(Index from, Index to, std::vector<Slot>& out) {
+        const Index gap = to - from;
+        if (gap <= 0xffff) {
+            out.push_back(Slot(gap));
+            return false;
+        }
+        out.push_back(0);
+        out.push_back(Slot(gap >> 16));
+        out.push_back(Slot(gap & 0xffff));
+        return true;
+    }
 
     Vector pairVector(const Vector& xi, const Vector& xj) const {
         Vector dx;
@@ -124,13 +180,17 @@ class VerletList {
         return periodic_ ? domain_.minimumImage(dx) : dx;
     }
 
-    Index collectRange(Index i, const Index* b, const Index* e, Neighbours& out, Index n) const {
-        return periodic_ ? collectRange<true>(i, b, e, out, n)
-                         : collectRange<false>(i, b, e, out, n);
+    /// The candidates of particle i within radius among j (if withFirst) and those decoded from
+    /// the slots [b, e) after it, into `out` from entry n on; returns the new number of entries.
+    Index collectRange(Index i, bool withFirst, Index j, const Slot* b, const Slot* e,
+                       Neighbours& out, Index n) const {
+        return periodic_ ? collectRange<true>(i, withFirst, j, b, e, out, n)
+                         : collectRange<false>(i, withFirst, j, b, e, out, n);
     }
 
     template <bool Periodic>
-    Index collectRange(Index i, const Index* b, const Index* e, Neighbours& out, Index n) const {
+    Index collectRange(Index i, bool withFirst, Index j, const Slot* b, const Slot* e,
+                       Neighbours& out, Index n) const {
         const double r2max = radius_ * radius_;
         const Vector* X = x_.data();
         Index* J = out.j.data();
@@ -138,15 +198,21 @@ class VerletList {
         double* R2 = out.r2.data();
         const Vector xi = X[i];
         Index count = n;  // a local count: stores through J may not alias it
-        for (const Index* k = b; k < e; ++k) {
-            const Index j = *k;
+        // Candidate k is written unconditionally and kept by advancing the count.
+        const auto put = [=, this](Index k, Index at) {
             Vector dx;
-            for (int d = 0; d < Dim; ++d) dx[d] = xi[d] - X[j][d];
+            for (int d = 0; d < Dim; ++d) dx[d] = xi[d] - X[k][d];
             if constexpr (Periodic) dx = domain_.minimumImage(dx);
             const double r2 = normSqr(dx);
-            J[count] = j, DX[count] = dx, R2[count] = r2;
-            count += Index(r2 < r2max);
+            J[at] = k, DX[at] = dx, R2[at] = r2;
+            return Index(r2 < r2max);
+        };
+        if (withFirst) count += put(j, count);
+        if (!(self_[i] & kLongGaps)) {
+            for (const Slot* s = b; s < e; ++s) count += put(j += *s, count);
+            return count;
         }
+        decode(j, b, e, [&](Index k) { count += put(k, count); });
         return count;
     }
 
@@ -177,7 +243,7 @@ class VerletList {
         const std::size_t n = x_.size(), chunks = (n + kChunk - 1) / kChunk;
         parts_.resize(chunks);
         start_.resize(n);
-        count_.resize(n);
+        first_.resize(n);
         self_.resize(n);
         {
             // Held during the build only: the queries read the candidates, never the grid.
@@ -187,29 +253,32 @@ class VerletList {
                 // The grid's branch-free search (a branch per candidate would be mispredicted
                 // often).
                 typename CellGrid<Dim>::Neighbours found;
-                // One chunk's candidates, then copied into its array: sized exactly, not by the
+                // One chunk's slots, then copied into its array: sized exactly, not by the
                 // doubling of a growing vector.
-                std::vector<Index> chunk;
+                std::vector<Slot> chunk;
                 for (std::size_t c = c0; c < std::size_t(c1); ++c) {
                     chunk.clear();
                     for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
-                        const auto begin = std::ptrdiff_t(chunk.size());
                         const Index m = grid.collect(
                             Index(i), [](Index) { return true; }, found);
-                        chunk.insert(chunk.end(), found.j.begin(), found.j.begin() + m);
-                        std::sort(chunk.begin() + begin, chunk.end());
+                        std::sort(found.j.begin(), found.j.begin() + m);
+                        const std::size_t begin = chunk.size();
                         start_[i] = Index(begin);
-                        count_[i] = Index(chunk.size() - std::size_t(begin));
-                        self_[i] =
-                            Index(std::lower_bound(chunk.begin() + begin, chunk.end(), Index(i)) -
-                                  (chunk.begin() + begin));
+                        first_[i] = found.j[0];  // i itself is a candidate: m >= 1
+                        Index self = 0;
+                        bool longGaps = false;
+                        for (Index k = 1; k < m; ++k) {
+                            longGaps |= encodeGap(found.j[k - 1], found.j[k], chunk);
+                            if (found.j[k] == Index(i)) self = Index(chunk.size() - begin);
+                        }
+                        self_[i] = self | (longGaps ? kLongGaps : 0);
                     }
-                    std::vector<Index>& part = parts_[c];
+                    std::vector<Slot>& part = parts_[c];
                     // Kept when it is at most 1/16 too large (the counts change little between
                     // builds), else reallocated to the exact size.
                     if (part.capacity() < chunk.size() ||
                         part.capacity() > chunk.size() + chunk.size() / 16)
-                        part = std::vector<Index>(chunk.begin(), chunk.end());
+                        part = std::vector<Slot>(chunk.begin(), chunk.end());
                     else
                         part.assign(chunk.begin(), chunk.end());
                 }
@@ -232,10 +301,11 @@ class VerletList {
     bool periodic_ = false, valid_ = false;
     std::size_t builds_ = 0;
     std::span<const Vector> x_;
-    std::vector<Vector> built_;              // positions at the last build
-    std::vector<std::vector<Index>> parts_;  // candidates of each chunk
-    // Candidates of i: count_[i] from start_[i] in parts_[i / kChunk]; i itself at self_[i].
-    std::vector<Index> start_, count_, self_;
+    std::vector<Vector> built_;             // positions at the last build
+    std::vector<std::vector<Slot>> parts_;  // the candidates' gaps, chunk by chunk
+    // Candidates of i: first_[i], then the gaps from slot start_[i] of parts_[i / kChunk] to the
+    // next particle's; those after i from slot start_[i] + selfSlot(i) on, decoded from i.
+    std::vector<Index> start_, first_, self_;
     std::vector<char> moved_;
 };
 

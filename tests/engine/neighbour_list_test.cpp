@@ -1,7 +1,8 @@
 // The Verlet neighbour lists against a brute-force oracle (every particle's neighbours, in
 // increasing index, bit for bit), in 2D and 3D with periodic axes, after displacements below
-// half the skin (lists kept) and above (rebuilt), after a renumbering; and a short fluid run
-// that is bitwise the same for any skin and any number of threads.
+// half the skin (lists kept) and above (rebuilt), after a renumbering, with candidates far apart
+// in index; and a short fluid run that is bitwise the same for any skin and any number of
+// threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -202,6 +203,41 @@ TEST(VerletList, BuildIsTheSameOnAnyThreads) {
         const auto a = one.candidates(i), b = many.candidates(i);
         ASSERT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << i;
         ASSERT_TRUE(std::is_sorted(a.begin(), a.end())) << i;
+    }
+}
+
+/// Candidates far apart in index: the gaps between them take the long form from 2^16 on.
+/// Particles k, k + gap and k + 2 gap sit together, away from every other particle.
+TEST(VerletList, LargeIndexGaps) {
+    for (const std::uint32_t gap : {65535u, 65536u, 70001u}) {
+        SCOPED_TRACE(gap);
+        std::vector<V<2>> x(3 * gap);
+        for (std::uint32_t k = 0; k < gap; ++k)
+            for (std::uint32_t m = 0; m < 3; ++m)
+                x[k + m * gap] = {{double(k % 300) + 0.1 * m, double(k / 300)}};
+        num::VerletList<2> list;
+        list.configure(0.5, 0.2, num::Domain<2>{});
+        list.update(x);
+        typename num::VerletList<2>::Neighbours flat;
+        for (std::uint32_t i = 0; i < x.size(); ++i) {
+            const std::uint32_t k = i % gap;
+            const std::vector<std::uint32_t> group = {k, k + gap, k + 2 * gap};
+            ASSERT_EQ(list.candidates(i), group) << i;
+            std::vector<std::uint32_t> found, others, after, expectedOthers, expectedAfter;
+            list.forEachNeighbourOf(
+                i, [&](std::uint32_t j, const V<2>&, double) { found.push_back(j); });
+            ASSERT_EQ(found, group) << i;
+            for (std::uint32_t m = 0, n = list.collect(i, flat); m < n; ++m)
+                others.push_back(flat.j[m]);
+            for (std::uint32_t m = 0, n = list.collectAfter(i, flat); m < n; ++m)
+                after.push_back(flat.j[m]);
+            for (std::uint32_t j : group) {
+                if (j != i) expectedOthers.push_back(j);
+                if (j > i) expectedAfter.push_back(j);
+            }
+            ASSERT_EQ(others, expectedOthers) << i;
+            ASSERT_EQ(after, expectedAfter) << i;
+        }
     }
 }
 

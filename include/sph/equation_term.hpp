@@ -110,6 +110,8 @@ class IEquationTerm {
     /// passes (sph/evaluation_schedule.hpp). Default: nothing declared (the first pass, in the
     /// order the terms were added).
     virtual TermAccess access() const { return {}; }
+    /// The term's name in messages and in the apps' summary.json. Default: its type.
+    virtual std::string name() const { return typeName(*this); }
 };
 
 /// An ordered set of terms, built with makeTerm and + / +=.
@@ -131,7 +133,7 @@ class EquationHolder {
     void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& s,
                         std::span<const std::size_t> which) const {
         for (std::size_t k : which) {
-            d.setRequester("the term " + typeName(*terms_[k]));
+            d.setRequester("the term " + terms_[k]->name());
             terms_[k]->setDerivatives(d, s);
         }
         d.setRequester("");
@@ -163,7 +165,7 @@ class EquationHolder {
     /// The terms' type names, in the order added.
     std::vector<std::string> names() const {
         std::vector<std::string> out;
-        for (auto& t : terms_) out.push_back(typeName(*t));
+        for (auto& t : terms_) out.push_back(t->name());
         return out;
     }
     void create(Storage<Dim>& s, IMaterial& m) const {
@@ -183,7 +185,7 @@ class EquationHolder {
     /// A quantity missing from the storage names the term that needs it (and what to call).
     template <class F>
     static void named(const IEquationTerm<Dim>& term, F&& f) {
-        attributingMissingQuantity(f, [&] { return "the term " + typeName(term); });
+        attributingMissingQuantity(f, [&] { return "the term " + term.name(); });
     }
 
     std::vector<std::shared_ptr<IEquationTerm<Dim>>> terms_;

@@ -51,7 +51,7 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
         return result;
     }
 
-    const std::string& label() const { return label_; }
+    std::string name() const override { return label_; }
 
   private:
     /// Runs f; an exception from it becomes an AppError naming the term and the hook (and the

@@ -234,6 +234,13 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                                          opt.backend, status, message, solver.meanNeighbours());
     for (const auto& [t, f] : checkpoints)
         summary["checkpoints"].push_back({{"time", t}, {"file", f}});
+    // The passes of an evaluation, each with its terms in the order they run.
+    const std::vector<std::string> termNames = solver.equations().names();
+    for (const auto& pass : solver.schedule().passes) {
+        nlohmann::json names = nlohmann::json::array();
+        for (std::size_t t : pass.terms) names.push_back(termNames[t]);
+        summary["passes"].push_back(names);
+    }
     std::vector<std::string> warnings = scene.warnings;
     warnings.insert(warnings.end(), physical.warnings().begin(), physical.warnings().end());
     addEndOfRun(summary, end, warnings);

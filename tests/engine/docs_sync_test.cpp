@@ -1,4 +1,4 @@
-// docs/extending.md shows the full code of both examples: it must be the code that is built
+// docs/extending.md shows the full code of the three examples: it must be the code that is built
 // and tested, character for character. docs/scenes.md states the numerical defaults: they must
 // be those of sph/defaults.hpp, the ones the scene reader uses.
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@ std::string readFile(const std::string& path) {
 TEST(Docs, ExtendingShowsTheExamplesVerbatim) {
     const std::string root = NUMERICS_SOURCE_DIR;
     const std::string doc = readFile(root + "/docs/extending.md");
-    for (const char* example : {"spring_force.hpp", "heat_diffusion.hpp"}) {
+    for (const char* example : {"spring_force.hpp", "heat_diffusion.hpp", "corrected_gradient.hpp"}) {
         const std::string code = readFile(root + "/examples/" + example);
         ASSERT_GT(code.size(), 500u) << example;
         EXPECT_NE(doc.find("```cpp\n" + code + "```"), std::string::npos)

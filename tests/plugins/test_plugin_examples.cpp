@@ -42,6 +42,14 @@ void springPeriod() {
         const double x = plugintest::mean(plugintest::output(dir, n).at("x"));
         EXPECT_NEAR(x, x0 * std::cos(omega * t), 1e-3 * x0) << Dim << "D, t = " << t;
     }
+    // summary.json lists the evaluation's passes: the spring, which declares nothing, runs in
+    // the one pass of the fluid terms, named by its label.
+    const json summary = json::parse(apptest::readFile(dir + "/out/summary.json"));
+    ASSERT_EQ(summary["passes"].size(), 1u) << summary["passes"].dump();
+    int springs = 0;
+    for (const auto& name : summary["passes"][0])
+        springs += name.get<std::string>().find("term \"spring\" (plugins.0.terms.0") == 0;
+    EXPECT_EQ(springs, 1) << summary["passes"].dump();
 }
 
 TEST(PluginExamples, SpringPeriod2D) { springPeriod<2>(); }

@@ -241,10 +241,8 @@ class Solver {
                     const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)
                                               : neighbours_.collect(i, sc.found);
                     sc.pairs += m;
-                    if (sc.r.size() < m) {
-                        sc.r.resize(2 * m), sc.grads.resize(2 * m);
-                        if (needsW) sc.w.resize(2 * m);
-                    }
+                    if (sc.r.size() < m) sc.r.resize(2 * m), sc.grads.resize(2 * m);
+                    if (needsW && sc.w.size() < m) sc.w.resize(2 * m);  // passes differ in W
                     const Vec* dx = sc.found.dx.data();
                     const double* r2 = sc.found.r2.data();
                     Float* r = sc.r.data();

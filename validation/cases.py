@@ -350,6 +350,9 @@ def peak(coord, values):
     return float(values[i]), float(coord[i])
 
 
+CONVECTION_OUTPUTS = 5
+
+
 def natural_convection(run, ra):
     mat = next(iter(run.scene["materials"].values()))
     alpha = mat["conductivity"] / (mat["density"] * mat["heat_capacity"])
@@ -358,10 +361,16 @@ def natural_convection(run, ra):
     pr = run.probes()
     n = len([k for k in pr if k.startswith("u") and k.endswith(".vx")])
     ys = np.array([(i + 1) / (n + 1) for i in range(n)])
-    u = np.array([pr[f"u{i:02d}.vx"][-1] for i in range(n)]) * L / alpha
-    v = np.array([pr[f"v{i:02d}.vy"][-1] for i in range(n)]) * L / alpha
+    # The profiles are averaged over the last CONVECTION_OUTPUTS outputs (the flow is steady; the
+    # weakly compressible velocity carries acoustic noise of a few per cent from one output to
+    # the next, which a single snapshot would report as error or hide as luck).
+    k = CONVECTION_OUTPUTS
+    u = np.array([np.mean(pr[f"u{i:02d}.vx"][-k:]) for i in range(n)]) * L / alpha
+    v = np.array([np.mean(pr[f"v{i:02d}.vy"][-k:]) for i in range(n)]) * L / alpha
     umax, yu = peak(ys, u)
     vmax, xv = peak(ys, v)
+    snapshots = [peak(ys, np.array([pr[f"u{i:02d}.vx"][-j] for i in range(n)]) * L / alpha)[0]
+                 for j in range(1, k + 1)]
     # Mean Nusselt number: the heat flux q_x = rho c (u T - alpha dT/dx), averaged over the fluid
     # between its first and last column of particles (the conduction part from their mean
     # temperatures), over alpha rho c dT / L.
@@ -377,12 +386,14 @@ def natural_convection(run, ra):
     nu_mean = float(conduction + convection)
     ref = DE_VAHL_DAVIS[ra]
     t = float(pr["time"][-1])
-    prev_u = np.array([pr[f"u{i:02d}.vx"][-2] for i in range(n)]) * L / alpha
-    checks = [{"metric": f"|u_max - {ref[0]}| / {ref[0]} (u_max on x = 0.5, L / alpha units) at t = {t:g} s", "value": abs(umax - ref[0]) / ref[0], "gate": 0.03},
-              {"metric": f"|v_max - {ref[1]}| / {ref[1]} (v_max on y = 0.5) at t = {t:g} s", "value": abs(vmax - ref[1]) / ref[1], "gate": 0.03},
+    t0 = float(pr["time"][-k])
+    window = f"averaged over t = {t0:g} to {t:g} s ({k} outputs)"
+    checks = [{"metric": f"|u_max - {ref[0]}| / {ref[0]} (u_max on x = 0.5, L / alpha units) {window}", "value": abs(umax - ref[0]) / ref[0], "gate": 0.03},
+              {"metric": f"|v_max - {ref[1]}| / {ref[1]} (v_max on y = 0.5) {window}", "value": abs(vmax - ref[1]) / ref[1], "gate": 0.03},
               {"metric": f"|Nu - {ref[2]}| / {ref[2]} (mean Nusselt number) at t = {t:g} s", "value": abs(nu_mean - ref[2]) / ref[2], "gate": 0.03}]
     notes = (f"u_max {umax:.4g} at y = {yu:.3f}, v_max {vmax:.4g} at x = {xv:.3f}, Nu {nu_mean:.4g} "
-             f"(de Vahl Davis: {ref[0]}, {ref[1]}, {ref[2]}); u_max one output earlier {peak(ys, prev_u)[0]:.4g}")
+             f"(de Vahl Davis: {ref[0]}, {ref[1]}, {ref[2]}); u_max of the single outputs averaged "
+             f"{min(snapshots):.4g} to {max(snapshots):.4g}")
     profile = {"xlabel": "y (u on x = 0.5) or x (v on y = 0.5)", "ylabel": "velocity L / alpha", "series": [
         {"label": "u on x = 0.5", "x": ys.tolist(), "y": u.tolist(), "style": "line"},
         {"label": "v on y = 0.5", "x": ys.tolist(), "y": v.tolist(), "style": "line"},
@@ -504,6 +515,12 @@ def case(name, scene, compare, doc, study, ci, **kw):
 #   and 0.251) u_max 0.015-0.091, v_max 0.022-0.077 -> 0.14, 0.12 (below the bounds of
 #   94eaf21). Ra 1e3 over the same four: u_max 0.0008-0.060, v_max 0.021-0.062 (bounds kept:
 #   0.053, 0.045 hold for the default run, 0.035, 0.030).
+# Since the convection profiles are averaged over the last 5 outputs (one snapshot moved u_max
+#   by up to 9 % between outputs at Ra 1e5), over the default, time.cfl 0.249 and 0.251 and the
+#   symmetric pair loop: Ra 1e3 at 0.04 u_max 0.001-0.055, v_max 0.004-0.028 (bounds kept at
+#   0.053 for u_max, which the default run meets at 0.009; v_max tightened 0.045 -> 0.042);
+#   Ra 1e4 at 0.04 u_max 0.016-0.042, v_max 0.003-0.041 -> 0.063, 0.062; Ra 1e5 at 0.02 (the
+#   default, cfl 0.249 and symmetric) u_max 0.020-0.063, v_max 0.035-0.068 (bounds kept).
 # doc_note: where the documentation resolution is coarser than the case deserves (run.sh has to
 # finish on 2 cores), it says so; the report prints it.
 REGRESSION_BUILD = "94eaf21"
@@ -527,7 +544,7 @@ case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715
      (0.05715 / 20, [0.34]))
 case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_break_pressure, 0.3 / 60,
      [0.3 / 20, 0.3 / 40, 0.3 / 60], (0.3 / 20, [0.16, 2.8, None]))
-for _ra, _ci, _bounds in (("1e3", 0.04, [0.053, 0.045, None]), ("1e4", 0.04, [0.14, 0.12, None]),
+for _ra, _ci, _bounds in (("1e3", 0.04, [0.053, 0.042, None]), ("1e4", 0.04, [0.063, 0.062, None]),
                           ("1e5", 0.02, [0.067, 0.099, None])):
     case(f"natural_convection_ra{_ra}", f"natural_convection_ra{_ra}.json", (lambda ra: lambda r: natural_convection(r, ra))(_ra),
          0.02, [0.05, 0.04, 0.02], (_ci, _bounds))

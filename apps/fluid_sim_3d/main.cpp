@@ -1,6 +1,7 @@
-// fluid_sim_3d: 3D water with heat transfer. Without a scene file it runs its built-in scene, a
-// cold (5 C) and a hot (80 C) hose pouring into a closed box (scenes/hoses_3d.json). Everything
-// else is shared with fluid_sim: num::io::runApp (include/io/app.hpp).
+// fluid_sim_3d: 3D water with heat transfer. Without a scene file it runs its built-in scene, hot
+// (70 C) and cold (10 C) water changing places in a tank past a hot and a cold block
+// (scenes/hot_cold_exchange_3d.json). Everything else is shared with fluid_sim: num::io::runApp
+// (include/io/app.hpp).
 #include "default_scene.hpp"
 #include "io/app.hpp"
 

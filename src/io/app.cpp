@@ -18,7 +18,7 @@ namespace num::io {
 namespace {
 
 std::string examples(const std::string& name, int dim) {
-    const std::string other = dim == 2 ? "hoses_3d.json" : "dam_break_hot_cold_2d.json";
+    const std::string other = dim == 2 ? "hot_cold_exchange_3d.json" : "dam_break_hot_cold_2d.json";
     const std::string scene =
         dim == 2 ? "scenes/dam_break_hot_cold_2d.json" : "scenes/dam_break_3d.json";
     return "Examples:\n"

@@ -159,5 +159,5 @@ TEST(Apps, DefaultScenesAreBuiltIn) {
     const Result r3 = run(FLUID_SIM_3D, "--print-scene", dir);
     ASSERT_EQ(r3.code, 0);
     EXPECT_EQ(nlohmann::json::parse(r3.output),
-              nlohmann::json::parse(readFile(scene("../../../scenes/hoses_3d.json"))));
+              nlohmann::json::parse(readFile(scene("../../../scenes/hot_cold_exchange_3d.json"))));
 }

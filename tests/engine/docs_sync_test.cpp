@@ -23,7 +23,8 @@ std::string readFile(const std::string& path) {
 TEST(Docs, ExtendingShowsTheExamplesVerbatim) {
     const std::string root = NUMERICS_SOURCE_DIR;
     const std::string doc = readFile(root + "/docs/extending.md");
-    for (const char* example : {"spring_force.hpp", "heat_diffusion.hpp", "corrected_gradient.hpp"}) {
+    for (const char* example :
+         {"spring_force.hpp", "heat_diffusion.hpp", "corrected_gradient.hpp"}) {
         const std::string code = readFile(root + "/examples/" + example);
         ASSERT_GT(code.size(), 500u) << example;
         EXPECT_NE(doc.find("```cpp\n" + code + "```"), std::string::npos)

@@ -15,6 +15,7 @@ packages=(
   ffmpeg                         # the movie of a run (<prefix>.mp4) from its pictures
   python3-numpy                  # validation: comparison of the apps' outputs (validation/cases.py)
   python3-matplotlib             # validation: plots of docs/validation.md (validation/run.sh)
+  libopenmpi-dev openmpi-bin     # several processes (mpirun): MPI domain decomposition
 )
 
 missing=()

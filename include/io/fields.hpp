@@ -1,5 +1,5 @@
 // The per-particle fields the writers put out: the standard ones (velocity, density, pressure,
-// temperature, mass, material, kind) and every quantity a user term registered under its own id
+// temperature, mass, material, kind, id) and every quantity a user term registered under its own id
 // (negative or >= QuantityId::USER_FIRST), named through FieldNames or "user_<id>".
 #pragma once
 
@@ -57,7 +57,8 @@ std::vector<OutputField> outputFields(const sph::Storage<Dim>& s, const FieldNam
     const std::pair<QuantityId, const char*> standard[] = {
         {QuantityId::DENSITY, "density"},         {QuantityId::PRESSURE, "pressure"},
         {QuantityId::TEMPERATURE, "temperature"}, {QuantityId::MASS, "mass"},
-        {QuantityId::MATERIAL, "material"},       {QuantityId::KIND, "kind"}};
+        {QuantityId::MATERIAL, "material"},       {QuantityId::KIND, "kind"},
+        {QuantityId::PARTICLE_ID, "id"}};
     auto typeOf = [&](QuantityId id) {
         const auto& q = s.get(id);
         return q.template holds<sph::Float>() ? T::FLOAT

@@ -8,6 +8,7 @@
 
 #include "io/fields.hpp"
 #include "io/scene_loader.hpp"
+#include "parallel/communicator.hpp"
 
 namespace num::io {
 
@@ -21,6 +22,8 @@ struct RunOptions {
     double checkpointEvery = 0;          ///< simulated seconds between checkpoints (0: none)
     bool quiet = false;
     FieldNames fieldNames;  ///< names of user quantities in the outputs
+    /// The processes of the run (mpirun); nullptr: this process alone.
+    const parallel::Communicator* communicator = nullptr;
 };
 
 /// Runs the scene; returns the exit code (0, INTERRUPTED). Errors are AppErrors.

@@ -58,6 +58,7 @@
 #include "sph/defaults.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
+#include "sph/particle_order.hpp"
 #include "sph/setup/fluid_geometry.hpp"
 #include "sph/setup/particle_generation.hpp"
 #include "sph/terms/artificial_viscosity.hpp"
@@ -198,6 +199,7 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
     s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, std::move(wallVelocity));
     s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, std::move(slip));
     s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, model.viscosity);
+    ensureParticleIds(s);
     if (model.materials.empty()) {
         auto water = std::make_shared<Material>("water");
         water->params()

@@ -12,6 +12,11 @@
 // the pair loop itself. Neighbours are filtered by the current distance and come in increasing
 // index, so results do not depend on the skin or on when the lists were built.
 //
+// Several processes (sph/decomposition.hpp, setDecomposition): the pair loops run over the
+// particles this process owns; halo copies are refreshed from their owners after the terms'
+// initialize, after each pass's finalize and after the post-step phase; the time-step limits
+// are combined over the processes.
+//
 // Reproducibility: particles are split into blocks, each evaluated by one thread in particle
 // order with its own derivative objects. Symmetric mode: a fixed number of blocks (setting
 // "blocks"), each with its own buffers, summed in block order. Asymmetric mode: each particle
@@ -19,6 +24,7 @@
 // the same for any number of threads.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -28,6 +34,7 @@
 #include <vector>
 
 #include "spatial/neighbour_list.hpp"
+#include "sph/decomposition.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
 
@@ -118,8 +125,14 @@ class Solver {
         equations_.forTerms([&](auto& term) { term.beginEvaluation(context); });
         for (std::size_t p = 0; p < passes_.size(); ++p) {
             const EvaluationSchedule::Pass& order = schedule_.passes[p];
-            equations_.forTerms(order.terms,
-                                [&](auto& term) { term.initialize(scheduler_, storage, t); });
+            equations_.forTerms(order.terms, [&](auto& term) {
+                term.initialize(scheduler_, storage, t);
+                if (!decomposition_) return;
+                // What a term prepares, later terms of the pass may read of a halo neighbour.
+                if (const TermAccess access = term.access(); !access.prepares.empty())
+                    decomposition_->exchangeHalo(storage, access.prepares);
+            });
+            if (decomposition_) decomposition_->exchangeHalo(storage);
             PairPass& pass = passes_[p];
             if (p == 0 || pass.holders[0].size() > 0) {
                 for (auto& a : pass.accumulated) a.reset(storage.size());
@@ -135,6 +148,7 @@ class Solver {
             }
             equations_.forTerms(order.terms,
                                 [&](auto& term) { term.finalize(scheduler_, storage, t); });
+            if (decomposition_) decomposition_->exchangeHalo(storage);
         }
     }
 
@@ -142,6 +156,7 @@ class Solver {
     /// integrator advanced the storage by dt to time t (sph::Run::step calls it).
     void postStep(Storage<Dim>& storage, Float t, Float dt) {
         equations_.forTerms([&](auto& term) { term.postStep(scheduler_, storage, t, dt); });
+        if (decomposition_) decomposition_->exchangeHalo(storage);
     }
 
     /// The time-step limits at the current state (after an evaluation).
@@ -167,6 +182,7 @@ class Solver {
                                              std::sqrt(kernel_.h / std::sqrt(a2max)));
         equations_.forTerms(
             [&](const auto& term) { term.limitTimeStep(storage, settings_, limits); });
+        if (decomposition_) decomposition_->combine(limits);
         return limits;
     }
 
@@ -184,6 +200,15 @@ class Solver {
     const RunSettings& settings() const { return settings_; }
     const RunKernel<Dim>& kernel() const { return kernel_; }
     IScheduler& scheduler() { return scheduler_; }
+    /// Runs on the particles a domain decomposition gives this process (nullptr: all of them).
+    /// Only the gather evaluation can: symmetric pairs would add into halo copies.
+    void setDecomposition(IDecomposition<Dim>* decomposition) {
+        if (decomposition && symmetric_)
+            throw std::invalid_argument(
+                "evaluation \"symmetric\" cannot run on several processes: use \"gather\"");
+        decomposition_ = decomposition;
+    }
+    IDecomposition<Dim>* decomposition() const { return decomposition_; }
 
   private:
     /// Symmetric mode: the "blocks" setting (each block has buffers of every particle, and the
@@ -227,6 +252,7 @@ class Solver {
         const bool needsW = pass.needsW;
         const Float h = kernel_.h;
         const GradientFactor<Kernel> gradient(h);
+        const char* owned = decomposition_ ? decomposition_->owned().data() : nullptr;
         scheduler_.parallelFor(Size(blocks), 1, [&](Size b0, Size b1) {
             for (Size b = b0; b < b1; ++b) {
                 Scratch& sc = scratch_[b];
@@ -238,6 +264,7 @@ class Solver {
                         abandoned_.store(true, std::memory_order_relaxed);
                         break;
                     }
+                    if (owned && !owned[i]) continue;  // a halo copy: its owner evaluates it
                     const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)
                                               : neighbours_.collect(i, sc.found);
                     sc.pairs += m;
@@ -263,9 +290,14 @@ class Solver {
                 }
             }
         });
-        std::size_t pairs = 0;
-        for (const Scratch& sc : scratch_) pairs += sc.pairs;
-        meanNeighbours_ = n ? double(pairs) * (symmetric_ ? 2.0 : 1.0) / double(n) : 0.0;
+        std::int64_t pairs = 0, evaluated = std::int64_t(n);
+        for (const Scratch& sc : scratch_) pairs += std::int64_t(sc.pairs);
+        if (owned) {
+            evaluated = std::count(owned, owned + n, char(1));
+            pairs = decomposition_->sum(pairs), evaluated = decomposition_->sum(evaluated);
+        }
+        meanNeighbours_ =
+            evaluated ? double(pairs) * (symmetric_ ? 2.0 : 1.0) / double(evaluated) : 0.0;
     }
 
     IScheduler& scheduler_;
@@ -279,6 +311,7 @@ class Solver {
     std::vector<Scratch> scratch_;  // per block, shared by the passes
     VerletList<Dim> neighbours_;
     double meanNeighbours_ = 0;
+    IDecomposition<Dim>* decomposition_ = nullptr;
     std::function<bool()> abandonCheck_;
     std::atomic<bool> abandoned_{false};
 };

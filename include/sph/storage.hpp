@@ -250,6 +250,28 @@ class Storage {
         size_ += other.size_;
     }
 
+    /// A storage with the same quantities, orders and materials and no particles.
+    Storage emptyCopy() const {
+        Storage out;
+        for (const auto& [id, q] : quantities_)
+            q.visit([&](const auto& b) {
+                using T = typename std::decay_t<decltype(b.value)>::value_type;
+                out.quantities_.emplace(id, Quantity<Dim>(q.order(), QuantityBuffers<T>{}));
+            });
+        out.materials_ = materials_;
+        return out;
+    }
+
+    /// Sets the number of particles: new ones at the end are zero (value-initialised) in every
+    /// quantity and level; particles beyond n are dropped.
+    void resize(Size n) {
+        for (auto& [id, q] : quantities_)
+            q.visit([&](auto& b) {
+                for (int k = 0; k < q.levels(); ++k) b.level(k).resize(n);
+            });
+        size_ = n;
+    }
+
     /// Removes the particles whose indices are listed (any order, duplicates ignored).
     void remove(std::vector<Size> indices) {
         std::vector<char> drop(size_, 0);

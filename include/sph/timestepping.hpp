@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "sph/particle_order.hpp"
 #include "sph/solver.hpp"
 
 namespace num::sph {
@@ -162,16 +163,14 @@ std::unique_ptr<ITimeStepping<Dim>> makeIntegrator(const std::string& name) {
                         "' (expected leapfrog, predictor_corrector or euler)");
 }
 
-/// Reorders the particles by cell of a grid built from their positions now, so neighbours are
-/// near in memory. Depends on positions only (not on the last evaluation's grid, which the
+/// Reorders the particles by their cell now (sph/particle_order.hpp), so neighbours are near in
+/// memory. Depends on positions and ids only (not on the last evaluation's grid, which the
 /// post-step phase has moved away from), so a restarted run reorders as the uninterrupted one.
 /// The solver's neighbour lists are invalidated: they index particles by their old order.
 template <int Dim>
 void reorderByCell(Storage<Dim>& s, Solver<Dim>& solver) {
-    CellGrid<Dim> grid;
-    grid.build(s.template getValue<Vector<Dim>>(QuantityId::POSITION),
-               solver.kernel().supportRadius(), solver.domain());
-    s.reorder(std::vector<Size>(grid.sortedOrder().begin(), grid.sortedOrder().end()));
+    ensureParticleIds(s);
+    reorderByKey(s, solver.domain(), solver.kernel().supportRadius());
     solver.invalidateNeighbours();
 }
 
@@ -199,8 +198,13 @@ class Run {
     /// dt at the new time. Returns the step taken.
     Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
         if (!primed_) prime();
-        if (reorderEvery_ > 0 && steps_ > 0 && steps_ % reorderEvery_ == 0)
+        const bool reorder = reorderEvery_ > 0 && steps_ > 0 && steps_ % reorderEvery_ == 0;
+        if (IDecomposition<Dim>* d = solver_.decomposition()) {
+            if (d->beforeStep(storage_, reorder, particlesChanged_)) solver_.invalidateNeighbours();
+        } else if (reorder) {
             reorderByCell(storage_, solver_);
+        }
+        particlesChanged_ = false;
         const TimeStepLimits limits = solver_.timeStepLimits(storage_);
         Float dt = limits.dt();
         criterion_ = limits.criterion();
@@ -229,6 +233,9 @@ class Run {
     const std::string& limitingCriterion() const { return criterion_; }
     void setTime(Float t, Size steps) { time_ = t, steps_ = steps; }
     void markPrimed(bool p) { primed_ = p; }
+    /// Tells the run that particles were added or removed since the last step (emitters, open
+    /// sides): a domain decomposition then rebuilds its halos before the next step.
+    void particlesChanged() { particlesChanged_ = true; }
 
   private:
     Storage<Dim>& storage_;
@@ -237,7 +244,7 @@ class Run {
     Float time_;
     Size steps_ = 0;
     Size reorderEvery_ = 0;
-    bool primed_ = false;
+    bool primed_ = false, particlesChanged_ = false;
     Float lastDt_ = 0;
     std::string criterion_ = "none";
 };

@@ -36,6 +36,9 @@ enum class QuantityId : int {
     NORMAL,            ///< wall or body normal (boundary particles)
     WALL_VELOCITY,     ///< prescribed velocity of boundary particles
     NEIGHBOUR_COUNT,   ///< number of neighbours found in the last evaluation (int)
+    OWNER,             ///< the process that owns the particle (int; -1: not yet assigned)
+    PARTICLE_ID,       ///< stable particle id (int): never changes, never reused
+    ORDER_KEY,         ///< the particle's cell at the last reordering (int, particle_order.hpp)
     USER_FIRST = 1000  ///< first id free for user quantities (or use negative ids)
 };
 

@@ -1,5 +1,8 @@
 #include "io/app.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
@@ -7,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 #include "io/errors.hpp"
 #include "io/expression.hpp"
@@ -97,11 +101,43 @@ int listScenes(const std::string& dir, const AppInfo& info) {
     return 0;
 }
 
+/// Under mpirun, the processes other than the root print nothing: every error they share is
+/// reported by the root. Returns a descriptor of the original standard error, for an error only
+/// this process meets.
+int quietUnlessRoot(const parallel::Communicator& comm) {
+    const int error = ::dup(STDERR_FILENO);
+    if (comm.isRoot()) return error;
+    if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) {
+        ::dup2(null, STDOUT_FILENO), ::dup2(null, STDERR_FILENO);
+        ::close(null);
+    }
+    return error;
+}
+
 template <int Dim>
 int runApp(int argc, char** argv, const AppInfo& info) {
     // A closed stdout (`fluid_sim | head -1`) must not end the run before its outputs: writes to
     // it fail quietly instead.
     std::signal(SIGPIPE, SIG_IGN);
+    std::unique_ptr<parallel::Communicator> comm;
+    try {
+        comm = std::make_unique<parallel::Communicator>(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s: error: %s\n", info.name.c_str(), e.what());
+        return int(ExitCode::USAGE);
+    }
+    const int ownError = quietUnlessRoot(*comm);
+    // An error met by this process alone: reported here, and every process ends at once.
+    auto alone = [&](const std::string& text, ExitCode code) {
+        if (comm->size() == 1) {
+            std::fprintf(stderr, "%s: %s\n", info.name.c_str(), text.c_str());
+            return int(code);
+        }
+        const std::string line = info.name + " (process " + std::to_string(comm->rank()) + " of " +
+                                 std::to_string(comm->size()) + "): " + text + "\n";
+        if (::write(ownError, line.data(), line.size()) < 0) std::perror(info.name.c_str());
+        comm->abort(int(code));
+    };
     CLI::App app{"Smoothed Particle Hydrodynamics of water with heat transfer in " +
                      std::to_string(Dim) + "D (numerics 0.1.0).",
                  info.name};
@@ -109,6 +145,7 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     std::vector<std::string> sets;
     RunOptions opt;
     opt.program = info.name;
+    opt.communicator = comm.get();
     opt.fieldNames = info.fieldNames;
     std::string out, restart;
     double endTime = 0;
@@ -198,13 +235,10 @@ int runApp(int argc, char** argv, const AppInfo& info) {
         std::fprintf(stderr, "%s: error: scene setting: %s\n", info.name.c_str(), e.what());
         return int(ExitCode::SCENE);
     } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "%s: error: out of memory (try a larger particles.spacing)\n",
-                     info.name.c_str());
-        return int(ExitCode::INTERNAL);
+        return alone("error: out of memory (try a larger particles.spacing)", ExitCode::INTERNAL);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "%s: internal error: %s (please report it)\n", info.name.c_str(),
-                     e.what());
-        return int(ExitCode::INTERNAL);
+        return alone(std::string("internal error: ") + e.what() + " (please report it)",
+                     ExitCode::INTERNAL);
     }
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "io/errors.hpp"
+#include "parallel/communicator.hpp"
 #include "sph/storage.hpp"
 #include "sph/types.hpp"
 
@@ -27,9 +28,10 @@ class PhysicalCheck {
     PhysicalCheck(double U, double c0, double rho0) : U_(U), c0_(c0), rho0_(rho0) {}
 
     /// Checks the fluid particles at time t; returns a new warning (empty if none) and throws
-    /// AppError(UNSTABLE) where the run is lost.
+    /// AppError(UNSTABLE) where the run is lost. With several processes, the extremes are those
+    /// of every process (each checks its particles; halo copies equal their owners).
     template <int Dim>
-    std::string check(const sph::Storage<Dim>& s, double t) {
+    std::string check(const sph::Storage<Dim>& s, double t, const parallel::Communicator& comm) {
         const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
         const auto rho = s.template getValue<double>(sph::QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
@@ -39,6 +41,7 @@ class PhysicalCheck {
             vmax = std::max(vmax, norm(v[i]));
             rhoMin = std::min(rhoMin, rho[i]), rhoMax = std::max(rhoMax, rho[i]);
         }
+        vmax = comm.maximum(vmax), rhoMin = comm.minimum(rhoMin), rhoMax = comm.maximum(rhoMax);
         const std::string at = "at t = " + number(t) + " s ";
         if (vmax >= c0_)
             throw AppError(ExitCode::UNSTABLE,

@@ -91,10 +91,11 @@ void checkHealth(const sph::Storage<Dim>& s, const Scene<Dim>& scene, double t, 
         ". Likely cause: the time step is too large or the sound speed too low for this flow; "
         "lower time.cfl, raise the material's sound_speed, or refine particles.spacing";
     const auto kind = s.template getValue<int>(QuantityId::KIND);
+    const auto id = s.template getValue<int>(QuantityId::PARTICLE_ID);
     auto particle = [&](long i) {
         static const char* kinds[] = {"fluid particle", "wall particle", "body particle"};
         return std::string(kind[i] >= 0 && kind[i] < 3 ? kinds[kind[i]] : "particle") + " " +
-               std::to_string(i);
+               std::to_string(id[i]);
     };
     std::vector<OutputField> fields = outputFields(s, names);
     fields.insert(fields.begin(), {"position", QuantityId::POSITION, OutputField::Type::VECTOR});

@@ -12,6 +12,7 @@
 #include <optional>
 #include <thread>
 
+#include "agreed_errors.hpp"
 #include "fingerprint.hpp"
 #include "initial_state.hpp"
 #include "io/checkpoint.hpp"
@@ -19,6 +20,7 @@
 #include "io/file.hpp"
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
+#include "parallel/domain_decomposition.hpp"
 #include "physical_check.hpp"
 #include "plugins.hpp"
 #include "run_limits.hpp"
@@ -48,9 +50,21 @@ SceneDocument sceneOfCheckpoint(const std::string& path, int dimension) {
     return SceneDocument::fromText(r.getString(), path + " (scene stored in the checkpoint)");
 }
 
+/// The number of particles a process owns (those not yet assigned count on the root).
+template <int Dim>
+std::int64_t ownedParticles(const sph::Storage<Dim>& s, const parallel::Communicator& comm) {
+    std::int64_t n = 0;
+    for (int owner : s.template getValue<int>(QuantityId::OWNER))
+        n += owner == comm.rank() || (owner < 0 && comm.isRoot());
+    return n;
+}
+
 template <int Dim>
 int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     const auto wallStart = std::chrono::steady_clock::now();
+    const parallel::Communicator single;
+    const parallel::Communicator& comm = opt.communicator ? *opt.communicator : single;
+    const bool root = comm.isRoot();
     // Plugin libraries by absolute path: the scene a checkpoint stores finds them anywhere.
     const SceneDocument doc = withAbsolutePluginPaths(given);
     const stop::DefaultsOnExit defaultSignalsOnExit;
@@ -58,7 +72,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     Scene<Dim> scene = readScene<Dim>(doc);
     if (opt.endTime) scene.endTime = *opt.endTime;
     if (opt.outDir) scene.output.directory = *opt.outDir;
-    if (!opt.quiet)
+    if (!opt.quiet && root)
         for (const std::string& w : scene.warnings)
             std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
     const int threads = opt.backend == "seq" ? 1
@@ -70,6 +84,15 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     checkRunLimits(scene, setup, opt.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(scene, setup);
     checkInitialState(scene, setup, initial);
+    if (comm.size() > 1 && setup.settings.template get<std::string>("evaluation") == "symmetric")
+        throw AppError(ExitCode::USAGE,
+                       "numerics.evaluation \"symmetric\" cannot run on several processes: "
+                       "remove it (the default gathers) or run without mpirun");
+    // The process that owns each particle (parallel/domain_decomposition.hpp); -1 until the
+    // particles are distributed.
+    initial.template insert<int>(QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
+    for (auto& t : setup.emitterTemplates)
+        t.template insert<int>(QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
     const std::string dir = scene.output.directory;
     const std::string fingerprint = runFingerprint(doc, setup, initial) + plugins.fingerprint;
     const FieldNames fieldNames = pluginFieldNames(plugins, initial, opt.fieldNames, doc.file());
@@ -100,24 +123,42 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     emitters.layers() = state.emitterLayers.empty() ? emitters.layers() : state.emitterLayers;
     emitters.setEmitted(state.emitted);
 
-    Outputs<Dim> outputs(scene, setup, dir, initial, fieldNames);
+    // The root writes every output, from the particles of every process gathered.
+    std::optional<Outputs<Dim>> outputs;
+    onRoot(comm, [&] { outputs.emplace(scene, setup, dir, initial, fieldNames); });
     auto scheduler = sph::makeScheduler(opt.backend, Size(threads));
     sph::Solver<Dim> solver(*scheduler, setup.settings,
                             sph::makeFluidEquations(setup.model, setup.geometry),
                             setup.geometry.domain);
     auto integrator = sph::makeIntegrator<Dim>(scene.integrator);
     sph::Run<Dim> run(storage, solver, *integrator, state.time);
+    // Each process keeps its share of the particles and a halo; one process keeps them all.
+    parallel::DomainDecomposition<Dim> decomposition(comm, solver.domain(),
+                                                     solver.kernel().supportRadius());
+    // Every particle at once: the whole storage on the root (a copy only with several
+    // processes), for outputs, checkpoints and the summary.
+    auto everyParticle = [&](const sph::Storage<Dim>& s, auto&& use) {
+        if (comm.size() == 1) return use(s);
+        const sph::Storage<Dim> all = decomposition.gatherToRoot(s);
+        return use(all);
+    };
     if (opt.restart) {
         // The checkpoint holds the derivatives at its time; terms keep no time of their own (a
         // step's post-step phase gets its dt from Run), so the run continues as it would have.
+        decomposition.distribute(storage);
+        solver.setDecomposition(&decomposition);
         run.setTime(state.time, Size(state.steps));
         run.markPrimed(true);
-        outputs.resume(state.time, state.series);
+        if (root) outputs->resume(state.time, state.series);
     } else {
-        outputs.start();
+        onRoot(comm, [&] { outputs->start(); });
         emitters.emit(storage, 0.0);
+        decomposition.distribute(storage);
+        solver.setDecomposition(&decomposition);
         run.prime();
-        state.start = conservationVector(storage, setup.gravity(1e300));
+        everyParticle(storage, [&](const sph::Storage<Dim>& all) {
+            if (root) state.start = conservationVector(all, setup.gravity(1e300));
+        });
     }
     const double every = scene.output.every;
     auto nextOutputTime = [&] { return state.outputIndex * every; };
@@ -129,8 +170,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     // once when that step is still running half a second later.
     stop::duringRun();
     const stop::TestSignal testSignal = stop::testSignal();
-    solver.setAbandonCheck([&] { return stop::abandonStep(run.steps() + 1); });
-    Progress progress(opt.quiet                  ? Progress::Mode::QUIET
+    // Several processes finish the step in progress together: one alone cannot abandon it.
+    if (comm.size() == 1)
+        solver.setAbandonCheck([&] { return stop::abandonStep(run.steps() + 1); });
+    Progress progress(opt.quiet || !root         ? Progress::Mode::QUIET
                       : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
                                                  : Progress::Mode::PLAIN,
                       run.time(), scene.endTime);
@@ -140,7 +183,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         RunState<Dim> r = state;
         r.time = run.time(), r.steps = run.steps();
         r.emitterLayers = emitters.layers(), r.emitted = emitters.emitted();
-        r.series = outputs.series().entries();
+        if (root) r.series = outputs->series().entries();
         return r;
     };
     // A step cut short by an unaligned end time leaves the trajectory a longer run follows: a
@@ -148,16 +191,23 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     std::optional<std::pair<RunState<Dim>, sph::Storage<Dim>>> beforeEndStep;
     auto writeCheckpoint = [&](const std::string& name) {
         const RunState<Dim> r = beforeEndStep ? beforeEndStep->first : resumable();
-        ByteWriter w;
-        w.putString(doc.dump());
-        w.putString(fingerprint);
-        r.write(w);
-        writeStorage(w, beforeEndStep ? beforeEndStep->second : storage);
-        writeCheckpointFile(outputs.path(name), Dim, w.bytes());
+        everyParticle(beforeEndStep ? beforeEndStep->second : storage,
+                      [&](const sph::Storage<Dim>& all) {
+                          onRoot(comm, [&] {
+                              ByteWriter w;
+                              w.putString(doc.dump());
+                              w.putString(fingerprint);
+                              r.write(w);
+                              writeStorage(w, all);
+                              writeCheckpointFile(outputs->path(name), Dim, w.bytes());
+                          });
+                      });
         checkpoints.emplace_back(r.time, name);
     };
     auto output = [&] {
-        outputs.write(storage, run.time(), state.outputIndex);
+        everyParticle(storage, [&](const sph::Storage<Dim>& all) {
+            onRoot(comm, [&] { outputs->write(all, run.time(), state.outputIndex); });
+        });
         ++state.outputIndex;
     };
     double lastOutput = -1;
@@ -168,8 +218,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     bool abandoned = false;
     double particleSteps = 0;
     const std::uint64_t startSteps = run.steps();
+    // A signal reaches the processes at different moments: they stop when any has one.
+    auto stopRequested = [&] { return comm.any(stop::requested() != 0); };
     try {
-        while (!reached(run.time(), scene.endTime) && !stop::requested()) {
+        while (!reached(run.time(), scene.endTime) && !stopRequested()) {
             // An end time on an output time (to round-off) steps to that output time exactly,
             // as a longer run does.
             const double next = nextOutputTime();
@@ -183,17 +235,26 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 abandoned = true;
                 break;
             }
-            particleSteps += double(storage.size());
-            checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
-                        fieldNames);
-            if (const std::string w = physical.check(storage, run.time());
-                !w.empty() && !opt.quiet) {
+            const std::int64_t particles = comm.sum(ownedParticles(storage, comm));
+            particleSteps += double(particles);
+            agreed(comm, [&] {
+                checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
+                            fieldNames);
+            });
+            if (const std::string w = physical.check(storage, run.time(), comm);
+                !w.empty() && !opt.quiet && root) {
                 progress.clearLine();
                 std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
             }
-            state.removed += removeOutflow(storage, scene);
-            emitters.emit(storage, run.time());
-            progress.update(run.time(), dt, storage.size(), run.steps());
+            const std::int64_t ownedBefore = ownedParticles(storage, comm);
+            const bool anyRemoved = comm.any(removeOutflow(storage, scene) > 0);
+            if (anyRemoved) {
+                state.removed +=
+                    std::uint64_t(comm.sum(ownedBefore - ownedParticles(storage, comm)));
+                run.particlesChanged();
+            }
+            if (emitters.emit(storage, run.time()) > 0) run.particlesChanged();
+            progress.update(run.time(), dt, Size(particles), run.steps());
             if (testSignal.signal && run.steps() == testSignal.step) std::raise(testSignal.signal);
             if (reached(run.time(), nextOutputTime())) output(), lastOutput = run.time();
             if (opt.checkpointEvery > 0 &&
@@ -203,7 +264,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 writeCheckpoint(fmt("checkpoint_%04.0f.chk", double(state.checkpointCount)));
             }
         }
-        if (stop::requested()) status = "interrupted";
+        if (stopRequested()) status = "interrupted";
         if (abandoned) {
             // The storage is part-way through the abandoned step: no output or checkpoint of it.
             message = std::string("stopped by ") + stop::signalName(stop::requested()) +
@@ -215,7 +276,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             std::fprintf(stderr, "%s: %s\n", opt.program.c_str(), message.c_str());
         } else {
             if (run.time() != lastOutput) output();
-            if (stop::requested()) writeCheckpoint("checkpoint_interrupted.chk");
+            if (status == "interrupted") writeCheckpoint("checkpoint_interrupted.chk");
         }
     } catch (const AppError& e) {
         // A plugin term that failed in a step stops the run as an instability does.
@@ -223,15 +284,35 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         status = e.code() == ExitCode::UNSTABLE ? "unstable" : "failed", message = e.what();
         failure = e.code();
     }
-    progress.finish(run.time(), run.lastDt(), storage.size(), run.steps());
+    const std::int64_t particles = comm.sum(ownedParticles(storage, comm));
+    progress.finish(run.time(), run.lastDt(), Size(particles), run.steps());
 
     state.emitted = emitters.emitted();
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
-    const EndOfRun end = outputs.finish(status == "completed");
-    nlohmann::json summary = summaryJson(scene, storage, setup, state, run.time(), run.steps(),
-                                         run.steps() - startSteps, wall, particleSteps, threads,
-                                         opt.backend, status, message, solver.meanNeighbours());
+    // The decomposition's figures, summed over the processes.
+    const std::int64_t haloParticles = comm.sum(decomposition.haloParticles());
+    const std::int64_t haloBytes = comm.sum(std::int64_t(decomposition.haloBytes()));
+    const auto exchanges = std::int64_t(decomposition.exchanges());
+    EndOfRun end;
+    nlohmann::json summary;
+    everyParticle(storage, [&](const sph::Storage<Dim>& all) {
+        onRoot(comm, [&] {
+            end = outputs->finish(status == "completed");
+            summary = summaryJson(scene, all, setup, state, run.time(), run.steps(),
+                                  run.steps() - startSteps, wall, particleSteps, threads,
+                                  opt.backend, status, message, solver.meanNeighbours());
+        });
+    });
+    summary["processes"] = comm.size();
+    summary["decomposition"] = {
+        {"load_imbalance", decomposition.imbalance()},
+        {"repartitions", decomposition.repartitions()},
+        {"halo_particles", haloParticles},
+        {"halo_bytes_per_exchange", exchanges > 0 ? double(haloBytes) / double(exchanges) : 0.0},
+        {"note",
+         "load_imbalance: the most loaded process's particles over the mean, less one, at the "
+         "last redistribution; halo figures summed over the processes, at the end"}};
     for (const auto& [t, f] : checkpoints)
         summary["checkpoints"].push_back({{"time", t}, {"file", f}});
     // The passes of an evaluation, each with its terms in the order they run.
@@ -243,14 +324,16 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     }
     std::vector<std::string> warnings = scene.warnings;
     warnings.insert(warnings.end(), physical.warnings().begin(), physical.warnings().end());
-    addEndOfRun(summary, end, warnings);
-    writeFileAtomically(outputs.path("summary.json"), summary.dump(2) + "\n");
+    onRoot(comm, [&] {
+        addEndOfRun(summary, end, warnings);
+        writeFileAtomically(outputs->path("summary.json"), summary.dump(2) + "\n");
+    });
     // Until here a first signal only sets the flag: the video and the summary are still made.
     stop::restoreDefaults();
 
     if (status == "unstable" || status == "failed")
         throw AppError(failure, message + " (last good output kept in " + dir + ")");
-    if (!opt.quiet) printRunReport(opt.program, outputs, scene, end, summary);
+    if (!opt.quiet && root) printRunReport(opt.program, *outputs, scene, end, summary);
     return status == "interrupted" ? int(ExitCode::INTERRUPTED) : 0;
 }
 

@@ -1,0 +1,370 @@
+// Domain decomposition over the processes of a run (parallel/communicator.hpp).
+//
+// Ownership: recursive coordinate bisection by particle count. The particles are cut across the
+// longest axis of their bounding box so that each side holds particles in proportion to its
+// processes, recursively, giving each process a box; a particle belongs to the process whose
+// box holds it. The boxes follow the particles: they are recomputed when the most loaded
+// process holds more than 10 % above the mean.
+//
+// Halos: a process holds, besides its own particles, a copy of every other particle within the
+// halo radius (the kernel's support radius times 1 + kHaloSkin) of its box, sent by the owner.
+// While no particle has moved more than half the skin since, every neighbour of an owned
+// particle is among them (triangle inequality). Copies are refreshed from their owners where the
+// solver asks (sph/decomposition.hpp); particles migrate to their new owners and the halos are
+// rebuilt before a step once a particle moved a quarter of the skin, or particles were added,
+// removed or reordered. A displacement beyond half the skin (a step longer than the skin can
+// cover) stops the run: neighbours could have been missed.
+//
+// Identity with one process: every storage is kept in the order of sph/particle_order.hpp, a
+// per-particle key, so each owned particle sees its neighbours in the single-process order and
+// its sums are bitwise the same; the reductions (time step, counts) are exact.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "parallel/particle_records.hpp"
+#include "sph/decomposition.hpp"
+#include "sph/particle_order.hpp"
+
+namespace num::parallel {
+
+template <int Dim>
+class DomainDecomposition final : public sph::IDecomposition<Dim> {
+  public:
+    using Vec = sph::Vector<Dim>;
+    using Size = sph::Size;
+    /// The halo's width beyond the support radius, as a fraction of it.
+    static constexpr double kHaloSkin = 0.4;
+    /// Boxes are recomputed when the most loaded process exceeds the mean by this fraction.
+    static constexpr double kImbalanceLimit = 0.10;
+
+    DomainDecomposition(const Communicator& comm, const Domain<Dim>& domain, double radius)
+        : comm_(comm), domain_(domain), radius_(radius), haloRadius_(radius * (1 + kHaloSkin)) {}
+
+    /// Keeps this process's share of `all`, which every process holds alike (the initial state
+    /// or a checkpoint), and its halo. The particles' OWNER is added where missing.
+    void distribute(sph::Storage<Dim>& all) {
+        if (!all.has(sph::QuantityId::OWNER))
+            all.template insert<int>(sph::QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
+        const auto x = all.template getValue<Vec>(sph::QuantityId::POSITION);
+        std::vector<Vec> points(x.begin(), x.end());
+        for (Vec& p : points) p = domain_.wrap(p);
+        partition(points);
+        auto owner = all.template getValue<int>(sph::QuantityId::OWNER);
+        std::vector<Size> mine;
+        for (Size i = 0; i < all.size(); ++i)
+            if (boxOwner(domain_.wrap(x[i])) == comm_.rank()) mine.push_back(i);
+        for (Size i : mine) owner[i] = comm_.rank();
+        all.gather(mine);
+        sph::sortByOrderKey(all);
+        buildHalo(all);
+    }
+
+    /// Every process's own particles on the root, in the single-process order (OWNER set to 0,
+    /// as one process has it); an empty storage elsewhere. Particles not yet assigned (added
+    /// since the last step, alike on every process) are taken from the root.
+    sph::Storage<Dim> gatherToRoot(const sph::Storage<Dim>& s) const {
+        const auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
+        std::vector<Size> mine;
+        for (Size i = 0; i < s.size(); ++i)
+            if (owner[i] == comm_.rank() || (owner[i] < 0 && comm_.isRoot())) mine.push_back(i);
+        Bytes packed;
+        packParticles(s, mine, packed);
+        const std::vector<Bytes> all = comm_.gatherToRoot(packed);
+        sph::Storage<Dim> out = s.emptyCopy();
+        if (!comm_.isRoot()) return out;
+        for (const Bytes& b : all) appendParticles(out, b);
+        auto o = out.template getValue<int>(sph::QuantityId::OWNER);
+        std::fill(o.begin(), o.end(), 0);
+        sph::sortByOrderKey(out);
+        return out;
+    }
+
+    void exchangeHalo(sph::Storage<Dim>& s, QuantityIds only = {}) override {
+        if (comm_.size() == 1) return;
+        checkDisplacement(s);
+        std::vector<Bytes> out(comm_.size());
+        for (int r = 0; r < comm_.size(); ++r) packParticles(s, sendTo_[r], out[r], only);
+        const std::vector<Bytes> in = comm_.exchange(out);
+        for (int r = 0; r < comm_.size(); ++r) {
+            unpackParticles(s, in[r].data(), in[r].size(), receiveAt_[r], only);
+            haloBytes_ += in[r].size();
+        }
+        ++exchanges_;
+    }
+
+    std::span<const char> owned() const override { return owned_; }
+
+    void combine(sph::TimeStepLimits& limits) const override {
+        if (comm_.size() == 1) return;
+        const double dt = limits.dt();
+        const std::string& name = limits.criterion();
+        Bytes mine(sizeof dt + name.size());
+        std::memcpy(mine.data(), &dt, sizeof dt);
+        std::copy(name.begin(), name.end(), mine.begin() + sizeof dt);
+        sph::TimeStepLimits all;
+        for (const Bytes& b : comm_.allGather(mine)) {
+            double v;
+            std::memcpy(&v, b.data(), sizeof v);
+            all.offer(std::string(b.begin() + sizeof v, b.end()), v);
+        }
+        limits = all;
+    }
+
+    std::int64_t sum(std::int64_t local) const override { return comm_.sum(local); }
+
+    bool beforeStep(sph::Storage<Dim>& s, bool reorder, bool particlesChanged) override {
+        if (comm_.size() == 1) {
+            auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
+            std::fill(owner.begin(), owner.end(), 0);
+            owned_.assign(s.size(), 1);
+            if (reorder) sph::reorderByKey(s, domain_, radius_);
+            return reorder;
+        }
+        if (comm_.any(tooFar_))
+            throw std::logic_error(
+                "domain decomposition: a particle moved more than half the halo skin within one "
+                "step, so neighbours across processes may have been missed; lower time.cfl");
+        double moved = 0;
+        if (!particlesChanged) moved = comm_.maximum(maxDisplacement(s));
+        if (!reorder && !particlesChanged && moved <= 0.25 * (haloRadius_ - radius_)) return false;
+        if (reorder) {
+            const sph::OrderGrid<Dim> grid(domain_, radius_);
+            const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+            auto key = s.template getValue<int>(sph::QuantityId::ORDER_KEY);
+            for (Size i = 0; i < s.size(); ++i) key[i] = grid.key(x[i]);
+        }
+        redistribute(s);
+        return true;
+    }
+
+    /// The most loaded process's particles over the mean, less one (0: perfect balance), at the
+    /// last redistribution.
+    double imbalance() const { return imbalance_; }
+    /// How often the boxes were recomputed.
+    std::size_t repartitions() const { return repartitions_; }
+    /// Bytes received in halo exchanges by this process, and the number of exchanges.
+    std::uint64_t haloBytes() const { return haloBytes_; }
+    std::uint64_t exchanges() const { return exchanges_; }
+    /// Halo copies this process holds now.
+    Size haloParticles() const { return Size(std::count(owned_.begin(), owned_.end(), 0)); }
+    double haloRadius() const { return haloRadius_; }
+
+  private:
+    struct Box {
+        Vec lo, hi;
+    };
+
+    /// The bounds a box starts from: the domain on periodic axes, unbounded on the others.
+    Box wholeSpace() const {
+        Box b;
+        for (int k = 0; k < Dim; ++k) {
+            const double inf = std::numeric_limits<double>::infinity();
+            b.lo[k] = domain_.periodic[k] ? domain_.min[k] : -inf;
+            b.hi[k] = domain_.periodic[k] ? domain_.max[k] : inf;
+        }
+        return b;
+    }
+
+    /// Recursive coordinate bisection of `points` (the same on every process) into one box per
+    /// process.
+    void partition(std::vector<Vec> points) {
+        boxes_.assign(comm_.size(), wholeSpace());
+        bisect(points.begin(), points.end(), 0, comm_.size(), wholeSpace());
+        ++repartitions_;
+    }
+
+    template <class It>
+    void bisect(It begin, It end, int firstRank, int ranks, Box box) {
+        if (ranks == 1) {
+            boxes_[firstRank] = box;
+            return;
+        }
+        const auto n = std::size_t(end - begin);
+        int axis = 0;
+        if (n > 0) {
+            Vec lo = *begin, hi = *begin;
+            for (It p = begin; p != end; ++p)
+                for (int k = 0; k < Dim; ++k)
+                    lo[k] = std::min(lo[k], (*p)[k]), hi[k] = std::max(hi[k], (*p)[k]);
+            for (int k = 1; k < Dim; ++k)
+                if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+        }
+        const int leftRanks = ranks / 2;
+        const std::size_t target = n * std::size_t(leftRanks) / std::size_t(ranks);
+        double cut = 0;
+        if (n == 0) {
+            const bool bounded = std::isfinite(box.lo[axis]) && std::isfinite(box.hi[axis]);
+            cut = bounded                       ? 0.5 * (box.lo[axis] + box.hi[axis])
+                  : std::isfinite(box.lo[axis]) ? box.lo[axis]
+                  : std::isfinite(box.hi[axis]) ? box.hi[axis]
+                                                : 0.0;
+        } else {
+            std::nth_element(begin, begin + std::ptrdiff_t(std::min(target, n - 1)), end,
+                             [axis](const Vec& a, const Vec& b) { return a[axis] < b[axis]; });
+            cut = (*(begin + std::ptrdiff_t(std::min(target, n - 1))))[axis];
+        }
+        const It middle = std::partition(begin, end, [&](const Vec& p) { return p[axis] < cut; });
+        Box left = box, right = box;
+        left.hi[axis] = cut, right.lo[axis] = cut;
+        bisect(begin, middle, firstRank, leftRanks, left);
+        bisect(middle, end, firstRank + leftRanks, ranks - leftRanks, right);
+    }
+
+    /// The process whose box holds x (wrapped on periodic axes).
+    int boxOwner(const Vec& x) const {
+        for (int r = 0; r < int(boxes_.size()); ++r) {
+            bool inside = true;
+            for (int k = 0; k < Dim && inside; ++k)
+                inside = x[k] >= boxes_[r].lo[k] && x[k] < boxes_[r].hi[k];
+            if (inside) return r;
+        }
+        // On a periodic axis a wrapped coordinate lies in [min, max); elsewhere the boxes cover
+        // everything: only a non-finite position lands here, and the health check reports it.
+        return comm_.rank();
+    }
+
+    /// The distance from x to box b, through the periodic images.
+    double distance(const Vec& x, const Box& b) const {
+        double d2 = 0;
+        for (int k = 0; k < Dim; ++k) {
+            auto gap = [&](double c) {
+                return c < b.lo[k] ? b.lo[k] - c : c > b.hi[k] ? c - b.hi[k] : 0.0;
+            };
+            double g = gap(x[k]);
+            if (domain_.periodic[k])
+                g = std::min({g, gap(x[k] - domain_.length(k)), gap(x[k] + domain_.length(k))});
+            d2 += g * g;
+        }
+        return std::sqrt(d2);
+    }
+
+    /// Drops the halo, assigns particles added since (every process holds them alike), moves
+    /// particles to the owners of the boxes they are in (recomputed first if the load is
+    /// unbalanced), sorts and rebuilds the halo.
+    void redistribute(sph::Storage<Dim>& s) {
+        const int me = comm_.rank();
+        {
+            const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+            const auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
+            std::vector<Size> keep;
+            for (Size i = 0; i < s.size(); ++i)
+                if (owner[i] == me || (owner[i] < 0 && boxOwner(domain_.wrap(x[i])) == me))
+                    keep.push_back(i);
+            s.gather(keep);
+        }
+        const std::int64_t total = comm_.sum(s.size());
+        const double mean = double(total) / comm_.size();
+        imbalance_ = mean > 0 ? comm_.maximum(double(s.size())) / mean - 1 : 0;
+        if (imbalance_ > kImbalanceLimit) {
+            const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+            Bytes mine(x.size() * sizeof(Vec));
+            std::memcpy(mine.data(), x.data(), mine.size());
+            std::vector<Vec> points;
+            for (const Bytes& b : comm_.allGather(mine)) {
+                const std::size_t at = points.size();
+                points.resize(at + b.size() / sizeof(Vec));
+                std::memcpy(static_cast<void*>(points.data() + at), b.data(), b.size());
+            }
+            for (Vec& p : points) p = domain_.wrap(p);
+            partition(std::move(points));
+        }
+        // Migration to the owners of the boxes.
+        std::vector<std::vector<Size>> leaving(comm_.size());
+        std::vector<Size> staying;
+        {
+            const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+            for (Size i = 0; i < s.size(); ++i) {
+                const int r = boxOwner(domain_.wrap(x[i]));
+                (r == me ? staying : leaving[r]).push_back(i);
+            }
+        }
+        std::vector<Bytes> out(comm_.size());
+        for (int r = 0; r < comm_.size(); ++r) packParticles(s, leaving[r], out[r]);
+        const std::vector<Bytes> in = comm_.exchange(out);
+        s.gather(staying);
+        for (const Bytes& b : in) appendParticles(s, b);
+        auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
+        std::fill(owner.begin(), owner.end(), me);
+        sph::sortByOrderKey(s);
+        buildHalo(s);
+        const std::int64_t after =
+            comm_.sum(std::int64_t(std::count(owned_.begin(), owned_.end(), 1)));
+        imbalance_ = after > 0
+                         ? comm_.maximum(double(std::count(owned_.begin(), owned_.end(), 1))) /
+                                   (double(after) / comm_.size()) -
+                               1
+                         : 0;
+    }
+
+    /// s holds the owned particles, sorted: sends each to the processes whose boxes are within
+    /// the halo radius, appends what the others send, sorts, and records who sends what where.
+    void buildHalo(sph::Storage<Dim>& s) {
+        const int me = comm_.rank(), ranks = comm_.size();
+        const Size owned = s.size();
+        sendTo_.assign(ranks, {});
+        {
+            const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+            for (Size i = 0; i < owned; ++i)
+                for (int r = 0; r < ranks; ++r)
+                    if (r != me && distance(domain_.wrap(x[i]), boxes_[r]) < haloRadius_)
+                        sendTo_[r].push_back(i);
+        }
+        std::vector<Bytes> out(ranks);
+        for (int r = 0; r < ranks; ++r) packParticles(s, sendTo_[r], out[r]);
+        const std::vector<Bytes> in = comm_.exchange(out);
+        receiveAt_.assign(ranks, {});
+        for (int r = 0; r < ranks; ++r) {
+            const Size first = appendParticles(s, in[r]);
+            for (Size i = first; i < s.size(); ++i) receiveAt_[r].push_back(i);
+        }
+        // Sorting moves every particle; the lists follow it.
+        const std::vector<Size> order = sph::sortByOrderKey(s);
+        std::vector<Size> newIndex(order.size());
+        for (Size k = 0; k < order.size(); ++k) newIndex[order[k]] = k;
+        for (auto* lists : {&sendTo_, &receiveAt_})
+            for (auto& list : *lists)
+                for (Size& i : list) i = newIndex[i];
+        const auto ownerOf = s.template getValue<int>(sph::QuantityId::OWNER);
+        owned_.resize(s.size());
+        for (Size i = 0; i < s.size(); ++i) owned_[i] = char(ownerOf[i] == me);
+        const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+        reference_.assign(x.begin(), x.end());
+        tooFar_ = false;
+    }
+
+    /// The largest displacement of a particle of s since the halo was built.
+    double maxDisplacement(const sph::Storage<Dim>& s) const {
+        const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+        if (x.size() != reference_.size()) return std::numeric_limits<double>::infinity();
+        double d2 = 0;
+        for (Size i = 0; i < x.size(); ++i)
+            d2 = std::max(d2, normSqr(domain_.minimumImage(x[i] - reference_[i])));
+        return std::sqrt(d2);
+    }
+
+    void checkDisplacement(const sph::Storage<Dim>& s) {
+        tooFar_ = tooFar_ || !(maxDisplacement(s) < 0.5 * (haloRadius_ - radius_));
+    }
+
+    const Communicator& comm_;
+    Domain<Dim> domain_;
+    double radius_, haloRadius_;
+    std::vector<Box> boxes_;
+    std::vector<std::vector<Size>> sendTo_, receiveAt_;  // by process
+    std::vector<char> owned_;
+    std::vector<Vec> reference_;  // positions when the halo was built
+    bool tooFar_ = false;
+    double imbalance_ = 0;
+    std::size_t repartitions_ = 0;
+    std::uint64_t haloBytes_ = 0, exchanges_ = 0;
+};
+
+}  // namespace num::parallel

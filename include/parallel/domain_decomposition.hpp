@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -132,9 +133,16 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
             throw std::logic_error(
                 "domain decomposition: a particle moved more than half the halo skin within one "
                 "step, so neighbours across processes may have been missed; lower time.cfl");
+        bool changed = false;
+        // Particles only added (emitters): each process keeps its own and its halo's, in place.
+        if (particlesChanged && !comm_.any(!onlyAdded(s))) {
+            adoptAdded(s);
+            particlesChanged = false, changed = true;
+        }
         double moved = 0;
         if (!particlesChanged) moved = comm_.maximum(maxDisplacement(s));
-        if (!reorder && !particlesChanged && moved <= 0.25 * (haloRadius_ - radius_)) return false;
+        if (!reorder && !particlesChanged && moved <= 0.25 * (haloRadius_ - radius_))
+            return changed;
         if (reorder) {
             const sph::OrderGrid<Dim> grid(domain_, radius_);
             const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
@@ -337,7 +345,46 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         for (Size i = 0; i < s.size(); ++i) owned_[i] = char(ownerOf[i] == me);
         const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
         reference_.assign(x.begin(), x.end());
+        const auto id = s.template getValue<int>(sph::QuantityId::PARTICLE_ID);
+        ids_.assign(id.begin(), id.end());
         tooFar_ = false;
+    }
+
+    /// Whether s holds the particles of the last halo build, in order, and new ones after them.
+    bool onlyAdded(const sph::Storage<Dim>& s) const {
+        const auto id = s.template getValue<int>(sph::QuantityId::PARTICLE_ID);
+        return id.size() >= ids_.size() && std::equal(ids_.begin(), ids_.end(), id.begin());
+    }
+
+    /// The particles after the last halo build's (every process holds them alike; last in the
+    /// particle order already): keeps those of its box, sent to the processes whose boxes are
+    /// within the halo radius, and the copies of others' within the halo radius of its own box.
+    void adoptAdded(sph::Storage<Dim>& s) {
+        const int me = comm_.rank();
+        const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+        auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
+        std::vector<Size> keep(ids_.size());
+        std::iota(keep.begin(), keep.end(), Size(0));
+        for (Size i = Size(ids_.size()); i < s.size(); ++i) {
+            const Vec p = domain_.wrap(x[i]);
+            const int r = boxOwner(p);
+            const Size at = Size(keep.size());
+            if (r == me) {
+                for (int q = 0; q < comm_.size(); ++q)
+                    if (q != me && distance(p, boxes_[q]) < haloRadius_) sendTo_[q].push_back(at);
+            } else if (distance(p, boxes_[me]) < haloRadius_) {
+                receiveAt_[r].push_back(at);
+            } else {
+                continue;
+            }
+            owner[i] = r;
+            keep.push_back(i);
+            owned_.push_back(char(r == me));
+            reference_.push_back(x[i]);
+        }
+        s.gather(keep);
+        const auto id = s.template getValue<int>(sph::QuantityId::PARTICLE_ID);
+        ids_.assign(id.begin(), id.end());
     }
 
     /// The largest displacement of a particle of s since the halo was built.
@@ -361,6 +408,7 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
     std::vector<std::vector<Size>> sendTo_, receiveAt_;  // by process
     std::vector<char> owned_;
     std::vector<Vec> reference_;  // positions when the halo was built
+    std::vector<int> ids_;        // the particles' ids then
     bool tooFar_ = false;
     double imbalance_ = 0;
     std::size_t repartitions_ = 0;

@@ -74,6 +74,13 @@ class PhysicalCheck {
         return warning;
     }
 
+    /// The same for a run of one process.
+    template <int Dim>
+    std::string check(const sph::Storage<Dim>& s, double t) {
+        const parallel::Communicator one;
+        return check(s, t, one);
+    }
+
     const std::vector<std::string>& warnings() const { return warnings_; }
 
   private:

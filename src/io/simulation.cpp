@@ -142,19 +142,31 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         const sph::Storage<Dim> all = decomposition.gatherToRoot(s);
         return use(all);
     };
+    // Emitted particles come last in the particle order, with ids after the initial particles'
+    // (the same on every process: each emits every particle, and keeps its own).
+    auto emit = [&, firstId = std::size_t(initial.size())](double t) {
+        const std::size_t before = emitters.emitted(), added = emitters.emit(storage, t);
+        auto id = storage.template getValue<int>(QuantityId::PARTICLE_ID);
+        auto key = storage.template getValue<int>(QuantityId::ORDER_KEY);
+        for (std::size_t k = 0; k < added; ++k) {
+            const std::size_t i = storage.size() - added + k;
+            id[i] = int(firstId + before + k), key[i] = sph::kNewParticleKey;
+        }
+        return added;
+    };
     if (opt.restart) {
         // The checkpoint holds the derivatives at its time; terms keep no time of their own (a
         // step's post-step phase gets its dt from Run), so the run continues as it would have.
         decomposition.distribute(storage);
-        solver.setDecomposition(&decomposition);
+        if (comm.size() > 1) solver.setDecomposition(&decomposition);
         run.setTime(state.time, Size(state.steps));
         run.markPrimed(true);
         if (root) outputs->resume(state.time, state.series);
     } else {
         onRoot(comm, [&] { outputs->start(); });
-        emitters.emit(storage, 0.0);
+        emit(0.0);
         decomposition.distribute(storage);
-        solver.setDecomposition(&decomposition);
+        if (comm.size() > 1) solver.setDecomposition(&decomposition);
         run.prime();
         everyParticle(storage, [&](const sph::Storage<Dim>& all) {
             if (root) state.start = conservationVector(all, setup.gravity(1e300));
@@ -253,7 +265,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                     std::uint64_t(comm.sum(ownedBefore - ownedParticles(storage, comm)));
                 run.particlesChanged();
             }
-            if (emitters.emit(storage, run.time()) > 0) run.particlesChanged();
+            if (emit(run.time()) > 0) run.particlesChanged();
             progress.update(run.time(), dt, Size(particles), run.steps());
             if (testSignal.signal && run.steps() == testSignal.step) std::raise(testSignal.signal);
             if (reached(run.time(), nextOutputTime())) output(), lastOutput = run.time();

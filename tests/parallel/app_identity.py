@@ -8,8 +8,9 @@
   app_identity.py restart MPIEXEC FLAGS APP SCENE [ARGS...]
       a run on 4 processes writes a checkpoint half-way; restarted on 2 and on 1 processes it
       ends with outputs byte for byte those of the uninterrupted single-process run;
-  app_identity.py bad-scene MPIEXEC FLAGS APP
-      a malformed scene under 4 processes: exit code 4 (JSON syntax) and one error line.
+  app_identity.py errors MPIEXEC FLAGS APP SCENE
+      under 4 processes, a malformed scene (exit code 4), an unwritable output directory (7) and
+      a run that goes unstable (9, summary.json "unstable"): each one error line.
 
 FLAGS is one argument, split at spaces (e.g. "--oversubscribe --allow-run-as-root").
 """
@@ -95,17 +96,32 @@ def restart(mpiexec, flags, app, scene_args, work):
     return failures
 
 
-def bad_scene(mpiexec, flags, app, work):
-    scene = f"{work}/bad.json"
-    with open(scene, "w") as f:
+def errors(mpiexec, flags, app, scene, work):
+    """Under 4 processes: each error ends the run with its exit code and one line."""
+    bad = f"{work}/bad.json"
+    with open(bad, "w") as f:
         f.write('{"dimension": 2, "particles": {"spacing": 0.02,}}\n')
-    done = run(mpi(mpiexec, flags, 4, app) + [scene, "-q", "--out", f"{work}/bad"], expect=None)
-    ours = [line for line in done.stderr.splitlines() if line.startswith(os.path.basename(app))]
+    blocker = f"{work}/a_file"
+    open(blocker, "w").close()
+    quick = ["--set", "particles.spacing=0.02", "--threads", "1", "-q",
+             "--set", "output.images=false"]
+    cases = [("bad scene", [bad], 4),
+             ("unwritable output", [scene] + quick + ["--out", f"{blocker}/out"], 7),
+             # A sound speed of 2 m/s: the falling water passes it at t = 0.15 s.
+             ("unstable run", [scene] + quick + ["--set", "materials.water.sound_speed=2",
+                                                 "--end-time", "0.5", "--out", f"{work}/u"], 9)]
     failures = []
-    if done.returncode != 4:
-        failures.append(f"bad scene: exit code {done.returncode}, expected 4")
-    if len(ours) != 1:
-        failures.append(f"bad scene: {len(ours)} error lines, expected 1:\n{done.stderr}")
+    for name, args, code in cases:
+        done = run(mpi(mpiexec, flags, 4, app) + args, expect=None)
+        ours = [line for line in done.stderr.splitlines()
+                if line.startswith(os.path.basename(app))]
+        if done.returncode != code:
+            failures.append(f"{name}: exit code {done.returncode}, expected {code}")
+        if len(ours) != 1:
+            failures.append(f"{name}: {len(ours)} error lines, expected 1:\n{done.stderr}")
+    with open(f"{work}/u/summary.json") as f:
+        if json.load(f)["status"] != "unstable":
+            failures.append("unstable run: summary.json does not say unstable")
     return failures
 
 
@@ -118,7 +134,7 @@ def main():
         elif mode == "restart":
             failures = restart(mpiexec, flags, app, sys.argv[5:], work)
         else:
-            failures = bad_scene(mpiexec, flags, app, work)
+            failures = errors(mpiexec, flags, app, sys.argv[5], work)
     for f in failures:
         print("FAIL:", f)
     print("PASS" if not failures else f"{len(failures)} failures")

@@ -12,6 +12,12 @@
 
 namespace num::io {
 
+/// An error one process met in the middle of a step, while the others wait for it in an
+/// exchange: the app reports it from that process and ends every process at once.
+struct LoneFailure : AppError {
+    explicit LoneFailure(const AppError& e) : AppError(e.code(), e.what()) {}
+};
+
 namespace detail {
 inline parallel::Bytes encode(const AppError& e) {
     const int code = int(e.code());

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <memory>
 
+#include "agreed_errors.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "io/simulation.hpp"
@@ -224,6 +225,8 @@ int runApp(int argc, char** argv, const AppInfo& info) {
             return 0;
         }
         return runSimulation<Dim>(doc, opt);
+    } catch (const LoneFailure& e) {
+        return alone(std::string("error: ") + e.what(), e.code());
     } catch (const AppError& e) {
         std::fflush(stdout);
         std::fprintf(stderr, "%s: error: %s\n", info.name.c_str(), e.what());

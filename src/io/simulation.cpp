@@ -246,6 +246,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             } catch (const sph::EvaluationAbandoned&) {
                 abandoned = true;
                 break;
+            } catch (const AppError& e) {
+                // A plugin's term that failed on this process alone, mid-step.
+                if (comm.size() > 1) throw LoneFailure(e);
+                throw;
             }
             const std::int64_t particles = comm.sum(ownedParticles(storage, comm));
             particleSteps += double(particles);
@@ -290,6 +294,8 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             if (run.time() != lastOutput) output();
             if (status == "interrupted") writeCheckpoint("checkpoint_interrupted.chk");
         }
+    } catch (const LoneFailure&) {
+        throw;  // the other processes wait mid-step: no summary, every process ends at once
     } catch (const AppError& e) {
         // A plugin term that failed in a step stops the run as an instability does.
         if (e.code() != ExitCode::UNSTABLE && e.code() != ExitCode::PLUGIN) throw;
@@ -322,6 +328,8 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         {"repartitions", decomposition.repartitions()},
         {"halo_particles", haloParticles},
         {"halo_bytes_per_exchange", exchanges > 0 ? double(haloBytes) / double(exchanges) : 0.0},
+        {"halo_bytes_per_step",
+         run.steps() > startSteps ? double(haloBytes) / double(run.steps() - startSteps) : 0.0},
         {"note",
          "load_imbalance: the most loaded process's particles over the mean, less one, at the "
          "last redistribution; halo figures summed over the processes, at the end"}};

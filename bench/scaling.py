@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Processes against threads, halo traffic and load balance of the apps (docs/scaling.md).
 
-  bench/scaling.py [BUILD_DIR] [REPEATS]        defaults: build/release 3
+  bench/scaling.py [BUILD_DIR] [REPEATS] [PARTS]   defaults: build/release 3 scaling,halo,balance
 
 1. Strong scaling, whole processes timed start to exit: the 2D dam break of
    bench/pysph_dam_break_2d.json (20,000 fluid particles, to t = 0.02 s) and the 3D default
-   scenes/hot_cold_exchange_3d.json (31,232 fluid particles, to t = 0.02 s), each as
+   scenes/hot_cold_exchange_3d.json (31,232 fluid particles, to t = 0.02 s) and the 3D dam
+   break of scenes/dam_break_3d.json at a spacing of 2 cm (to t = 0.01 s), each as
    1 process x 1 thread, 1 process x 2 threads and 2 processes x 1 thread (mpiexec), run in
    turn (A B C A B C ...) so that a change of machine load hits all three; medians and their
    ratios to 1 x 1.
@@ -28,6 +29,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build/release"
 REPEATS = int(sys.argv[2]) if len(sys.argv) > 2 else 3
+PARTS = sys.argv[3].split(",") if len(sys.argv) > 3 else ["scaling", "halo", "balance"]
 APP2 = os.path.join(ROOT, BUILD, "apps/fluid_sim/fluid_sim")
 APP3 = os.path.join(ROOT, BUILD, "apps/fluid_sim_3d/fluid_sim_3d")
 MPIEXEC = shutil.which("mpiexec") or "mpiexec"
@@ -60,7 +62,10 @@ def strong_scaling(work):
     cases = [("2D dam break, 20,000 fluid", APP2,
               [os.path.join(ROOT, "bench/pysph_dam_break_2d.json"), "--end-time", "0.02"]),
              ("3D hot/cold exchange, 31,232 fluid", APP3,
-              [os.path.join(ROOT, "scenes/hot_cold_exchange_3d.json"), "--end-time", "0.02"])]
+              [os.path.join(ROOT, "scenes/hot_cold_exchange_3d.json"), "--end-time", "0.02"]),
+             ("3D dam break, 27,000 fluid", APP3,
+              [os.path.join(ROOT, "scenes/dam_break_3d.json"), "--set", "particles.spacing=0.02",
+               "--end-time", "0.01"])]
     layouts = [(1, 1), (1, 2), (2, 1)]
     print("## Strong scaling (whole process, seconds; medians of", REPEATS, "alternating runs)")
     print(f"machine: {machine()}")
@@ -81,7 +86,7 @@ def strong_scaling(work):
 
 def halo_traffic(work):
     print("\n## Halo traffic against particle count (2D dam break, t = 0.0005 s)")
-    print("processes  spacing  particles  halo copies  bytes per exchange")
+    print("processes  spacing  particles  halo copies  bytes per exchange  bytes per step")
     for processes in (2, 4):
         for spacing in ("0.02", "0.01", "0.005"):
             _, s = run(APP2, [os.path.join(ROOT, "bench/pysph_dam_break_2d.json"),
@@ -89,7 +94,7 @@ def halo_traffic(work):
                        processes, 1, os.path.join(work, "h"))
             d = s["decomposition"]
             print(f"{processes:9d}  {spacing:>7}  {s['particles']:9d}  {d['halo_particles']:11d}"
-                  f"  {d['halo_bytes_per_exchange']:18.0f}")
+                  f"  {d['halo_bytes_per_exchange']:18.0f}  {d['halo_bytes_per_step']:14.0f}")
 
 
 def load_balance(work):
@@ -105,9 +110,12 @@ def load_balance(work):
 
 def main():
     with tempfile.TemporaryDirectory() as work:
-        strong_scaling(work)
-        halo_traffic(work)
-        load_balance(work)
+        if "scaling" in PARTS:
+            strong_scaling(work)
+        if "halo" in PARTS:
+            halo_traffic(work)
+        if "balance" in PARTS:
+            load_balance(work)
 
 
 if __name__ == "__main__":

@@ -1,10 +1,9 @@
 // Domain decomposition over the processes of a run (parallel/communicator.hpp).
 //
-// Ownership: recursive coordinate bisection by particle count. The particles are cut across the
-// longest axis of their bounding box so that each side holds particles in proportion to its
-// processes, recursively, giving each process a box; a particle belongs to the process whose
-// box holds it. The boxes follow the particles: they are recomputed when the most loaded
-// process holds more than 10 % above the mean.
+// Ownership: each process has a box (parallel/subdomains.hpp: recursive coordinate bisection by
+// particle count); a particle belongs to the process whose box holds it. The boxes follow the
+// particles: they are recomputed when the most loaded process holds more than 10 % above the
+// mean.
 //
 // Halos: a process holds, besides its own particles, a copy of every other particle within the
 // halo radius (the kernel's support radius times 1 + kHaloSkin) of its box, sent by the owner.
@@ -31,6 +30,7 @@
 #include <vector>
 
 #include "parallel/particle_records.hpp"
+#include "parallel/subdomains.hpp"
 #include "sph/decomposition.hpp"
 #include "sph/particle_order.hpp"
 
@@ -47,17 +47,19 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
     static constexpr double kImbalanceLimit = 0.10;
 
     DomainDecomposition(const Communicator& comm, const Domain<Dim>& domain, double radius)
-        : comm_(comm), domain_(domain), radius_(radius), haloRadius_(radius * (1 + kHaloSkin)) {}
+        : comm_(comm),
+          domain_(domain),
+          radius_(radius),
+          haloRadius_(radius * (1 + kHaloSkin)),
+          boxes_(domain) {}
 
     /// Keeps this process's share of `all`, which every process holds alike (the initial state
     /// or a checkpoint), and its halo. The particles' OWNER is added where missing.
     void distribute(sph::Storage<Dim>& all) {
         if (!all.has(sph::QuantityId::OWNER))
             all.template insert<int>(sph::QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
+        partition(loadPoints(all));
         const auto x = all.template getValue<Vec>(sph::QuantityId::POSITION);
-        std::vector<Vec> points(x.begin(), x.end());
-        for (Vec& p : points) p = domain_.wrap(p);
-        partition(points);
         auto owner = all.template getValue<int>(sph::QuantityId::OWNER);
         std::vector<Size> mine;
         for (Size i = 0; i < all.size(); ++i)
@@ -166,92 +168,17 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
     double haloRadius() const { return haloRadius_; }
 
   private:
-    struct Box {
-        Vec lo, hi;
-    };
-
-    /// The bounds a box starts from: the domain on periodic axes, unbounded on the others.
-    Box wholeSpace() const {
-        Box b;
-        for (int k = 0; k < Dim; ++k) {
-            const double inf = std::numeric_limits<double>::infinity();
-            b.lo[k] = domain_.periodic[k] ? domain_.min[k] : -inf;
-            b.hi[k] = domain_.periodic[k] ? domain_.max[k] : inf;
-        }
-        return b;
-    }
-
-    /// Recursive coordinate bisection of `points` (the same on every process) into one box per
-    /// process.
-    void partition(std::vector<Vec> points) {
-        boxes_.assign(comm_.size(), wholeSpace());
-        bisect(points.begin(), points.end(), 0, comm_.size(), wholeSpace());
-        ++repartitions_;
-    }
-
-    template <class It>
-    void bisect(It begin, It end, int firstRank, int ranks, Box box) {
-        if (ranks == 1) {
-            boxes_[firstRank] = box;
-            return;
-        }
-        const auto n = std::size_t(end - begin);
-        int axis = 0;
-        if (n > 0) {
-            Vec lo = *begin, hi = *begin;
-            for (It p = begin; p != end; ++p)
-                for (int k = 0; k < Dim; ++k)
-                    lo[k] = std::min(lo[k], (*p)[k]), hi[k] = std::max(hi[k], (*p)[k]);
-            for (int k = 1; k < Dim; ++k)
-                if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-        }
-        const int leftRanks = ranks / 2;
-        const std::size_t target = n * std::size_t(leftRanks) / std::size_t(ranks);
-        double cut = 0;
-        if (n == 0) {
-            const bool bounded = std::isfinite(box.lo[axis]) && std::isfinite(box.hi[axis]);
-            cut = bounded                       ? 0.5 * (box.lo[axis] + box.hi[axis])
-                  : std::isfinite(box.lo[axis]) ? box.lo[axis]
-                  : std::isfinite(box.hi[axis]) ? box.hi[axis]
-                                                : 0.0;
-        } else {
-            std::nth_element(begin, begin + std::ptrdiff_t(std::min(target, n - 1)), end,
-                             [axis](const Vec& a, const Vec& b) { return a[axis] < b[axis]; });
-            cut = (*(begin + std::ptrdiff_t(std::min(target, n - 1))))[axis];
-        }
-        const It middle = std::partition(begin, end, [&](const Vec& p) { return p[axis] < cut; });
-        Box left = box, right = box;
-        left.hi[axis] = cut, right.lo[axis] = cut;
-        bisect(begin, middle, firstRank, leftRanks, left);
-        bisect(middle, end, firstRank + leftRanks, ranks - leftRanks, right);
-    }
-
-    /// The process whose box holds x (wrapped on periodic axes).
+    /// The process whose box holds x (wrapped on periodic axes); this one for a position no box
+    /// holds (not finite: the health check reports it).
     int boxOwner(const Vec& x) const {
-        for (int r = 0; r < int(boxes_.size()); ++r) {
-            bool inside = true;
-            for (int k = 0; k < Dim && inside; ++k)
-                inside = x[k] >= boxes_[r].lo[k] && x[k] < boxes_[r].hi[k];
-            if (inside) return r;
-        }
-        // On a periodic axis a wrapped coordinate lies in [min, max); elsewhere the boxes cover
-        // everything: only a non-finite position lands here, and the health check reports it.
-        return comm_.rank();
+        const int r = boxes_.owner(x);
+        return r >= 0 ? r : comm_.rank();
     }
-
-    /// The distance from x to box b, through the periodic images.
-    double distance(const Vec& x, const Box& b) const {
-        double d2 = 0;
-        for (int k = 0; k < Dim; ++k) {
-            auto gap = [&](double c) {
-                return c < b.lo[k] ? b.lo[k] - c : c > b.hi[k] ? c - b.hi[k] : 0.0;
-            };
-            double g = gap(x[k]);
-            if (domain_.periodic[k])
-                g = std::min({g, gap(x[k] - domain_.length(k)), gap(x[k] + domain_.length(k))});
-            d2 += g * g;
-        }
-        return std::sqrt(d2);
+    /// Whether x lies within the halo radius of process r's box.
+    bool nearBox(const Vec& x, int r) const { return boxes_.distance(x, r) < haloRadius_; }
+    void partition(std::vector<Vec> points) {
+        boxes_.bisect(std::move(points), comm_.size());
+        ++repartitions_;
     }
 
     /// Drops the halo, assigns particles added since (every process holds them alike), moves
@@ -268,20 +195,16 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
                     keep.push_back(i);
             s.gather(keep);
         }
-        const std::int64_t total = comm_.sum(s.size());
-        const double mean = double(total) / comm_.size();
-        imbalance_ = mean > 0 ? comm_.maximum(double(s.size())) / mean - 1 : 0;
-        if (imbalance_ > kImbalanceLimit) {
-            const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
-            Bytes mine(x.size() * sizeof(Vec));
-            std::memcpy(mine.data(), x.data(), mine.size());
+        if (measureImbalance(s) > kImbalanceLimit) {
+            const std::vector<Vec> mine = loadPoints(s);
+            Bytes bytes(mine.size() * sizeof(Vec));
+            std::memcpy(bytes.data(), static_cast<const void*>(mine.data()), bytes.size());
             std::vector<Vec> points;
-            for (const Bytes& b : comm_.allGather(mine)) {
+            for (const Bytes& b : comm_.allGather(bytes)) {
                 const std::size_t at = points.size();
                 points.resize(at + b.size() / sizeof(Vec));
                 std::memcpy(static_cast<void*>(points.data() + at), b.data(), b.size());
             }
-            for (Vec& p : points) p = domain_.wrap(p);
             partition(std::move(points));
         }
         // Migration to the owners of the boxes.
@@ -302,14 +225,37 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
         std::fill(owner.begin(), owner.end(), me);
         sph::sortByOrderKey(s);
+        measureImbalance(s);  // its own particles only: before the halo joins
         buildHalo(s);
-        const std::int64_t after =
-            comm_.sum(std::int64_t(std::count(owned_.begin(), owned_.end(), 1)));
-        imbalance_ = after > 0
-                         ? comm_.maximum(double(std::count(owned_.begin(), owned_.end(), 1))) /
-                                   (double(after) / comm_.size()) -
-                               1
-                         : 0;
+    }
+
+    /// Whether a particle is part of the load the boxes balance: the fluid particles, whose
+    /// pair sums are most of a step's work (a wall particle only mirrors its fluid neighbours);
+    /// every particle of a storage without fluid.
+    static std::vector<char> carriesLoad(const sph::Storage<Dim>& s) {
+        std::vector<char> load(s.size(), 1);
+        if (!s.has(sph::QuantityId::KIND)) return load;
+        const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
+        if (std::find(kind.begin(), kind.end(), int(sph::ParticleKind::FLUID)) == kind.end())
+            return load;
+        for (Size i = 0; i < s.size(); ++i) load[i] = kind[i] == int(sph::ParticleKind::FLUID);
+        return load;
+    }
+    /// The wrapped positions of the particles of s that carry the load.
+    std::vector<Vec> loadPoints(const sph::Storage<Dim>& s) const {
+        const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
+        const std::vector<char> load = carriesLoad(s);
+        std::vector<Vec> points;
+        for (Size i = 0; i < s.size(); ++i)
+            if (load[i]) points.push_back(domain_.wrap(x[i]));
+        return points;
+    }
+    /// The imbalance of the load over the processes, each holding its particles in s.
+    double measureImbalance(const sph::Storage<Dim>& s) {
+        const std::vector<char> load = carriesLoad(s);
+        const auto mine = std::int64_t(std::count(load.begin(), load.end(), char(1)));
+        const double mean = double(comm_.sum(mine)) / comm_.size();
+        return imbalance_ = mean > 0 ? comm_.maximum(double(mine)) / mean - 1 : 0;
     }
 
     /// s holds the owned particles, sorted: sends each to the processes whose boxes are within
@@ -322,8 +268,7 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
             const auto x = s.template getValue<Vec>(sph::QuantityId::POSITION);
             for (Size i = 0; i < owned; ++i)
                 for (int r = 0; r < ranks; ++r)
-                    if (r != me && distance(domain_.wrap(x[i]), boxes_[r]) < haloRadius_)
-                        sendTo_[r].push_back(i);
+                    if (r != me && nearBox(domain_.wrap(x[i]), r)) sendTo_[r].push_back(i);
         }
         std::vector<Bytes> out(ranks);
         for (int r = 0; r < ranks; ++r) packParticles(s, sendTo_[r], out[r]);
@@ -371,8 +316,8 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
             const Size at = Size(keep.size());
             if (r == me) {
                 for (int q = 0; q < comm_.size(); ++q)
-                    if (q != me && distance(p, boxes_[q]) < haloRadius_) sendTo_[q].push_back(at);
-            } else if (distance(p, boxes_[me]) < haloRadius_) {
+                    if (q != me && nearBox(p, q)) sendTo_[q].push_back(at);
+            } else if (nearBox(p, me)) {
                 receiveAt_[r].push_back(at);
             } else {
                 continue;
@@ -404,7 +349,7 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
     const Communicator& comm_;
     Domain<Dim> domain_;
     double radius_, haloRadius_;
-    std::vector<Box> boxes_;
+    Subdomains<Dim> boxes_;
     std::vector<std::vector<Size>> sendTo_, receiveAt_;  // by process
     std::vector<char> owned_;
     std::vector<Vec> reference_;  // positions when the halo was built

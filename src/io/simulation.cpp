@@ -161,7 +161,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         if (comm.size() > 1) solver.setDecomposition(&decomposition);
         run.setTime(state.time, Size(state.steps));
         run.markPrimed(true);
-        if (root) outputs->resume(state.time, state.series);
+        onRoot(comm, [&] { outputs->resume(state.time, state.series); });
     } else {
         onRoot(comm, [&] { outputs->start(); });
         emit(0.0);

@@ -1,9 +1,9 @@
 // Domain decomposition over the processes of a run (parallel/communicator.hpp).
 //
-// Ownership: each process has a box (parallel/subdomains.hpp: recursive coordinate bisection by
-// particle count); a particle belongs to the process whose box holds it. The boxes follow the
-// particles: they are recomputed when the most loaded process holds more than 10 % above the
-// mean.
+// Ownership: each process has a box (parallel/subdomains.hpp: recursive coordinate bisection of
+// the fluid particles, whose pair sums are most of the work); a particle belongs to the process
+// whose box holds it. The boxes follow the fluid: they are recomputed when the most loaded
+// process holds more than 10 % above the mean.
 //
 // Halos: a process holds, besides its own particles, a copy of every other particle within the
 // halo radius (the kernel's support radius times 1 + kHaloSkin) of its box, sent by the owner.
@@ -155,8 +155,8 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         return true;
     }
 
-    /// The most loaded process's particles over the mean, less one (0: perfect balance), at the
-    /// last redistribution.
+    /// The most loaded process's fluid particles over the mean, less one (0: perfect balance),
+    /// at the last redistribution.
     double imbalance() const { return imbalance_; }
     /// How often the boxes were recomputed.
     std::size_t repartitions() const { return repartitions_; }

@@ -13,9 +13,9 @@
 // index, so results do not depend on the skin or on when the lists were built.
 //
 // Several processes (sph/decomposition.hpp, setDecomposition): the pair loops run over the
-// particles this process owns; halo copies are refreshed from their owners after the terms'
-// initialize, after each pass's finalize and after the post-step phase; the time-step limits
-// are combined over the processes.
+// particles this process owns; halo copies are refreshed from their owners after each term's
+// initialize (what it prepares), after all of them, after each pass's finalize and after the
+// post-step phase; the time-step limits are combined over the processes.
 //
 // Reproducibility: particles are split into blocks, each evaluated by one thread in particle
 // order with its own derivative objects. Symmetric mode: a fixed number of blocks (setting

@@ -331,8 +331,8 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         {"halo_bytes_per_step",
          run.steps() > startSteps ? double(haloBytes) / double(run.steps() - startSteps) : 0.0},
         {"note",
-         "load_imbalance: the most loaded process's particles over the mean, less one, at the "
-         "last redistribution; halo figures summed over the processes, at the end"}};
+         "load_imbalance: the most loaded process's fluid particles over the mean, less one, "
+         "at the last redistribution; halo figures summed over the processes, at the end"}};
     for (const auto& [t, f] : checkpoints)
         summary["checkpoints"].push_back({{"time", t}, {"file", f}});
     // The passes of an evaluation, each with its terms in the order they run.

@@ -138,46 +138,42 @@ bool Communicator::mpiAvailable() {
 #endif
 }
 
+#ifdef NUMERICS_HAVE_MPI
+namespace {
+/// The reduction `op` of every process's v.
+template <class T>
+T allReduce(T v, MPI_Datatype type, MPI_Op op) {
+    T r = v;
+    MPI_Allreduce(&v, &r, 1, type, op, MPI_COMM_WORLD);
+    return r;
+}
+}  // namespace
+#endif
+
 double Communicator::minimum(double v) const {
 #ifdef NUMERICS_HAVE_MPI
-    if (usesMpi_) {
-        double r = v;
-        MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
-        return r;
-    }
+    if (usesMpi_) return allReduce(v, MPI_DOUBLE, MPI_MIN);
 #endif
     return v;
 }
 
 double Communicator::maximum(double v) const {
 #ifdef NUMERICS_HAVE_MPI
-    if (usesMpi_) {
-        double r = v;
-        MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-        return r;
-    }
+    if (usesMpi_) return allReduce(v, MPI_DOUBLE, MPI_MAX);
 #endif
     return v;
 }
 
 std::int64_t Communicator::sum(std::int64_t v) const {
 #ifdef NUMERICS_HAVE_MPI
-    if (usesMpi_) {
-        std::int64_t r = v;
-        MPI_Allreduce(&v, &r, 1, MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
-        return r;
-    }
+    if (usesMpi_) return allReduce(v, MPI_INT64_T, MPI_SUM);
 #endif
     return v;
 }
 
 bool Communicator::any(bool v) const {
 #ifdef NUMERICS_HAVE_MPI
-    if (usesMpi_) {
-        int mine = v ? 1 : 0, r = 0;
-        MPI_Allreduce(&mine, &r, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
-        return r != 0;
-    }
+    if (usesMpi_) return allReduce(int(v), MPI_INT, MPI_LOR) != 0;
 #endif
     return v;
 }

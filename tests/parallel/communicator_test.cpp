@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "mpi_test_main.hpp"
 #include "parallel/communicator.hpp"
 
 using num::parallel::Bytes;
@@ -19,7 +20,7 @@ using num::parallel::Communicator;
 
 namespace {
 
-const Communicator* world = nullptr;
+using num::parallel::testing::world;
 
 /// The message from process `from` to process `to`: its size depends on both (empty for some
 /// pairs, among them every process to itself when its rank is even; 1 MiB from 1 to 0), its
@@ -144,12 +145,4 @@ TEST(Communicator, DefaultIsOneProcess) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    const Communicator communicator(argc, argv);
-    world = &communicator;
-    // Processes other than the root report failures only.
-    if (!communicator.isRoot()) GTEST_FLAG_SET(brief, true);
-    ::testing::InitGoogleTest(&argc, argv);
-    const bool failed = RUN_ALL_TESTS() != 0;
-    return communicator.any(failed) ? 1 : 0;
-}
+int main(int argc, char** argv) { return num::parallel::testing::runTests(argc, argv); }

@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "mpi_test_main.hpp"
 #include "parallel/domain_decomposition.hpp"
 #include "spatial/neighbour_list.hpp"
 
@@ -19,7 +20,7 @@ using num::parallel::Communicator;
 using num::sph::QuantityId;
 using num::sph::Size;
 
-const Communicator* world = nullptr;
+using num::parallel::testing::world;
 
 template <int Dim>
 struct Cloud {
@@ -143,11 +144,4 @@ TEST(HaloOracle, NeighboursOfEveryOwnedParticle3D) { checkDecomposition<3>(); }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    const Communicator communicator(argc, argv);
-    world = &communicator;
-    if (!communicator.isRoot()) GTEST_FLAG_SET(brief, true);
-    ::testing::InitGoogleTest(&argc, argv);
-    const bool failed = RUN_ALL_TESTS() != 0;
-    return communicator.any(failed) ? 1 : 0;
-}
+int main(int argc, char** argv) { return num::parallel::testing::runTests(argc, argv); }

@@ -82,6 +82,15 @@ std::vector<Bytes> split(const Bytes& all, const std::vector<int>& counts,
     return parts;
 }
 
+/// Every process's count of bytes as MPI counts and displacements; throws on every process alike
+/// when the whole does not fit an MPI count (each has every count).
+void countsOfAll(std::int64_t count, int processes, std::vector<int>& counts,
+                 std::vector<int>& displs, const char* call) {
+    std::vector<std::int64_t> all(static_cast<std::size_t>(processes));
+    MPI_Allgather(&count, 1, MPI_INT64_T, all.data(), 1, MPI_INT64_T, MPI_COMM_WORLD);
+    if (!displacements(all, counts, displs)) tooLarge(call);
+}
+
 bool mpiRunning() {
     int initialised = 0, finalised = 0;
     MPI_Initialized(&initialised);
@@ -208,11 +217,8 @@ std::vector<Bytes> Communicator::allGather(const Bytes& mine) const {
 #ifdef NUMERICS_HAVE_MPI
     if (usesMpi_) {
         const std::int64_t count = std::int64_t(mine.size());
-        std::vector<std::int64_t> counts(size_);
-        MPI_Allgather(&count, 1, MPI_INT64_T, counts.data(), 1, MPI_INT64_T, MPI_COMM_WORLD);
         std::vector<int> rc, rd;
-        // Every process has every count: all decide alike.
-        if (!displacements(counts, rc, rd)) tooLarge("allGather");
+        countsOfAll(count, size_, rc, rd, "allGather");
         Bytes recv(std::size_t(rd.back()) + std::size_t(rc.back()));
         MPI_Allgatherv(mine.data(), int(count), MPI_BYTE, recv.data(), rc.data(), rd.data(),
                        MPI_BYTE, MPI_COMM_WORLD);
@@ -228,10 +234,8 @@ std::vector<Bytes> Communicator::gatherToRoot(const Bytes& mine) const {
         // The counts go to every process (not only the root), so that all of them know whether
         // the root could hold the whole and throw together when it could not.
         const std::int64_t count = std::int64_t(mine.size());
-        std::vector<std::int64_t> counts(size_);
-        MPI_Allgather(&count, 1, MPI_INT64_T, counts.data(), 1, MPI_INT64_T, MPI_COMM_WORLD);
         std::vector<int> rc, rd;
-        if (!displacements(counts, rc, rd)) tooLarge("gatherToRoot");
+        countsOfAll(count, size_, rc, rd, "gatherToRoot");
         Bytes recv(isRoot() ? std::size_t(rd.back()) + std::size_t(rc.back()) : 0);
         MPI_Gatherv(mine.data(), int(count), MPI_BYTE, recv.data(), rc.data(), rd.data(), MPI_BYTE,
                     0, MPI_COMM_WORLD);

@@ -90,14 +90,41 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         return out;
     }
 
+    /// Gives each halo copy its owner's values. Owner and receiver both keep a record of what was
+    /// last sent, block by block (a quantity's value, dt or d2t for the particles sent to one
+    /// process); only the blocks that changed travel, and the receiver rewrites the others from
+    /// its record (its own work may have changed its copies): constants such as masses, kinds,
+    /// normals and ids travel with the halo's build alone.
     void exchangeHalo(sph::Storage<Dim>& s, QuantityIds only = {}) override {
         if (comm_.size() == 1) return;
         checkDisplacement(s);
+        const std::vector<Block> blocks = blocksOf(s, only);
         std::vector<Bytes> out(comm_.size());
-        for (int r = 0; r < comm_.size(); ++r) packParticles(s, sendTo_[r], out[r], only);
+        for (int r = 0; r < comm_.size(); ++r)
+            if (!sendTo_[r].empty()) out[r] = changedBlocks(s, r, blocks, only);
         const std::vector<Bytes> in = comm_.exchange(out);
         for (int r = 0; r < comm_.size(); ++r) {
-            unpackParticles(s, in[r].data(), in[r].size(), receiveAt_[r], only);
+            if (receiveAt_[r].empty()) continue;
+            const std::size_t n = receiveAt_[r].size();
+            Bytes& record = lastReceived_[r];
+            const bool recorded = record.size() == n * bytesPerParticle(s);
+            const std::vector<std::size_t> recordAt =
+                recorded ? offsets(s, blocks, n) : std::vector<std::size_t>{};
+            // A flag per block, then the blocks that changed.
+            const char* data = in[r].data() + blocks.size();
+            for (std::size_t b = 0; b < blocks.size(); ++b) {
+                const std::size_t size = blocks[b].bytes * n;
+                const char* block = data;
+                if (in[r][b]) {
+                    if (recorded) std::memcpy(record.data() + recordAt[b], data, size);
+                    data += size;
+                } else {
+                    block = record.data() + recordAt[b];  // flagged when nothing is recorded
+                }
+                unpackBlock(s, blocks[b], block, receiveAt_[r]);
+            }
+            if (!recorded && only.empty())
+                record.assign(in[r].begin() + blocks.size(), in[r].end());
             haloBytes_ += in[r].size();
         }
         ++exchanges_;
@@ -273,6 +300,8 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         std::vector<Bytes> out(ranks);
         for (int r = 0; r < ranks; ++r) packParticles(s, sendTo_[r], out[r]);
         const std::vector<Bytes> in = comm_.exchange(out);
+        lastSent_ = out;  // what each process's copies hold now
+        lastReceived_ = in;
         receiveAt_.assign(ranks, {});
         for (int r = 0; r < ranks; ++r) {
             const Size first = appendParticles(s, in[r]);
@@ -330,6 +359,50 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         s.gather(keep);
         const auto id = s.template getValue<int>(sph::QuantityId::PARTICLE_ID);
         ids_.assign(id.begin(), id.end());
+        // The records no longer match the lists: the next refresh sends every block.
+        for (Bytes& sent : lastSent_) sent.clear();
+        for (Bytes& received : lastReceived_) received.clear();
+    }
+
+    /// Where each of `blocks` lies in a record of n particles, which holds every quantity.
+    static std::vector<std::size_t> offsets(const sph::Storage<Dim>& s,
+                                            const std::vector<Block>& blocks, std::size_t n) {
+        std::vector<std::size_t> at(blocks.size());
+        std::size_t offset = 0;
+        for (const Block& whole : blocksOf(s)) {
+            for (std::size_t b = 0; b < blocks.size(); ++b)
+                if (blocks[b].id == whole.id && blocks[b].level == whole.level) at[b] = offset;
+            offset += whole.bytes * n;
+        }
+        return at;
+    }
+
+    /// The message to process r: a flag per block of `blocks`, then the blocks whose values
+    /// differ from those last sent to r (all of them while there is no record of what was
+    /// sent), which become the record.
+    Bytes changedBlocks(const sph::Storage<Dim>& s, int r, const std::vector<Block>& blocks,
+                        QuantityIds only) {
+        const std::size_t n = sendTo_[r].size();
+        Bytes now;
+        packParticles(s, sendTo_[r], now, only);
+        Bytes& sent = lastSent_[r];
+        const bool recorded = sent.size() == n * bytesPerParticle(s);
+        const std::vector<std::size_t> recordAt =
+            recorded ? offsets(s, blocks, n) : std::vector<std::size_t>{};
+        Bytes message(blocks.size(), 0);
+        std::size_t from = 0;
+        for (std::size_t b = 0; b < blocks.size(); ++b) {
+            const std::size_t size = blocks[b].bytes * n;
+            const char* block = now.data() + from;
+            if (!recorded || std::memcmp(sent.data() + recordAt[b], block, size) != 0) {
+                message[b] = 1;
+                message.insert(message.end(), block, block + size);
+                if (recorded) std::memcpy(sent.data() + recordAt[b], block, size);
+            }
+            from += size;
+        }
+        if (!recorded && only.empty()) sent = std::move(now);
+        return message;
     }
 
     /// The largest displacement of a particle of s since the halo was built.
@@ -351,6 +424,8 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
     double radius_, haloRadius_;
     Subdomains<Dim> boxes_;
     std::vector<std::vector<Size>> sendTo_, receiveAt_;  // by process
+    std::vector<Bytes> lastSent_;      // by process: the values its copies hold, as packed
+    std::vector<Bytes> lastReceived_;  // by process: the values of the copies it sent
     std::vector<char> owned_;
     std::vector<Vec> reference_;  // positions when the halo was built
     std::vector<int> ids_;        // the particles' ids then

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <span>
 #include <stdexcept>
+#include <vector>
 
 #include "parallel/communicator.hpp"
 #include "sph/storage.hpp"
@@ -72,6 +73,38 @@ void unpackParticles(sph::Storage<Dim>& s, const char* data, std::size_t size,
                 }
             }
         });
+    });
+}
+
+/// One quantity's level (value, dt or d2t) in the packed layout: `bytes` per particle.
+struct Block {
+    sph::QuantityId id;
+    int level;
+    std::size_t bytes;
+};
+
+/// The blocks of the packed layout, in order (the particles of a pack are block after block).
+template <int Dim>
+std::vector<Block> blocksOf(const sph::Storage<Dim>& s, QuantityIds only = {}) {
+    std::vector<Block> blocks;
+    s.forEach([&](sph::QuantityId id, const sph::Quantity<Dim>& q) {
+        if (!selected(only, id)) return;
+        q.visit([&](const auto& b) {
+            for (int k = 0; k < q.levels(); ++k) blocks.push_back({id, k, sizeof(b.value[0])});
+        });
+    });
+    return blocks;
+}
+
+/// Writes one block of packed particles (`data`: one element per index of `at`) into s.
+template <int Dim>
+void unpackBlock(sph::Storage<Dim>& s, const Block& block, const char* data,
+                 std::span<const sph::Size> at) {
+    s.get(block.id).visit([&](auto& b) {
+        using T = typename std::decay_t<decltype(b.value)>::value_type;
+        T* level = b.level(block.level).data();
+        for (std::size_t n = 0; n < at.size(); ++n)
+            std::memcpy(level + at[n], data + n * sizeof(T), sizeof(T));
     });
 }
 

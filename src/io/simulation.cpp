@@ -251,7 +251,8 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 if (comm.size() > 1) throw LoneFailure(e);
                 throw;
             }
-            const std::int64_t particles = comm.sum(ownedParticles(storage, comm));
+            const std::int64_t owned = ownedParticles(storage, comm);
+            const std::int64_t particles = comm.sum(owned);
             particleSteps += double(particles);
             agreed(comm, [&] {
                 checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
@@ -262,11 +263,9 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 progress.clearLine();
                 std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
             }
-            const std::int64_t ownedBefore = ownedParticles(storage, comm);
             const bool anyRemoved = comm.any(removeOutflow(storage, scene) > 0);
             if (anyRemoved) {
-                state.removed +=
-                    std::uint64_t(comm.sum(ownedBefore - ownedParticles(storage, comm)));
+                state.removed += std::uint64_t(comm.sum(owned - ownedParticles(storage, comm)));
                 run.particlesChanged();
             }
             if (emit(run.time()) > 0) run.particlesChanged();

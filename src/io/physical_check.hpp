@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -32,43 +33,74 @@ class PhysicalCheck {
     /// of every process (each checks its particles; halo copies equal their owners).
     template <int Dim>
     std::string check(const sph::Storage<Dim>& s, double t, const parallel::Communicator& comm) {
+        const auto r = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
         const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
         const auto rho = s.template getValue<double>(sph::QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
         double vmax = 0, rhoMin = rho0_, rhoMax = rho0_;
+        sph::Size fastest = s.size(), densest = s.size(), thinnest = s.size();
         for (sph::Size i = 0; i < s.size(); ++i) {
             if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
-            vmax = std::max(vmax, norm(v[i]));
-            rhoMin = std::min(rhoMin, rho[i]), rhoMax = std::max(rhoMax, rho[i]);
+            if (norm(v[i]) > vmax) vmax = norm(v[i]), fastest = i;
+            if (rho[i] < rhoMin) rhoMin = rho[i], thinnest = i;
+            if (rho[i] > rhoMax) rhoMax = rho[i], densest = i;
         }
+        const double localVmax = vmax, localRhoMin = rhoMin, localRhoMax = rhoMax;
         vmax = comm.maximum(vmax), rhoMin = comm.minimum(rhoMin), rhoMax = comm.maximum(rhoMax);
+        // Where the extreme particle is (the processes agree on whether to ask, so all take
+        // part): the position held by the lowest rank whose own extreme is the global one.
+        const auto where = [&](sph::Size i, bool holds) {
+            parallel::Bytes mine;
+            if (holds) {
+                const auto* bytes = reinterpret_cast<const char*>(&r[i]);
+                mine.assign(bytes, bytes + sizeof(sph::Vector<Dim>));
+            }
+            for (const parallel::Bytes& b : comm.allGather(mine)) {
+                if (b.size() != sizeof(sph::Vector<Dim>)) continue;
+                sph::Vector<Dim> x;
+                std::memcpy(&x, b.data(), sizeof x);
+                std::string text = " at (";
+                for (int d = 0; d < Dim; ++d) text += (d ? ", " : "") + number(x[d]);
+                return text + ") m";
+            }
+            return std::string();
+        };
         const std::string at = "at t = " + number(t) + " s ";
         if (vmax >= c0_)
             throw AppError(ExitCode::UNSTABLE,
-                           at + "a fluid particle moves at " + number(vmax) +
-                               " m/s, at or above the sound speed " + number(c0_) +
+                           at + "a fluid particle" + where(fastest, localVmax == vmax) +
+                               " moves at " + number(vmax) + " m/s, at or above the sound speed " +
+                               number(c0_) +
                                " m/s: the run left the weakly-compressible model; raise the "
                                "material's sound_speed or physics.max_speed, or lower time.cfl");
-        if (rhoMin < 0.5 * rho0_ || rhoMax > 2 * rho0_)
+        const bool thin = rhoMin < rho0_ * (1 - WARN_DENSITY) && rho0_ - rhoMin >= rhoMax - rho0_;
+        if (rhoMin < 0.5 * rho0_ || rhoMax > 2 * rho0_) {
+            const bool low = rhoMin < 0.5 * rho0_;
             throw AppError(ExitCode::UNSTABLE,
-                           at + "the fluid density reached " +
-                               number(rhoMin < 0.5 * rho0_ ? rhoMin : rhoMax) +
-                               " kg/m^3 against the rest density " + number(rho0_) +
+                           at + "the fluid density reached " + number(low ? rhoMin : rhoMax) +
+                               " kg/m^3" +
+                               (low ? where(thinnest, localRhoMin == rhoMin)
+                                    : where(densest, localRhoMax == rhoMax)) +
+                               " against the rest density " + number(rho0_) +
                                ": the run is lost; raise the sound speed or refine the spacing");
+        }
         std::string warning;
-        if (!speedWarned_ && vmax > 3 * U_) {
+        if (!speedWarned_ && vmax > WARN_SPEED * U_) {
             speedWarned_ = true;
-            warning = at + "a fluid particle moves at " + number(vmax) + " m/s, " +
-                      number(vmax / U_) + " times the velocity scale U = " + number(U_) +
+            warning = at + "a fluid particle" + where(fastest, localVmax == vmax) + " moves at " +
+                      number(vmax) + " m/s, " + number(vmax / U_) +
+                      " times the velocity scale U = " + number(U_) +
                       " m/s the sound speed was set for: spray this fast is not physical; set "
                       "physics.max_speed to the speed you expect";
-        } else if (!densityWarned_ && (rhoMax > 1.2 * rho0_ || rhoMin < 0.8 * rho0_)) {
+        } else if (!densityWarned_ &&
+                   (rhoMax > rho0_ * (1 + WARN_DENSITY) || rhoMin < rho0_ * (1 - WARN_DENSITY))) {
             densityWarned_ = true;
             warning = at + "the fluid density ranges over " + number(rhoMin) + " to " +
-                      number(rhoMax) + " kg/m^3, more than 20 % from the rest density " +
-                      number(rho0_) +
-                      ": the fluid is far from incompressible; raise the "
-                      "sound speed";
+                      number(rhoMax) + " kg/m^3 (" + (thin ? "the lowest" : "the highest") +
+                      (thin ? where(thinnest, localRhoMin == rhoMin)
+                            : where(densest, localRhoMax == rhoMax)) +
+                      "), more than 20 % from the rest density " + number(rho0_) +
+                      ": the fluid is far from incompressible; raise the sound speed";
         }
         if (!warning.empty()) warnings_.push_back(warning);
         return warning;
@@ -89,6 +121,8 @@ class PhysicalCheck {
         std::snprintf(buf, sizeof buf, "%.3g", x);
         return buf;
     }
+
+    static constexpr double WARN_SPEED = 3, WARN_DENSITY = 0.2;
 
     double U_, c0_, rho0_;
     bool speedWarned_ = false, densityWarned_ = false;

@@ -2,6 +2,7 @@
 // run as unstable (exit code 9), naming the field; a healthy state passes.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <limits>
 
 #include "io/scene_loader.hpp"
@@ -63,15 +64,20 @@ namespace {
 
 struct Physical : Tiny {
     PhysicalCheck check{setup.velocityScale, setup.model.c0(), setup.model.restDensity};
-    /// Sets the speed of the first fluid particle to `factor` times the velocity scale.
-    void speed(double factor) {
+    /// Sets the speed of the first fluid particle to `factor` times the velocity scale and
+    /// returns where that particle is, as the messages write it.
+    std::string speed(double factor) {
         auto v = storage.getDt<num::sph::Vector<2>>(QuantityId::POSITION);
+        const auto r = storage.getValue<num::sph::Vector<2>>(QuantityId::POSITION);
         const auto kind = storage.getValue<int>(QuantityId::KIND);
         for (std::size_t i = 0; i < storage.size(); ++i)
             if (kind[i] == int(num::sph::ParticleKind::FLUID)) {
                 v[i] = num::sph::Vector<2>{{factor * setup.velocityScale, 0}};
-                return;
+                char at[64];
+                std::snprintf(at, sizeof at, "at (%.3g, %.3g) m", r[i][0], r[i][1]);
+                return at;
             }
+        return "";
     }
 };
 
@@ -86,22 +92,24 @@ TEST(PhysicalCheck, FlowAtItsScalePasses) {
 
 TEST(PhysicalCheck, SprayFarAboveTheScaleWarnsOnce) {
     Physical p;
-    p.speed(3.5);  // above 3 U, below c0 (20 m/s, U = 2 m/s: free fall over 0.2 m)
+    const std::string at = p.speed(3.5);  // above 3 U, below c0 (20 m/s, U = 2 m/s)
     const std::string w = p.check.check(p.storage, 0.1);
     EXPECT_NE(w.find("times the velocity scale"), std::string::npos) << w;
-    EXPECT_EQ(p.check.check(p.storage, 0.2), "");  // once per kind
+    EXPECT_NE(w.find(at), std::string::npos) << w;  // says where the spray is
+    EXPECT_EQ(p.check.check(p.storage, 0.2), "");   // once per kind
     EXPECT_EQ(p.check.warnings().size(), 1u);
 }
 
 TEST(PhysicalCheck, SupersonicFlowStopsTheRun) {
     Physical p;
-    p.speed(1.05 * p.setup.model.c0() / p.setup.velocityScale);
+    const std::string at = p.speed(1.05 * p.setup.model.c0() / p.setup.velocityScale);
     try {
         p.check.check(p.storage, 0.1);
         FAIL() << "no stop";
     } catch (const AppError& e) {
         EXPECT_EQ(e.code(), ExitCode::UNSTABLE);
         EXPECT_NE(std::string(e.what()).find("sound speed"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(at), std::string::npos) << e.what();
     }
 }
 
@@ -113,7 +121,9 @@ TEST(PhysicalCheck, DensityFarFromRestWarnsThenStops) {
     while (kind[fluid] != int(num::sph::ParticleKind::FLUID)) ++fluid;
     const double rho0 = p.setup.model.restDensity;
     rho[fluid] = 1.3 * rho0;
-    EXPECT_NE(p.check.check(p.storage, 0.1).find("more than 20 %"), std::string::npos);
+    const std::string w = p.check.check(p.storage, 0.1);
+    EXPECT_NE(w.find("more than 20 %"), std::string::npos) << w;
+    EXPECT_NE(w.find("the highest at ("), std::string::npos) << w;
     rho[fluid] = 2.5 * rho0;
     EXPECT_THROW(p.check.check(p.storage, 0.2), AppError);
 }

@@ -42,6 +42,7 @@ template <int Dim>
 EquationHolder<Dim> termsOf(Loop loop, const bench::Scene<Dim>& s) {
     const EquationOfState eos = s.model.equationOfState();
     EquationHolder<Dim> eq = makeTerm<EquationOfStateTerm<Dim>>(eos);
+    eq += makeTerm<PairInputs<Dim>>();
     switch (loop) {
         case Loop::DENSITY:
             eq += makeTerm<ContinuityDensity<Dim>>();

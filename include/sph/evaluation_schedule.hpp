@@ -29,6 +29,13 @@ enum class PassPlacement {
     EVERY,     ///< setDerivatives in every pass (after the pass's terms), other hooks in the first
 };
 
+/// A quantity that another term prepares in each evaluation (not part of the state), with the
+/// name of that term for the message when it is missing.
+struct PreparedInput {
+    QuantityId id;
+    std::string preparedBy;
+};
+
 /// What a term reads and writes, so that the solver can place it (IEquationTerm::access).
 /// Name stored quantities (values). Rates (dt, d2t) need no declaration: terms add to them in
 /// any order. A term that deliberately reads a value of the previous evaluation (the fluid
@@ -36,6 +43,9 @@ enum class PassPlacement {
 struct TermAccess {
     /// Read by the term's initialize or by the pair sums of its derivatives.
     std::vector<QuantityId> reads = {};
+    /// Read like `reads`, but prepared in each evaluation by another term (PreparedInput::
+    /// preparedBy), which must be added before this one: without it the terms are refused.
+    std::vector<PreparedInput> needs = {};
     /// Set by its initialize: ready for the terms added after it, in the same pass.
     std::vector<QuantityId> prepares = {};
     /// Set by its pair sums or its finalize: ready from the next pass on.
@@ -74,9 +84,22 @@ inline bool listsAny(const std::vector<QuantityId>& ids, const std::vector<Quant
 
 /// The schedule of terms with the given accesses (in the order the terms were added); names
 /// are for messages. Throws std::logic_error when no order of passes satisfies the declarations.
-inline EvaluationSchedule scheduleEvaluation(const std::vector<TermAccess>& access,
+inline EvaluationSchedule scheduleEvaluation(std::vector<TermAccess> access,
                                              const std::vector<std::string>& names) {
     const std::size_t n = access.size();
+    // What a term needs is read like the rest, once a term added before it prepares it.
+    for (std::size_t b = 0; b < n; ++b)
+        for (const PreparedInput& input : access[b].needs) {
+            bool prepared = false;
+            for (std::size_t a = 0; a < b; ++a)
+                prepared |= detail::listsAny(access[a].prepares, {input.id});
+            if (!prepared)
+                throw std::logic_error("the term " + names[b] + " reads quantity " +
+                                       std::to_string(int(input.id)) + ", which " +
+                                       input.preparedBy + " prepares in each evaluation: add " +
+                                       input.preparedBy + " before it");
+            access[b].reads.push_back(input.id);
+        }
     auto placed = [&](std::size_t t) { return access[t].placement == PassPlacement::EARLIEST; };
     auto list = [&](const std::vector<std::size_t>& terms) {
         std::string text;

@@ -70,6 +70,7 @@
 #include "sph/terms/heat_model.hpp"
 #include "sph/terms/laminar_viscosity.hpp"
 #include "sph/terms/neighbour_gather.hpp"
+#include "sph/terms/pair_inputs.hpp"
 #include "sph/terms/particle_shifting.hpp"
 #include "sph/terms/pressure_gradient.hpp"
 #include "sph/terms/summation_density.hpp"
@@ -231,6 +232,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     eq += makeTerm<EquationOfStateTerm<Dim>>(eos);
     if (model.freeSurfaceNoTension) eq += makeTerm<FreeSurfaceNoTension<Dim>>(eos);
     if (boundaries) eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce);
+    eq += makeTerm<PairInputs<Dim>>();  // volumes and velocities the pair terms read
     if (!summation) {
         eq += makeTerm<ContinuityDensity<Dim>>();
         if (model.deltaSph > 0)

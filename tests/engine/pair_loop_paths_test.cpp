@@ -14,6 +14,7 @@
 #include "sph/terms/delta_sph.hpp"
 #include "sph/terms/free_surface.hpp"
 #include "sph/terms/laminar_viscosity.hpp"
+#include "sph/terms/pair_inputs.hpp"
 #include "sph/terms/pressure_gradient.hpp"
 #include "test_physics.hpp"
 
@@ -24,6 +25,13 @@ using V2 = Vector<2>;
 
 /// Random particles with kinds, volumes and previous kernel sums such that some fluid
 /// particles were at a free surface and some were not.
+/// The volumes and pair velocities the fluid parts read, as the fluid model's PairInputs
+/// prepares them each evaluation.
+void preparePairInputs(Storage<2>& s) {
+    SequentialScheduler scheduler;
+    PairInputs<2>().initialize(scheduler, s, 0.0);
+}
+
 Storage<2> particlesWithSurface() {
     Storage<2> s = enginetest::randomParticles<2>(300, 11);
     std::vector<int> kind(s.size());
@@ -34,6 +42,10 @@ Storage<2> particlesWithSurface() {
     }
     s.insert<int>(QuantityId::KIND, OrderEnum::ZERO, kind);
     s.insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, previous);
+    s.insert<V2>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, V2{0.25, -0.5});
+    s.insert<Float>(FluidId::VOLUME, OrderEnum::ZERO, 0.0);
+    s.insert<V2>(FluidId::PAIR_VELOCITY, OrderEnum::ZERO, V2{});
+    preparePairInputs(s);
     return s;
 }
 
@@ -93,6 +105,7 @@ void expectSharedEqualsOwn(Require&& require) {
         }
         EXPECT_GT(largest, 0.0);  // the sums are not all zero
         for (Float& rho : s.getValue<Float>(QuantityId::DENSITY)) rho *= 1.5;
+        preparePairInputs(s);
     }
 }
 
@@ -150,20 +163,18 @@ void expectGatherEqualsPairByPair(Part gather, Part pairByPair, const Storage<2>
     EXPECT_GT(changed, s.size() / 2) << typeName(gather);  // most particles got a sum
 }
 
-/// Particle data for the fluid parts: velocities, volumes, viscosities; one particle in seven
-/// a free-slip wall particle (inactive in the viscous term).
+/// Particle data for the fluid parts beyond the storage's volumes and pair velocities:
+/// velocities, viscosities; one particle in seven a free-slip wall particle (inactive in the
+/// viscous term).
 struct FluidPartData {
     explicit FluidPartData(const Storage<2>& s) {
-        const auto m = s.getValue<Float>(QuantityId::MASS);
         const auto rho = s.getValue<Float>(QuantityId::DENSITY);
         const auto p = s.getValue<Float>(QuantityId::PRESSURE);
         const auto v = s.getDt<V2>(QuantityId::POSITION);
         for (Size i = 0; i < s.size(); ++i) {
-            continuity->velocity.push_back(v[i]), continuity->volume.push_back(m[i] / rho[i]);
-            delta->volume.push_back(m[i] / rho[i]);
+            continuity->velocity.push_back(v[i]);
             pressure->pOverRho2.push_back(p[i] / (rho[i] * rho[i]));
-            velocity->push_back(v[i]);
-            viscous->velocity.push_back(v[i]), viscous->mu.push_back(1e-3 * (1 + Float(i % 4)));
+            viscous->mu.push_back(1e-3 * (1 + Float(i % 4)));
             viscous->active.push_back(i % 7 != 3);
         }
         delta->gravityTerm = V2{0.0, -0.3};
@@ -171,7 +182,6 @@ struct FluidPartData {
     std::shared_ptr<ContinuityData<2>> continuity = std::make_shared<ContinuityData<2>>();
     std::shared_ptr<DeltaSphData<2>> delta = std::make_shared<DeltaSphData<2>>();
     std::shared_ptr<PressureGradientData> pressure = std::make_shared<PressureGradientData>();
-    std::shared_ptr<std::vector<V2>> velocity = std::make_shared<std::vector<V2>>();
     std::shared_ptr<ViscousData<2>> viscous = std::make_shared<ViscousData<2>>();
 };
 
@@ -185,8 +195,8 @@ TEST(GatherLoops, FluidPartsEqualTheirPairByPairEvaluationBitwise) {
                                  DeltaSphPart<2>(d.delta, 0.1, c0, h), s);
     expectGatherEqualsPairByPair(PressureGradientPart<2>(d.pressure),
                                  PressureGradientPart<2>(d.pressure), s);
-    expectGatherEqualsPairByPair(ArtificialViscosityPart<2>(d.velocity, 0.1, c0, h),
-                                 ArtificialViscosityPart<2>(d.velocity, 0.1, c0, h), s);
+    expectGatherEqualsPairByPair(ArtificialViscosityPart<2>(0.1, c0, h),
+                                 ArtificialViscosityPart<2>(0.1, c0, h), s);
     expectGatherEqualsPairByPair(LaminarViscosityPart<2>(d.viscous, h),
                                  LaminarViscosityPart<2>(d.viscous, h), s);
     expectGatherEqualsPairByPair(KernelSumPart<2>(0.7), KernelSumPart<2>(0.7), s);

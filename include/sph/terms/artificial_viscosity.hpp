@@ -4,13 +4,15 @@
 //   mu_ij = h v_ij . r_ij / (r_ij^2 + eta^2),  rho_ij = (rho_i + rho_j) / 2,  eta^2 = 0.01 h^2.
 // Acts only between approaching particles; antisymmetric, so momentum is conserved. For a
 // viscous flow it corresponds to nu = alpha h c0 / (2 (Dim + 2)) (Monaghan 2005, sec. 5.4).
-// Boundary particles show the wall condition's velocity.
+// Boundary particles show the wall condition's velocity (FluidId::PAIR_VELOCITY,
+// terms/pair_inputs.hpp).
 #pragma once
 
 #include <memory>
 #include <vector>
 
 #include "sph/terms/fluid_quantities.hpp"
+#include "sph/terms/pair_inputs.hpp"
 
 namespace num::sph {
 
@@ -18,9 +20,8 @@ template <int Dim>
 class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
-    ArtificialViscosityPart(std::shared_ptr<const std::vector<Vec>> velocity, Float alpha, Float c0,
-                            Float h)
-        : velocity_(std::move(velocity)), alphaC0h_(alpha * c0 * h), eta2_(0.01 * h * h) {}
+    ArtificialViscosityPart(Float alpha, Float c0, Float h)
+        : alphaC0h_(alpha * c0 * h), eta2_(0.01 * h * h) {}
 
     void create(Accumulated<Dim>& r) override {
         r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);
@@ -29,14 +30,14 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
         m_ = s.template getValue<Float>(QuantityId::MASS);
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         kind_ = s.template getValue<int>(QuantityId::KIND);
+        v_ = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         a_ = r.template getValue<Vec>(QuantityId::POSITION);
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
         const bool fi = isFluid(kind_[i]), fj = isFluid(kind_[j]);
         if (!(fi || (Symmetric && fj))) return;
-        const std::vector<Vec>& v = *velocity_;
-        const Float vr = dot(v[i] - v[j], pair.dx);
+        const Float vr = dot(v_[i] - v_[j], pair.dx);
         if (vr >= 0) return;
         // Pi_ij = -alpha c0 h vr / ((r^2 + eta^2) rho_ij)
         const Float pi = -alphaC0h_ * vr / ((pair.r * pair.r + eta2_) * 0.5 * (rho_[i] + rho_[j]));
@@ -50,14 +51,13 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
                           const NeighbourGeometry<Dim>& geometry) {
         if (!isFluid(kind_[i])) return;
-        const std::vector<Vec>& v = *velocity_;
-        const Vec vi = v[i];
+        const Vec vi = v_[i];
         const Float rhoi = rho_[i];
         Vec sum = a_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
             const Float r = geometry.r[k];
-            const Float vr = dot(vi - v[j], geometry.dx[k]);
+            const Float vr = dot(vi - v_[j], geometry.dx[k]);
             if (vr >= 0) continue;
             const Float pi = -alphaC0h_ * vr / ((r * r + eta2_) * 0.5 * (rhoi + rho_[j]));
             sum -= grads[k] * pi * m_[j];
@@ -66,10 +66,10 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
     }
 
   private:
-    std::shared_ptr<const std::vector<Vec>> velocity_;
     Float alphaC0h_, eta2_;
     ArrayView<const Float> m_, rho_;
     ArrayView<const int> kind_;
+    ArrayView<const Vec> v_;
     ArrayView<Vec> a_;
 };
 
@@ -80,29 +80,18 @@ class ArtificialViscosity : public IEquationTerm<Dim> {
     ArtificialViscosity(Float alpha, Float c0) : alpha_(alpha), c0_(c0) {}
 
     void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
-        d.template require<ArtificialViscosityPart<Dim>>(velocity_, alpha_, c0_,
+        d.template require<ArtificialViscosityPart<Dim>>(alpha_, c0_,
                                                          settings.get<double>("smoothing_length"));
     }
-    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
-        const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-        const auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
-        const auto kind = s.template getValue<int>(QuantityId::KIND);
-        velocity_->resize(s.size());
-        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
-            for (Size i = b; i < e; ++i) (*velocity_)[i] = isFluid(kind[i]) ? v[i] : vb[i];
-        });
-    }
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     TermAccess access() const override {
-        return {.reads = {QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY}};
+        return {.reads = {QuantityId::DENSITY}, .needs = {pairVelocity}};
     }
-    void create(Storage<Dim>& s, IMaterial&) const override {
-        s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
-    }
+    void create(Storage<Dim>&, IMaterial&) const override {}
 
   private:
     Float alpha_, c0_;
-    std::shared_ptr<std::vector<Vec>> velocity_ = std::make_shared<std::vector<Vec>>();
 };
 
 }  // namespace num::sph

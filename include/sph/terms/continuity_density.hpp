@@ -1,5 +1,6 @@
 // Continuity equation (Monaghan 1992, eq. 2.9, in the volume form of Colagrossi & Landrini 2003):
-//   drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij,   V_j = m_j / rho_j.
+//   drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij,   V_j = m_j / rho_j
+// (FluidId::VOLUME, terms/pair_inputs.hpp).
 // Only fluid densities evolve. Boundary particles enter with their own velocity, zero: they are
 // held in place (boundary_hold.hpp), and the equation is the time derivative of the kernel sum,
 // in which only their positions appear. A wall's prescribed surface velocity (a sliding lid,
@@ -18,13 +19,13 @@
 #include <vector>
 
 #include "sph/terms/fluid_quantities.hpp"
+#include "sph/terms/pair_inputs.hpp"
 
 namespace num::sph {
 
 template <int Dim>
 struct ContinuityData {
     std::vector<Vector<Dim>> velocity;  // fluid: v; boundary: zero (held in place)
-    std::vector<Float> volume;          // m / rho
 };
 
 template <int Dim>
@@ -40,15 +41,16 @@ class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Di
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         kind_ = s.template getValue<int>(QuantityId::KIND);
+        volume_ = s.template getValue<Float>(FluidId::VOLUME);
         drho_ = r.template getValue<Float>(QuantityId::DENSITY);
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec& grad) {
         const ContinuityData<Dim>& d = *data_;
         const Float div = dot(d.velocity[i] - d.velocity[j], grad);
-        if (isFluid(kind_[i])) drho_[i] += rho_[i] * d.volume[j] * div;
+        if (isFluid(kind_[i])) drho_[i] += rho_[i] * volume_[j] * div;
         if constexpr (Symmetric)
-            if (isFluid(kind_[j])) drho_[j] += rho_[j] * d.volume[i] * div;
+            if (isFluid(kind_[j])) drho_[j] += rho_[j] * volume_[i] * div;
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
@@ -61,14 +63,14 @@ class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Di
         Float sum = drho_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
-            sum += rhoi * d.volume[j] * dot(vi - d.velocity[j], grads[k]);
+            sum += rhoi * volume_[j] * dot(vi - d.velocity[j], grads[k]);
         }
         drho_[i] = sum;
     }
 
   private:
     std::shared_ptr<const ContinuityData<Dim>> data_;
-    ArrayView<const Float> rho_;
+    ArrayView<const Float> rho_, volume_;
     ArrayView<const int> kind_;
     ArrayView<Float> drho_;
 };
@@ -82,20 +84,17 @@ class ContinuityDensity : public IEquationTerm<Dim> {
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
         const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-        const auto m = s.template getValue<Float>(QuantityId::MASS);
-        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         ContinuityData<Dim>& d = *data_;
-        d.velocity.resize(s.size()), d.volume.resize(s.size());
+        d.velocity.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
-            for (Size i = b; i < e; ++i) {
-                d.velocity[i] = isFluid(kind[i]) ? v[i] : Vec{};
-                d.volume[i] = m[i] / rho[i];
-            }
+            for (Size i = b; i < e; ++i) d.velocity[i] = isFluid(kind[i]) ? v[i] : Vec{};
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
-    TermAccess access() const override { return {.reads = {QuantityId::DENSITY}}; }
+    TermAccess access() const override {
+        return {.reads = {QuantityId::DENSITY}, .needs = {pairVolume}};
+    }
     void create(Storage<Dim>& s, IMaterial& material) const override {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST,
                                  material.params().template get<double>("density"));

@@ -2,10 +2,11 @@
 // equation to damp spurious pressure oscillations:
 //   drho_i/dt += 2 delta h c0 sum_j V_j psi_ij (r_ij . grad_i W_ij) / (r_ij^2 + eta^2),
 //   psi_ij = rho_i - rho_j - rho0 (g . r_ij) / c0^2   (hydrostatic part removed),
-// r_ij = x_i - x_j, V_j = m_j / rho_j, eta^2 = 0.01 h^2, delta ~ 0.1. The last term of psi
-// subtracts the density difference of hydrostatic equilibrium under the body force g, as in
-// Fourtakas et al. (2019, Comput. Fluids 190, eq. 12) in its linear form, so a tank at rest
-// is not diffused away from hydrostatics. Applied between fluid particles only.
+// r_ij = x_i - x_j, V_j = m_j / rho_j (FluidId::VOLUME, terms/pair_inputs.hpp), eta^2 = 0.01 h^2,
+// delta ~ 0.1. The last term of psi subtracts the density difference of hydrostatic equilibrium
+// under the body force g, as in Fourtakas et al. (2019, Comput. Fluids 190, eq. 12) in its linear
+// form, so a tank at rest is not diffused away from hydrostatics. Applied between fluid particles
+// only.
 #pragma once
 
 #include <functional>
@@ -13,12 +14,12 @@
 #include <vector>
 
 #include "sph/terms/fluid_quantities.hpp"
+#include "sph/terms/pair_inputs.hpp"
 
 namespace num::sph {
 
 template <int Dim>
 struct DeltaSphData {
-    std::vector<Float> volume;
     Vector<Dim> gravityTerm{};  // rho0 g / c0^2 at the current time
 };
 
@@ -35,6 +36,7 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         kind_ = s.template getValue<int>(QuantityId::KIND);
+        volume_ = s.template getValue<Float>(FluidId::VOLUME);
         drho_ = r.template getValue<Float>(QuantityId::DENSITY);
     }
     template <bool Symmetric>
@@ -43,8 +45,8 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
         const DeltaSphData<Dim>& d = *data_;
         const Float psi = rho_[i] - rho_[j] - dot(d.gravityTerm, pair.dx);
         const Float f = coefficient_ * psi * dot(pair.dx, grad) / (pair.r * pair.r + eta2_);
-        drho_[i] += f * d.volume[j];
-        if constexpr (Symmetric) drho_[j] -= f * d.volume[i];
+        drho_[i] += f * volume_[j];
+        if constexpr (Symmetric) drho_[j] -= f * volume_[i];
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
@@ -61,7 +63,7 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
             const Float r = geometry.r[k];
             const Float psi = rhoi - rho_[j] - dot(d.gravityTerm, dx);
             const Float f = coefficient_ * psi * dot(dx, grads[k]) / (r * r + eta2_);
-            sum += f * d.volume[j];
+            sum += f * volume_[j];
         }
         drho_[i] = sum;
     }
@@ -69,7 +71,7 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
   private:
     std::shared_ptr<const DeltaSphData<Dim>> data_;
     Float coefficient_, eta2_;
-    ArrayView<const Float> rho_;
+    ArrayView<const Float> rho_, volume_;
     ArrayView<const int> kind_;
     ArrayView<Float> drho_;
 };
@@ -86,17 +88,13 @@ class DeltaSph : public IEquationTerm<Dim> {
         d.template require<DeltaSphPart<Dim>>(data_, delta_, c0_,
                                               settings.get<double>("smoothing_length"));
     }
-    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
-        const auto m = s.template getValue<Float>(QuantityId::MASS);
-        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
-        data_->volume.resize(s.size());
+    void initialize(IScheduler&, Storage<Dim>&, Float t) override {
         data_->gravityTerm = bodyForce_ ? bodyForce_(t) * (rho0_ / (c0_ * c0_)) : Vec{};
-        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
-            for (Size i = b; i < e; ++i) data_->volume[i] = m[i] / rho[i];
-        });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
-    TermAccess access() const override { return {.reads = {QuantityId::DENSITY}}; }
+    TermAccess access() const override {
+        return {.reads = {QuantityId::DENSITY}, .needs = {pairVolume}};
+    }
     void create(Storage<Dim>& s, IMaterial& material) const override {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST,
                                  material.params().template get<double>("density"));

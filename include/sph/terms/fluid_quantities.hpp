@@ -36,6 +36,12 @@ inline constexpr QuantityId SURFACE_NEIGHBOURS = QuantityId(109);
 /// evaluation (Vector): points towards the walls within one kernel support of them, zero
 /// elsewhere; from particle shifting.
 inline constexpr QuantityId WALL_DIRECTION = QuantityId(110);
+/// Per-particle inputs of the pair terms, prepared once per evaluation by PairInputs
+/// (terms/pair_inputs.hpp) after the wall condition: the volume m / rho (Float) and the
+/// velocity a particle shows its neighbours (Vector): v for fluid, BOUNDARY_VELOCITY for wall
+/// and body particles.
+inline constexpr QuantityId VOLUME = QuantityId(111);
+inline constexpr QuantityId PAIR_VELOCITY = QuantityId(112);
 }  // namespace FluidId
 
 enum class WallSlip : int { NO_SLIP = 0, FREE_SLIP = 1 };

@@ -48,26 +48,22 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
         r.template insert<Float>(FluidId::SURFACE_NEIGHBOURS, OrderEnum::ZERO);
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
-        const auto m = s.template getValue<Float>(QuantityId::MASS);
-        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const auto previous = s.template getValue<Float>(FluidId::KERNEL_SUM);
+        const auto volume = s.template getValue<Float>(FluidId::VOLUME);
         if (!ownsParticles_) particles_ = std::make_shared<PerParticle>(), ownsParticles_ = true;
-        std::vector<Float>& volume = particles_->volume;
         std::vector<char>& atSurface = particles_->atSurface;
-        volume.resize(s.size()), atSurface.resize(s.size());
-        for (Size i = 0; i < s.size(); ++i) {
-            volume[i] = m[i] / rho[i];
+        atSurface.resize(s.size());
+        for (Size i = 0; i < s.size(); ++i)
             atSurface[i] = isFluid(kind[i]) && atFreeSurface(previous[i], volume[i], w0_);
-        }
-        bindResults(r);
+        bindResults(s, r);
     }
-    /// Shares the volumes and surface flags of block 0's part (computed once per evaluation).
-    void initializeLike(const IDerivative<Dim>& first, const Storage<Dim>&,
+    /// Shares the surface flags of block 0's part (computed once per evaluation).
+    void initializeLike(const IDerivative<Dim>& first, const Storage<Dim>& s,
                         Accumulated<Dim>& r) override {
         particles_ = static_cast<const KernelSumPart&>(first).particles_;
         ownsParticles_ = false;
-        bindResults(r);
+        bindResults(s, r);
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec&, const PairGeometry<Dim>& pair) {
@@ -93,11 +89,10 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
 
   private:
     struct PerParticle {
-        std::vector<Float> volume;    ///< m / rho
         std::vector<char> atSurface;  ///< a fluid particle at a free surface last evaluation
     };
-    void bindResults(Accumulated<Dim>& r) {
-        volume_ = particles_->volume.data();
+    void bindResults(const Storage<Dim>& s, Accumulated<Dim>& r) {
+        volume_ = s.template getValue<Float>(FluidId::VOLUME);
         atSurface_ = particles_->atSurface.data();
         c_ = r.template getValue<Float>(FluidId::KERNEL_SUM);
         nearSurface_ = r.template getValue<Float>(FluidId::SURFACE_NEIGHBOURS);
@@ -106,7 +101,7 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
     Float w0_;
     std::shared_ptr<PerParticle> particles_;
     bool ownsParticles_ = false;  ///< false: particles_ is block 0's, read only
-    const Float* volume_ = nullptr;
+    ArrayView<const Float> volume_;
     const char* atSurface_ = nullptr;
     ArrayView<Float> c_, nearSurface_;
 };

@@ -4,7 +4,8 @@
 // Since r_ij . grad_i W_ij <= 0 the term pulls v_i towards v_j; the pair terms are
 // antisymmetric, so momentum is conserved. A boundary particle shows the velocity of the wall
 // condition (2 v_wall - v~ for no-slip, Adami et al. 2012, eq. 23); free-slip boundary
-// particles are skipped. Time-step limit: dt <= f h^2 / nu (Morris et al. 1997, eq. 13).
+// particles are skipped (the velocities: FluidId::PAIR_VELOCITY, terms/pair_inputs.hpp).
+// Time-step limit: dt <= f h^2 / nu (Morris et al. 1997, eq. 13).
 #pragma once
 
 #include <memory>
@@ -12,14 +13,14 @@
 #include "sph/defaults.hpp"
 
 #include "sph/terms/fluid_quantities.hpp"
+#include "sph/terms/pair_inputs.hpp"
 
 namespace num::sph {
 
 template <int Dim>
 struct ViscousData {
-    std::vector<Vector<Dim>> velocity;  // fluid: v; boundary: the wall condition's velocity
-    std::vector<Float> mu;              // dynamic viscosity rho nu
-    std::vector<char> active;           // 0: free-slip boundary particle
+    std::vector<Float> mu;     // dynamic viscosity rho nu
+    std::vector<char> active;  // 0: free-slip boundary particle
 };
 
 template <int Dim>
@@ -36,6 +37,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
         m_ = s.template getValue<Float>(QuantityId::MASS);
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         kind_ = s.template getValue<int>(QuantityId::KIND);
+        v_ = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         a_ = r.template getValue<Vec>(QuantityId::POSITION);
     }
     template <bool Symmetric>
@@ -45,7 +47,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
         if (!(fi || (Symmetric && fj)) || !d.active[i] || !d.active[j]) return;
         const Float factor = (d.mu[i] + d.mu[j]) / (rho_[i] * rho_[j]) * dot(pair.dx, grad) /
                              (pair.r * pair.r + eta2_);
-        const Vec f = (d.velocity[i] - d.velocity[j]) * factor;
+        const Vec f = (v_[i] - v_[j]) * factor;
         if (fi) a_[i] += f * m_[j];
         if constexpr (Symmetric)
             if (fj) a_[j] -= f * m_[i];
@@ -56,7 +58,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
                           const NeighbourGeometry<Dim>& geometry) {
         const ViscousData<Dim>& d = *data_;
         if (!isFluid(kind_[i]) || !d.active[i]) return;
-        const Vec vi = d.velocity[i];
+        const Vec vi = v_[i];
         const Float mui = d.mu[i], rhoi = rho_[i];
         Vec sum = a_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
@@ -65,13 +67,14 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
             const Float r = geometry.r[k];
             const Float factor = (mui + d.mu[j]) / (rhoi * rho_[j]) *
                                  dot(geometry.dx[k], grads[k]) / (r * r + eta2_);
-            sum += (vi - d.velocity[j]) * factor * m_[j];
+            sum += (vi - v_[j]) * factor * m_[j];
         }
         a_[i] = sum;
     }
 
   private:
     std::shared_ptr<const ViscousData<Dim>> data_;
+    ArrayView<const Vec> v_;
     Float eta2_;
     ArrayView<const Float> m_, rho_;
     ArrayView<const int> kind_;
@@ -90,31 +93,26 @@ class LaminarViscosity : public IEquationTerm<Dim> {
                                                       settings.get<double>("smoothing_length"));
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
-        const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-        const auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         const auto nu = s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const auto slip = s.template getValue<int>(FluidId::WALL_SLIP);
         ViscousData<Dim>& d = *data_;
-        d.velocity.resize(s.size()), d.mu.resize(s.size()), d.active.resize(s.size());
+        d.mu.resize(s.size()), d.active.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                const bool fluid = isFluid(kind[i]);
-                d.velocity[i] = fluid ? v[i] : vb[i];
                 d.mu[i] = rho[i] * nu[i];
-                d.active[i] = fluid || slip[i] == int(WallSlip::NO_SLIP);
+                d.active[i] = isFluid(kind[i]) || slip[i] == int(WallSlip::NO_SLIP);
             }
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     TermAccess access() const override {
-        return {.reads = {QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY,
-                          FluidId::KINEMATIC_VISCOSITY}};
+        return {.reads = {QuantityId::DENSITY, FluidId::KINEMATIC_VISCOSITY},
+                .needs = {pairVelocity}};
     }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, nu_);
-        s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, int(WallSlip::NO_SLIP));
     }
     void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,

@@ -48,14 +48,13 @@
 #include "sph/kernel_choice.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/free_surface.hpp"
+#include "sph/terms/pair_inputs.hpp"
 
 namespace num::sph {
 
 template <int Dim>
 struct ShiftingData {
-    std::vector<Float> volume;
     std::vector<Float> inverseWAtSpacing;  // 1 / W(dx_i), dx_i = V_i^(1/Dim) the local spacing
-    std::vector<Vector<Dim>> velocity;     // fluid: v; boundary: the wall condition's velocity
     std::vector<char> boundary;            // a wall or body particle
 };
 
@@ -81,6 +80,8 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        volume_ = s.template getValue<Float>(FluidId::VOLUME);
+        velocity_ = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         gradC_ = r.template getValue<Vec>(FluidId::KERNEL_SUM_GRADIENT);
         gradRho_ = r.template getValue<Vec>(FluidId::DENSITY_GRADIENT);
         wallDirection_ = r.template getValue<Vec>(FluidId::WALL_DIRECTION);
@@ -90,8 +91,8 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
         const ShiftingData<Dim>& d = *data_;
-        const Float vi = d.volume[i], vj = d.volume[j];
-        const Vec dv = d.velocity[j] - d.velocity[i];
+        const Float vi = volume_[i], vj = volume_[j];
+        const Vec dv = velocity_[j] - velocity_[i];
         const Float drho = rho_[j] - rho_[i];
         const Float q = pair.w * 0.5 * (d.inverseWAtSpacing[i] + d.inverseWAtSpacing[j]);
         const Float r = tensileR * std::max(0.0, (q * q) * (q * q) - tensileThreshold);
@@ -112,7 +113,8 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
 
   private:
     std::shared_ptr<const ShiftingData<Dim>> data_;
-    ArrayView<const Float> rho_;
+    ArrayView<const Float> rho_, volume_;
+    ArrayView<const Vec> velocity_;
     ArrayView<Vec> gradC_, gradRho_;
     ArrayView<Vec> wallDirection_;
     std::array<ArrayView<Vec>, Dim> gradV_;
@@ -133,19 +135,13 @@ class ParticleShifting : public IEquationTerm<Dim> {
         d.template require<KernelSumPart<Dim>>(kernel_->W(0));
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
-        const auto m = s.template getValue<Float>(QuantityId::MASS);
-        const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
-        const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-        const auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
+        const auto volume = s.template getValue<Float>(FluidId::VOLUME);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         ShiftingData<Dim>& d = *data_;
-        d.volume.resize(s.size()), d.velocity.resize(s.size());
         d.inverseWAtSpacing.resize(s.size()), d.boundary.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                d.volume[i] = m[i] / rho[i];
-                d.inverseWAtSpacing[i] = 1 / kernel_->W(std::pow(d.volume[i], 1.0 / Dim));
-                d.velocity[i] = isFluid(kind[i]) ? v[i] : vb[i];
+                d.inverseWAtSpacing[i] = 1 / kernel_->W(std::pow(volume[i], 1.0 / Dim));
                 d.boundary[i] = !isFluid(kind[i]);
             }
         });
@@ -154,7 +150,7 @@ class ParticleShifting : public IEquationTerm<Dim> {
     /// Moves the fluid particles by dr (the equation at the top) with the sums of the step's
     /// last evaluation; dt is the step.
     void postStep(IScheduler& scheduler, Storage<Dim>& s, Float, Float dt) override {
-        if (data_->volume.size() != s.size())
+        if (data_->boundary.size() != s.size())
             throw std::logic_error(
                 "ParticleShifting::postStep: the storage changed size since the last evaluation");
         auto x = s.template getValue<Vec>(QuantityId::POSITION);
@@ -170,14 +166,15 @@ class ParticleShifting : public IEquationTerm<Dim> {
         for (int b = 0; b < Dim; ++b)
             gradV[b] = s.template getValue<Vec>(velocityGradientId<Dim>(b));
         const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const auto volume = s.template getValue<Float>(FluidId::VOLUME);
         const Float h = kernel_->h, w0 = kernel_->W(0);
         const Float diffusion = coefficient_ * h * soundSpeed_ * dt, cap = 0.1 * h;
         const bool continuity = s.order(QuantityId::DENSITY) >= OrderEnum::FIRST;
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 shift[i] = Vec{};
-                if (!isFluid(kind[i]) || atFreeSurface(c[i], data_->volume[i], w0) ||
-                    nearSurface[i] > 0 || !(dt > 0))
+                if (!isFluid(kind[i]) || atFreeSurface(c[i], volume[i], w0) || nearSurface[i] > 0 ||
+                    !(dt > 0))
                     continue;
                 Vec dr = gradC[i] * (-diffusion);
                 const Vec& n = wallDirection[i];
@@ -193,13 +190,13 @@ class ParticleShifting : public IEquationTerm<Dim> {
         });
     }
     TermAccess access() const override {
-        return {.reads = {QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY},
+        return {.reads = {QuantityId::DENSITY},
+                .needs = {pairVolume, pairVelocity},
                 .produces = {FluidId::KERNEL_SUM_GRADIENT, FluidId::DENSITY_GRADIENT,
                              FluidId::WALL_DIRECTION}};
     }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Vec>(QuantityId::SHIFT, OrderEnum::ZERO, Vec{});
-        s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, 1.0);
         s.template insert<Float>(FluidId::SURFACE_NEIGHBOURS, OrderEnum::ZERO, 0.0);
         s.template insert<Vec>(FluidId::KERNEL_SUM_GRADIENT, OrderEnum::ZERO, Vec{});

@@ -1,0 +1,102 @@
+// The per-particle inputs of the pair terms (terms/pair_inputs.hpp): prepared once per
+// evaluation, after the wall condition, and read by every term that needs them; a set of terms
+// without PairInputs is refused with a message that names it.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+
+#include "numerics.hpp"
+#include "sph/fluid_model.hpp"
+
+namespace {
+
+using namespace num::sph;
+
+/// Water filling a walled box with a moving lid, so that wall particles show a velocity
+/// of their own (2 v_wall - v~) and the volumes of wall particles come from the wall
+/// condition's densities.
+struct LidTank {
+    static constexpr double dx = 0.05;
+    FluidModel<2> model;
+    FluidGeometry<2> geometry;
+    RunSettings settings;
+    Storage<2> storage;
+
+    LidTank() {
+        model.maxVelocity = 1;
+        model.viscosity = 1e-2;
+        model.bodyForce = [](Float) { return Vector<2>{{0, -9.81}}; };
+        geometry.spacing = dx;
+        geometry.domain.max = {{1.0, 1.0}};
+        for (int k = 0; k < 2; ++k) geometry.walls[k][0] = geometry.walls[k][1] = WallSide<2>{};
+        geometry.walls[1][1].velocity = Vector<2>{{1.0, 0.0}};
+        geometry.fluid.push_back(
+            FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, 1.0}})));
+        settings.set("smoothing_length", 1.5 * dx);
+        storage = makeFluidStorage(model, geometry, settings);
+        auto v = storage.getDt<Vector<2>>(QuantityId::POSITION);
+        const auto x = storage.getValue<Vector<2>>(QuantityId::POSITION);
+        for (Size i = 0; i < storage.size(); ++i)
+            v[i] = Vector<2>{{0.1 * x[i][1], -0.05 * x[i][0]}};
+    }
+};
+
+TEST(PairInputs, VolumesAndPairVelocitiesAreThoseOfTheWallCondition) {
+    LidTank tank;
+    SequentialScheduler scheduler;
+    Solver<2> solver(scheduler, tank.settings, makeFluidEquations(tank.model, tank.geometry),
+                     tank.geometry.domain);
+    Storage<2>& s = tank.storage;
+    solver.evaluate(s, 0.0);
+
+    // The passes: the wall condition, then PairInputs, then the terms that read what it prepares.
+    const std::string passes = solver.schedule().describe(solver.equations().names());
+    const auto wall = passes.find("GeneralizedWall"), inputs = passes.find("PairInputs");
+    ASSERT_NE(wall, std::string::npos) << passes;
+    ASSERT_NE(inputs, std::string::npos) << passes;
+    EXPECT_LT(wall, inputs) << passes;
+    for (const char* reader : {"ContinuityDensity", "DeltaSph", "LaminarViscosity",
+                               "ArtificialViscosity", "ParticleShifting"})
+        EXPECT_LT(inputs, passes.find(reader)) << reader << " before PairInputs:\n" << passes;
+
+    const auto m = s.getValue<Float>(QuantityId::MASS);
+    const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+    const auto v = s.getDt<Vector<2>>(QuantityId::POSITION);
+    const auto vb = s.getValue<Vector<2>>(FluidId::BOUNDARY_VELOCITY);
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    const auto volume = s.getValue<Float>(FluidId::VOLUME);
+    const auto velocity = s.getValue<Vector<2>>(FluidId::PAIR_VELOCITY);
+    Size walls = 0, lid = 0;
+    for (Size i = 0; i < s.size(); ++i) {
+        ASSERT_EQ(volume[i], m[i] / rho[i]) << i;  // bitwise: the same division
+        const Vector<2> expected = isFluid(kind[i]) ? v[i] : vb[i];
+        ASSERT_EQ(std::memcmp(&velocity[i], &expected, sizeof expected), 0) << i;
+        if (!isFluid(kind[i])) ++walls, lid += vb[i][0] > 1.5;  // 2 v_wall - v~ under the lid
+    }
+    EXPECT_GT(walls, 0u);
+    EXPECT_GT(lid, 0u) << "no wall particle shows the lid's velocity";
+}
+
+TEST(PairInputs, TermsThatReadThemWithoutItAreRefusedByName) {
+    LidTank tank;
+    SequentialScheduler scheduler;
+    const EquationOfState eos = tank.model.equationOfState();
+    EquationHolder<2> eq = makeTerm<EquationOfStateTerm<2>>(eos);
+    eq += makeTerm<ArtificialViscosity<2>>(0.1, eos.c0);
+    try {
+        Solver<2> solver(scheduler, tank.settings, std::move(eq), tank.geometry.domain);
+        FAIL() << "a solver without PairInputs";
+    } catch (const std::logic_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("ArtificialViscosity"), std::string::npos) << what;
+        EXPECT_NE(what.find("PairInputs"), std::string::npos) << what;
+    }
+    // With it, added before the term, the same set is accepted.
+    EquationHolder<2> fixed = makeTerm<EquationOfStateTerm<2>>(eos);
+    fixed += makeTerm<PairInputs<2>>();
+    fixed += makeTerm<ArtificialViscosity<2>>(0.1, eos.c0);
+    EXPECT_NO_THROW(Solver<2>(scheduler, tank.settings, std::move(fixed), tank.geometry.domain));
+}
+
+}  // namespace

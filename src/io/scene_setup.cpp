@@ -48,9 +48,10 @@ std::shared_ptr<sph::Material> makeMaterial(const MaterialSpec& m, double c0, do
     return mat;
 }
 
-/// The largest initial speed of a fluid block, sampled on its particle lattice.
-template <int Dim>
-double largestBlockSpeed(const FluidBlock<Dim>& f, double dx) {
+/// Calls visit(x) at the points of a fluid block's particle lattice (at most about 10^6 of
+/// them: a coarser sub-lattice for huge blocks).
+template <int Dim, class Visit>
+void forEachBlockSample(const FluidBlock<Dim>& f, double dx, Visit&& visit) {
     const sph::Shape<Dim> shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
     SceneVec<Dim> lo = f.min, hi = f.max;
     if (f.shape != Shape::BOX)
@@ -62,26 +63,35 @@ double largestBlockSpeed(const FluidBlock<Dim>& f, double dx) {
         n[k] = std::max(1L, std::lround((hi[k] - lo[k]) / dx));
         count *= double(n[k]);
     }
-    // At most about 10^6 samples: a coarser sub-lattice for huge blocks.
     const long stride = std::max(1L, long(std::ceil(std::pow(count / 1e6, 1.0 / Dim))));
-    double u = 0;
     std::array<long, Dim> i{};
     while (true) {
         sph::Vector<Dim> x;
         for (int k = 0; k < Dim; ++k) x[k] = lo[k] + (double(i[k]) + 0.5) * dx;
-        if (shape.contains(x)) u = std::max(u, norm(at<Dim>(f.velocity, x, 0.0)));
+        if (shape.contains(x)) visit(x);
         int k = 0;
         while (k < Dim && (i[k] += stride) >= n[k]) i[k] = 0, ++k;
-        if (k == Dim) return u;
+        if (k == Dim) return;
     }
+}
+
+/// The largest initial speed of a fluid block, sampled on its particle lattice.
+template <int Dim>
+double largestBlockSpeed(const FluidBlock<Dim>& f, double dx) {
+    double u = 0;
+    forEachBlockSample(f, dx, [&](const sph::Vector<Dim>& x) {
+        u = std::max(u, norm(at<Dim>(f.velocity, x, 0.0)));
+    });
+    return u;
 }
 
 /// The flow's velocity scale U for "auto" sound speeds (c0 = 10 U), derived from the scene:
 /// the largest of the initial fluid speeds (every lattice point of every block), the speeds
 /// of moving walls and of emitters, and, under gravity, the free-fall speed sqrt(2 g H) over
-/// the domain's height along g where the water has a free surface, or the buoyancy speed
-/// sqrt(g beta dT H) where the fluid fills a closed box. physics.max_speed overrides it. 0 where
-/// none of these gives a speed.
+/// the domain's height along g where the water has a free surface, or, where the fluid fills a
+/// closed box, sqrt(g H) (its hydrostatic compression) and the buoyancy speed sqrt(g beta dT H)
+/// (dT the spread of the fluid temperatures at every lattice point of every block, and of the
+/// walls and bodies). physics.max_speed overrides it. 0 where none of these gives a speed.
 template <int Dim>
 double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
     if (scene.maxSpeed > 0) return scene.maxSpeed;
@@ -113,11 +123,15 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
         if (freeSurface) {
             U = std::max(U, std::sqrt(2 * gravity * height));
         } else {
+            // No fall, but the hydrostatic compression rho0 g H must stay near 1 % of
+            // rho0 c0^2: c0 >= 10 sqrt(g H) (Monaghan 1994, sec. 3).
+            U = std::max(U, std::sqrt(gravity * height));
             double tMin = 1e300, tMax = -1e300, beta = 0;
             auto see = [&](double T) { tMin = std::min(tMin, T), tMax = std::max(tMax, T); };
             for (const auto& f : scene.fluids)
-                see(at<Dim>(f.temperature, f.shape == Shape::BOX ? (f.min + f.max) * 0.5 : f.center,
-                            0.0));
+                forEachBlockSample(f, scene.spacing, [&](const sph::Vector<Dim>& x) {
+                    see(at<Dim>(f.temperature, x, 0.0));
+                });
             for (const auto& b : scene.bodies) see(b.temperature);
             for (int k = 0; k < Dim; ++k)
                 for (const auto& side : scene.sides[k])
@@ -236,7 +250,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         throw sceneError(scene.file, "physics.max_speed",
                          "the largest speed you expect, for the automatic sound speed",
                          "nothing that moves the fluid (no initial velocity, moving wall, "
-                         "emitter, free fall or buoyancy)",
+                         "emitter or gravity)",
                          "or give the material a sound_speed");
     if (!(U > 0)) U = *fluid.soundSpeed / sph::defaults::soundSpeedFactor;
     setup.velocityScale = U;

@@ -161,3 +161,23 @@ TEST(Apps, DefaultScenesAreBuiltIn) {
     EXPECT_EQ(nlohmann::json::parse(r3.output),
               nlohmann::json::parse(readFile(scene("../../../scenes/hot_cold_exchange_3d.json"))));
 }
+
+// Every shipped example scene (scenes/*.json) starts with the app its dimension names: its
+// set-up (sound speed, particles, outputs at t = 0) and a first step succeed.
+TEST(Apps, EveryShippedSceneStarts) {
+    const std::filesystem::path shipped = scene("../../../scenes");
+    int count = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(shipped)) {
+        if (entry.path().extension() != ".json") continue;
+        const auto j = nlohmann::json::parse(readFile(entry.path().string()));
+        const std::string app = j.at("dimension") == 2 ? FLUID_SIM : FLUID_SIM_3D;
+        const std::string dir = freshDir("shipped_" + entry.path().stem().string());
+        const Result r = run(app,
+                             "'" + entry.path().string() +
+                                 "' --out out --end-time 1e-5 --threads 2 --set output.video=false",
+                             dir);
+        EXPECT_EQ(r.code, 0) << entry.path() << ":\n" << r.output;
+        ++count;
+    }
+    EXPECT_GE(count, 5);
+}

@@ -15,39 +15,28 @@
 // at t = 0.9 to 28 s at spacings 0.08 to 0.04); now they run the 40 s (docs/validation.md).
 #pragma once
 
-#include <memory>
-#include <vector>
-
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
 
 namespace num::sph {
 
 template <int Dim>
-struct ContinuityData {
-    std::vector<Vector<Dim>> velocity;  // fluid: v; boundary: zero (held in place)
-};
-
-template <int Dim>
 class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
-    explicit ContinuityDensityPart(std::shared_ptr<const ContinuityData<Dim>> data)
-        : data_(std::move(data)) {}
-
     void create(Accumulated<Dim>& r) override {
         r.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST);
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         kind_ = s.template getValue<int>(QuantityId::KIND);
+        v_ = s.template getDt<Vec>(QuantityId::POSITION);
         volume_ = s.template getValue<Float>(FluidId::VOLUME);
         drho_ = r.template getValue<Float>(QuantityId::DENSITY);
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec& grad) {
-        const ContinuityData<Dim>& d = *data_;
-        const Float div = dot(d.velocity[i] - d.velocity[j], grad);
+        const Float div = dot(velocity(i) - velocity(j), grad);
         if (isFluid(kind_[i])) drho_[i] += rho_[i] * volume_[j] * div;
         if constexpr (Symmetric)
             if (isFluid(kind_[j])) drho_[j] += rho_[j] * volume_[i] * div;
@@ -57,40 +46,33 @@ class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Di
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
                           const NeighbourGeometry<Dim>&) {
         if (!isFluid(kind_[i])) return;
-        const ContinuityData<Dim>& d = *data_;
-        const Vec vi = d.velocity[i];
+        const Vec vi = v_[i];
         const Float rhoi = rho_[i];
         Float sum = drho_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
-            sum += rhoi * volume_[j] * dot(vi - d.velocity[j], grads[k]);
+            sum += rhoi * volume_[j] * dot(vi - velocity(j), grads[k]);
         }
         drho_[i] = sum;
     }
 
   private:
-    std::shared_ptr<const ContinuityData<Dim>> data_;
+    /// A boundary particle's velocity here is zero: it is held in place.
+    Vec velocity(Size j) const { return isFluid(kind_[j]) ? v_[j] : Vec{}; }
+
     ArrayView<const Float> rho_, volume_;
     ArrayView<const int> kind_;
+    ArrayView<const Vec> v_;
     ArrayView<Float> drho_;
 };
 
 template <int Dim>
 class ContinuityDensity : public IEquationTerm<Dim> {
   public:
-    using Vec = Vector<Dim>;
     void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings&) override {
-        d.template require<ContinuityDensityPart<Dim>>(data_);
+        d.template require<ContinuityDensityPart<Dim>>();
     }
-    void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
-        const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-        const auto kind = s.template getValue<int>(QuantityId::KIND);
-        ContinuityData<Dim>& d = *data_;
-        d.velocity.resize(s.size());
-        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
-            for (Size i = b; i < e; ++i) d.velocity[i] = isFluid(kind[i]) ? v[i] : Vec{};
-        });
-    }
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     TermAccess access() const override {
         return {.reads = {QuantityId::DENSITY}, .needs = {pairVolume}};
@@ -99,9 +81,6 @@ class ContinuityDensity : public IEquationTerm<Dim> {
         s.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST,
                                  material.params().template get<double>("density"));
     }
-
-  private:
-    std::shared_ptr<ContinuityData<Dim>> data_ = std::make_shared<ContinuityData<Dim>>();
 };
 
 }  // namespace num::sph

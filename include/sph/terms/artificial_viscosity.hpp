@@ -8,9 +8,6 @@
 // terms/pair_inputs.hpp).
 #pragma once
 
-#include <memory>
-#include <vector>
-
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
 

@@ -42,7 +42,6 @@
 #include <algorithm>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <vector>
 
 #include "sph/kernel_choice.hpp"
@@ -55,7 +54,6 @@ namespace num::sph {
 template <int Dim>
 struct ShiftingData {
     std::vector<Float> inverseWAtSpacing;  // 1 / W(dx_i), dx_i = V_i^(1/Dim) the local spacing
-    std::vector<char> boundary;            // a wall or body particle
 };
 
 template <int Dim>
@@ -80,6 +78,7 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        kind_ = s.template getValue<int>(QuantityId::KIND);
         volume_ = s.template getValue<Float>(FluidId::VOLUME);
         velocity_ = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         gradC_ = r.template getValue<Vec>(FluidId::KERNEL_SUM_GRADIENT);
@@ -99,10 +98,10 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
         const Vec gradR = grad * (1 + r);
         gradC_[i] += gradR * vj;
         gradRho_[i] += grad * (vj * drho);
-        if (d.boundary[j]) wallDirection_[i] += grad * vj;
+        if (!isFluid(kind_[j])) wallDirection_[i] += grad * vj;
         for (int b = 0; b < Dim; ++b) gradV_[b][i] += dv * (vj * grad[b]);
         if constexpr (Symmetric) {
-            if (d.boundary[i]) wallDirection_[j] -= grad * vi;
+            if (!isFluid(kind_[i])) wallDirection_[j] -= grad * vi;
             gradC_[j] -= gradR * vi;
             gradRho_[j] += grad * (vi * drho);
             for (int b = 0; b < Dim; ++b) gradV_[b][j] += dv * (vi * grad[b]);
@@ -114,6 +113,7 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
   private:
     std::shared_ptr<const ShiftingData<Dim>> data_;
     ArrayView<const Float> rho_, volume_;
+    ArrayView<const int> kind_;
     ArrayView<const Vec> velocity_;
     ArrayView<Vec> gradC_, gradRho_;
     ArrayView<Vec> wallDirection_;
@@ -136,23 +136,17 @@ class ParticleShifting : public IEquationTerm<Dim> {
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
         const auto volume = s.template getValue<Float>(FluidId::VOLUME);
-        const auto kind = s.template getValue<int>(QuantityId::KIND);
         ShiftingData<Dim>& d = *data_;
-        d.inverseWAtSpacing.resize(s.size()), d.boundary.resize(s.size());
+        d.inverseWAtSpacing.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
-            for (Size i = b; i < e; ++i) {
+            for (Size i = b; i < e; ++i)
                 d.inverseWAtSpacing[i] = 1 / kernel_->W(std::pow(volume[i], 1.0 / Dim));
-                d.boundary[i] = !isFluid(kind[i]);
-            }
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     /// Moves the fluid particles by dr (the equation at the top) with the sums of the step's
     /// last evaluation; dt is the step.
     void postStep(IScheduler& scheduler, Storage<Dim>& s, Float, Float dt) override {
-        if (data_->boundary.size() != s.size())
-            throw std::logic_error(
-                "ParticleShifting::postStep: the storage changed size since the last evaluation");
         auto x = s.template getValue<Vec>(QuantityId::POSITION);
         auto v = s.template getDt<Vec>(QuantityId::POSITION);
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);

@@ -73,7 +73,6 @@ class PhysicalCheck {
                                number(c0_) +
                                " m/s: the run left the weakly-compressible model; raise the "
                                "material's sound_speed or physics.max_speed, or lower time.cfl");
-        const bool thin = rhoMin < rho0_ * (1 - WARN_DENSITY) && rho0_ - rhoMin >= rhoMax - rho0_;
         if (rhoMin < 0.5 * rho0_ || rhoMax > 2 * rho0_) {
             const bool low = rhoMin < 0.5 * rho0_;
             throw AppError(ExitCode::UNSTABLE,
@@ -95,6 +94,8 @@ class PhysicalCheck {
         } else if (!densityWarned_ &&
                    (rhoMax > rho0_ * (1 + WARN_DENSITY) || rhoMin < rho0_ * (1 - WARN_DENSITY))) {
             densityWarned_ = true;
+            // Named: the particle furthest from rest, below or above.
+            const bool thin = rho0_ - rhoMin >= rhoMax - rho0_;
             warning = at + "the fluid density ranges over " + number(rhoMin) + " to " +
                       number(rhoMax) + " kg/m^3 (" + (thin ? "the lowest" : "the highest") +
                       (thin ? where(thinnest, localRhoMin == rhoMin)

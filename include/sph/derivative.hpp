@@ -193,6 +193,14 @@ class IDerivative {
                                 const NeighbourGeometry<Dim>& geometry) = 0;
     /// True if eval needs kernel values W (e.g. density summation), not only gradients.
     virtual bool needsKernelValues() const { return false; }
+    /// Gather (asymmetric) evaluation: true if this derivative adds anything for boundary
+    /// particle i (a wall or body). The pair loop skips the boundary particles for which no
+    /// derivative of the pass does; a derivative is still called for one that another needs.
+    /// True by default; called after initialize.
+    virtual bool gathersAtBoundary(Size i) const {
+        (void)i;
+        return true;
+    }
 };
 
 /// CRTP helper: write one `template <bool Symmetric> void eval(Size i, Size j, const Vector& grad)`
@@ -268,6 +276,10 @@ class FusedDerivative : public DerivativeTemplate<FusedDerivative<Dim, Parts...>
     bool needsKernelValues() const override {
         return std::apply([](const auto&... p) { return (p.needsKernelValues() || ...); }, parts_);
     }
+    bool gathersAtBoundary(Size i) const override {
+        return std::apply([i](const auto&... p) { return (p.gathersAtBoundary(i) || ...); },
+                          parts_);
+    }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vector<Dim>& grad, const PairGeometry<Dim>& pair) {
         std::apply([&](auto&... p) { (p.template evalPair<Symmetric>(i, j, grad, pair), ...); },
@@ -316,6 +328,7 @@ class OptionalPart : public DerivativeTemplate<OptionalPart<Part, Dim>, Dim> {
                                        [&] { return "the derivative " + typeName(*part_); });
     }
     bool needsKernelValues() const override { return part_ && part_->needsKernelValues(); }
+    bool gathersAtBoundary(Size i) const override { return part_ && part_->gathersAtBoundary(i); }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vector<Dim>& grad, const PairGeometry<Dim>& pair) {
         if (part_) part_->template evalPair<Symmetric>(i, j, grad, pair);
@@ -403,6 +416,12 @@ class DerivativeHolder {
     bool needsKernelValues() const {
         for (const auto& d : derivatives_)
             if (d->needsKernelValues()) return true;
+        return false;
+    }
+    /// True if a derivative adds anything for boundary particle i in the gather evaluation.
+    bool gathersAtBoundary(Size i) const {
+        for (const auto& d : derivatives_)
+            if (d->gathersAtBoundary(i)) return true;
         return false;
     }
     void create(Accumulated<Dim>& r) {

@@ -186,7 +186,8 @@ class Solver {
         return limits;
     }
 
-    /// Mean number of neighbours per particle in the last evaluation (each pair counted twice).
+    /// Mean number of neighbours per particle the last evaluation gathered for (each pair
+    /// counted twice).
     double meanNeighbours() const { return meanNeighbours_; }
     /// The neighbour lists of the last evaluation.
     const VerletList<Dim>& neighbours() const { return neighbours_; }
@@ -231,7 +232,7 @@ class Solver {
         typename VerletList<Dim>::Neighbours found;
         std::vector<Vec> grads;
         std::vector<Float> r, w;
-        std::size_t pairs = 0;
+        std::size_t pairs = 0, evaluated = 0;
     };
 
     static void zeroHighestDerivatives(Storage<Dim>& storage) {
@@ -253,10 +254,14 @@ class Solver {
         const Float h = kernel_.h;
         const GradientFactor<Kernel> gradient(h);
         const char* owned = decomposition_ ? decomposition_->owned().data() : nullptr;
+        // Gathering, a boundary particle is skipped unless a derivative adds anything for it.
+        const int* kind = !symmetric_ && storage.has(QuantityId::KIND)
+                              ? storage.template getValue<int>(QuantityId::KIND).data()
+                              : nullptr;
         scheduler_.parallelFor(Size(blocks), 1, [&](Size b0, Size b1) {
             for (Size b = b0; b < b1; ++b) {
                 Scratch& sc = scratch_[b];
-                sc.pairs = 0;
+                sc.pairs = 0, sc.evaluated = 0;
                 const Size begin = Size(n * b / blocks), end = Size(n * (b + 1) / blocks);
                 for (Size i = begin; i < end; ++i) {
                     if ((i - begin) % kAbandonCheckEvery == 0 && abandonCheck_ &&
@@ -265,6 +270,10 @@ class Solver {
                         break;
                     }
                     if (owned && !owned[i]) continue;  // a halo copy: its owner evaluates it
+                    if (kind && kind[i] != int(ParticleKind::FLUID) &&
+                        !pass.holders[b].gathersAtBoundary(i))
+                        continue;
+                    ++sc.evaluated;
                     const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)
                                               : neighbours_.collect(i, sc.found);
                     sc.pairs += m;
@@ -290,12 +299,10 @@ class Solver {
                 }
             }
         });
-        std::int64_t pairs = 0, evaluated = std::int64_t(n);
-        for (const Scratch& sc : scratch_) pairs += std::int64_t(sc.pairs);
-        if (owned) {
-            evaluated = std::count(owned, owned + n, char(1));
-            pairs = decomposition_->sum(pairs), evaluated = decomposition_->sum(evaluated);
-        }
+        std::int64_t pairs = 0, evaluated = 0;
+        for (const Scratch& sc : scratch_)
+            pairs += std::int64_t(sc.pairs), evaluated += std::int64_t(sc.evaluated);
+        if (owned) pairs = decomposition_->sum(pairs), evaluated = decomposition_->sum(evaluated);
         meanNeighbours_ =
             evaluated ? double(pairs) * (symmetric_ ? 2.0 : 1.0) / double(evaluated) : 0.0;
     }

@@ -20,6 +20,8 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
     ArtificialViscosityPart(Float alpha, Float c0, Float h)
         : alphaC0h_(alpha * c0 * h), eta2_(0.01 * h * h) {}
 
+    /// The gather writes fluid particles only.
+    bool gathersAtBoundary(Size) const override { return false; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);
     }

@@ -24,6 +24,8 @@ template <int Dim>
 class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
+    /// The gather writes fluid particles only (walls and bodies hold their density).
+    bool gathersAtBoundary(Size) const override { return false; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST);
     }

@@ -30,6 +30,8 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
     DeltaSphPart(std::shared_ptr<const DeltaSphData<Dim>> data, Float delta, Float c0, Float h)
         : data_(std::move(data)), coefficient_(2 * delta * h * c0), eta2_(0.01 * h * h) {}
 
+    /// The gather writes fluid particles only.
+    bool gathersAtBoundary(Size) const override { return false; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST);
     }

@@ -43,6 +43,8 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
     explicit KernelSumPart(Float w0) : w0_(w0) {}
 
     bool needsKernelValues() const override { return true; }
+    /// The gather writes fluid particles' sums only: a boundary particle's is never read.
+    bool gathersAtBoundary(Size) const override { return false; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO);
         r.template insert<Float>(FluidId::SURFACE_NEIGHBOURS, OrderEnum::ZERO);

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 #include "sph/defaults.hpp"
 
@@ -37,6 +38,11 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
   public:
     explicit HeatConductionDerivative(Float h) : eta2_(defaults::laplacianEta2 * h * h) {}
 
+    /// A boundary particle's conduction sum is needed unless it is adiabatic (a fixed
+    /// temperature's for the books of thermal_walls.hpp, a conducting body's for its own T).
+    bool gathersAtBoundary(Size i) const override {
+        return cond_[i] != int(ThermalCondition::ADIABATIC);
+    }
     void create(Accumulated<Dim>& results) override {
         results.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST);
     }
@@ -49,8 +55,7 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
             k_[m] = table[m].conductivity;
             invC_[m] = 1.0 / table[m].heatCapacity;
         }
-        // Zeros stand in for a missing material or condition quantity (kept empty otherwise:
-        // every block of the pair loop has its own copy of this derivative).
+        // Zeros stand in for a missing material or condition quantity (kept empty otherwise).
         const bool needZeros = !s.has(QuantityId::MATERIAL) || !s.has(heat_ids::THERMAL_CONDITION);
         zeros_.assign(needZeros ? s.size() : 0, 0);
         if (s.has(QuantityId::MATERIAL)) {
@@ -66,13 +71,16 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
         } else {
             cond_ = zeros_;
         }
-        T_ = s.template getValue<Float>(QuantityId::TEMPERATURE);
-        Tfixed_ = s.has(heat_ids::BOUNDARY_TEMPERATURE)
-                      ? s.template getValue<Float>(heat_ids::BOUNDARY_TEMPERATURE)
-                      : T_;
-        m_ = s.template getValue<Float>(QuantityId::MASS);
-        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
-        dT_ = results.template getValue<Float>(QuantityId::TEMPERATURE);
+        bindStates(s, results);
+    }
+    /// Shares block 0's material table and its checked material and condition views: the
+    /// check of every particle's material runs once per evaluation, not once per block.
+    void initializeLike(const IDerivative<Dim>& first, const Storage<Dim>& s,
+                        Accumulated<Dim>& results) override {
+        const auto& block0 = static_cast<const HeatConductionDerivative&>(first);
+        k_ = block0.k_, invC_ = block0.invC_;
+        mat_ = block0.mat_, cond_ = block0.cond_;
+        bindStates(s, results);
     }
 
     template <bool Symmetric>
@@ -91,6 +99,15 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
     }
 
   private:
+    void bindStates(const Storage<Dim>& s, Accumulated<Dim>& results) {
+        T_ = s.template getValue<Float>(QuantityId::TEMPERATURE);
+        Tfixed_ = s.has(heat_ids::BOUNDARY_TEMPERATURE)
+                      ? s.template getValue<Float>(heat_ids::BOUNDARY_TEMPERATURE)
+                      : T_;
+        m_ = s.template getValue<Float>(QuantityId::MASS);
+        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        dT_ = results.template getValue<Float>(QuantityId::TEMPERATURE);
+    }
     Float eta2_;
     std::vector<Float> k_, invC_;
     std::vector<int> zeros_;
@@ -138,12 +155,17 @@ class HeatConduction : public IEquationTerm<Dim> {
             s.has(heat_ids::THERMAL_CONDITION)
                 ? s.template getValue<int>(heat_ids::THERMAL_CONDITION)
                 : ArrayView<const int>(zeros);
+        // alpha = k / (rho c) is largest at a material's smallest density: one division per
+        // material (rounding is monotonic, so this is bitwise the largest alpha of a particle).
+        std::vector<Float> rhoMin(table.size(), std::numeric_limits<Float>::infinity());
+        for (Size i = 0; i < s.size(); ++i)
+            if (cond[i] != int(ThermalCondition::ADIABATIC))
+                rhoMin[mat[i]] = std::min(rhoMin[mat[i]], rho[i]);
         Float alphaMax = 0;
-        for (Size i = 0; i < s.size(); ++i) {
-            if (cond[i] == int(ThermalCondition::ADIABATIC)) continue;
-            const ThermalMaterial& m = table[mat[i]];
-            alphaMax = std::max(alphaMax, m.conductivity / (rho[i] * m.heatCapacity));
-        }
+        for (std::size_t m = 0; m < table.size(); ++m)
+            if (rhoMin[m] < std::numeric_limits<Float>::infinity())
+                alphaMax =
+                    std::max(alphaMax, table[m].conductivity / (rhoMin[m] * table[m].heatCapacity));
         const Float h = settings.get<double>("smoothing_length");
         if (alphaMax > 0)
             limits.offer("diffusion", settings.get<double>("diffusion_factor") * h * h / alphaMax);

@@ -30,6 +30,8 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
     LaminarViscosityPart(std::shared_ptr<const ViscousData<Dim>> data, Float h)
         : data_(std::move(data)), eta2_(defaults::laplacianEta2 * h * h) {}
 
+    /// The gather writes fluid particles only.
+    bool gathersAtBoundary(Size) const override { return false; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);
     }

@@ -69,6 +69,8 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
         : data_(std::move(data)) {}
 
     bool needsKernelValues() const override { return true; }
+    /// The gather writes fluid particles' sums only: only they are shifted.
+    bool gathersAtBoundary(Size) const override { return false; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Vec>(FluidId::KERNEL_SUM_GRADIENT, OrderEnum::ZERO);
         r.template insert<Vec>(FluidId::DENSITY_GRADIENT, OrderEnum::ZERO);

@@ -24,6 +24,8 @@ class PressureGradientPart : public DerivativeTemplate<PressureGradientPart<Dim>
     explicit PressureGradientPart(std::shared_ptr<const PressureGradientData> data)
         : data_(std::move(data)) {}
 
+    /// The gather writes fluid particles only.
+    bool gathersAtBoundary(Size) const override { return false; }
     void create(Accumulated<Dim>& r) override {
         r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);
     }

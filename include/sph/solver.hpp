@@ -270,8 +270,7 @@ class Solver {
                         break;
                     }
                     if (owned && !owned[i]) continue;  // a halo copy: its owner evaluates it
-                    if (kind && kind[i] != int(ParticleKind::FLUID) &&
-                        !pass.holders[b].gathersAtBoundary(i))
+                    if (kind && !isFluid(kind[i]) && !pass.holders[b].gathersAtBoundary(i))
                         continue;
                     ++sc.evaluated;
                     const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)

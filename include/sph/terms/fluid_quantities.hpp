@@ -46,6 +46,4 @@ inline constexpr QuantityId PAIR_VELOCITY = QuantityId(112);
 
 enum class WallSlip : int { NO_SLIP = 0, FREE_SLIP = 1 };
 
-inline bool isFluid(int kind) { return kind == int(ParticleKind::FLUID); }
-
 }  // namespace num::sph

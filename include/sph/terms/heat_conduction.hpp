@@ -147,7 +147,9 @@ class HeatConduction : public IEquationTerm<Dim> {
                        TimeStepLimits& limits) const override {
         const std::vector<ThermalMaterial> table = thermalMaterials(s);
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
-        const std::vector<int> zeros(s.size(), 0);
+        // Zeros stand in for a missing material or condition quantity (empty otherwise).
+        const bool needZeros = !s.has(QuantityId::MATERIAL) || !s.has(heat_ids::THERMAL_CONDITION);
+        const std::vector<int> zeros(needZeros ? s.size() : 0, 0);
         const ArrayView<const int> mat = s.has(QuantityId::MATERIAL)
                                              ? s.template getValue<int>(QuantityId::MATERIAL)
                                              : ArrayView<const int>(zeros);

@@ -36,13 +36,10 @@ Storage<2> particlesWithSurface() {
     Storage<2> s = enginetest::randomParticles<2>(300, 11);
     std::vector<int> kind(s.size());
     std::vector<Float> previous(s.size());
-    std::vector<V2> normal(s.size());
     for (Size i = 0; i < s.size(); ++i) {
         kind[i] = i % 5 == 0 ? int(ParticleKind::WALL) : int(ParticleKind::FLUID);
         previous[i] = i % 3 == 0 ? 0.1 : 2.0;
-        normal[i] = V2{std::cos(0.7 * Float(i)), std::sin(0.7 * Float(i))};  // walls' own
     }
-    s.insert<V2>(QuantityId::NORMAL, OrderEnum::ZERO, normal);
     s.insert<int>(QuantityId::KIND, OrderEnum::ZERO, kind);
     s.insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, previous);
     s.insert<V2>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, V2{0.25, -0.5});

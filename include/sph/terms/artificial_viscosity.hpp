@@ -4,11 +4,8 @@
 //   mu_ij = h v_ij . r_ij / (r_ij^2 + eta^2),  rho_ij = (rho_i + rho_j) / 2,  eta^2 = 0.01 h^2.
 // Acts only between approaching particles; antisymmetric, so momentum is conserved. For a
 // viscous flow it corresponds to nu = alpha h c0 / (2 (Dim + 2)) (Monaghan 2005, sec. 5.4).
-// Against a boundary particle j (wall or body) only the part of v_ij along the boundary's normal
-// n_j counts, v_ij -> (v_ij . n_j) n_j: the term damps the approach to a wall but is no wall
-// friction (the tangential part would act as a viscosity alpha h c0 / 8, about 100 times water's
-// in a dam break, and turn the surge front into a blunt bore). Boundary particles show the wall
-// condition's velocity (FluidId::PAIR_VELOCITY, terms/pair_inputs.hpp).
+// Boundary particles show the wall condition's velocity (FluidId::PAIR_VELOCITY,
+// terms/pair_inputs.hpp).
 #pragma once
 
 #include "sph/terms/fluid_quantities.hpp"
@@ -33,16 +30,13 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         kind_ = s.template getValue<int>(QuantityId::KIND);
         v_ = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
-        normal_ = s.template getValue<Vec>(QuantityId::NORMAL);
         a_ = r.template getValue<Vec>(QuantityId::POSITION);
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
         const bool fi = isFluid(kind_[i]), fj = isFluid(kind_[j]);
         if (!(fi || (Symmetric && fj))) return;
-        const Vec du = v_[i] - v_[j];
-        const Float vr =
-            fi && fj ? dot(du, pair.dx) : wallNormalPart(du, normal_[fi ? j : i], pair.dx);
+        const Float vr = dot(v_[i] - v_[j], pair.dx);
         if (vr >= 0) return;
         // Pi_ij = -alpha c0 h vr / ((r^2 + eta^2) rho_ij)
         const Float pi = -alphaC0h_ * vr / ((pair.r * pair.r + eta2_) * 0.5 * (rho_[i] + rho_[j]));
@@ -62,9 +56,7 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
             const Float r = geometry.r[k];
-            const Vec du = vi - v_[j];
-            const Float vr = isFluid(kind_[j]) ? dot(du, geometry.dx[k])
-                                               : wallNormalPart(du, normal_[j], geometry.dx[k]);
+            const Float vr = dot(vi - v_[j], geometry.dx[k]);
             if (vr >= 0) continue;
             const Float pi = -alphaC0h_ * vr / ((r * r + eta2_) * 0.5 * (rhoi + rho_[j]));
             sum -= grads[k] * pi * m_[j];
@@ -73,15 +65,10 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
     }
 
   private:
-    /// (v_ij . n) (n . r_ij): v_ij . r_ij with v_ij's part along the boundary normal n only.
-    static Float wallNormalPart(const Vec& du, const Vec& n, const Vec& dx) {
-        return dot(du, n) * dot(n, dx);
-    }
-
     Float alphaC0h_, eta2_;
     ArrayView<const Float> m_, rho_;
     ArrayView<const int> kind_;
-    ArrayView<const Vec> v_, normal_;
+    ArrayView<const Vec> v_;
     ArrayView<Vec> a_;
 };
 
@@ -98,7 +85,7 @@ class ArtificialViscosity : public IEquationTerm<Dim> {
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     TermAccess access() const override {
-        return {.reads = {QuantityId::DENSITY, QuantityId::NORMAL}, .needs = {pairVelocity}};
+        return {.reads = {QuantityId::DENSITY}, .needs = {pairVelocity}};
     }
     void create(Storage<Dim>&, IMaterial&) const override {}
 

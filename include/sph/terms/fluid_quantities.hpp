@@ -32,13 +32,10 @@ inline constexpr QuantityId DENSITY_GRADIENT = QuantityId(108);
 /// sum_j V_j W_ij over the neighbours j that were at a free surface (C_j < 0.9) in the previous
 /// evaluation (Float): > 0 within one kernel support of a free surface.
 inline constexpr QuantityId SURFACE_NEIGHBOURS = QuantityId(109);
-/// sum_j V_j W_ij n_j over the boundary neighbours j (walls and bodies, n_j their NORMAL) of
-/// the last evaluation (Vector): points away from the walls within one kernel support of them,
-/// zero elsewhere; from particle shifting.
+/// sum_j V_j grad_i W_ij over the boundary neighbours j (walls and bodies) of the last
+/// evaluation (Vector): points towards the walls within one kernel support of them, zero
+/// elsewhere; from particle shifting.
 inline constexpr QuantityId WALL_DIRECTION = QuantityId(110);
-/// sum_j V_j W_ij over the same boundary neighbours (Float): |WALL_DIRECTION| equals it where
-/// every wall in the support faces one way, and is shorter at a corner.
-inline constexpr QuantityId WALL_WEIGHT = QuantityId(113);
 /// Per-particle inputs of the pair terms, prepared once per evaluation by PairInputs
 /// (terms/pair_inputs.hpp) after the wall condition: the volume m / rho (Float) and the
 /// velocity a particle shows its neighbours (Vector): v for fluid, BOUNDARY_VELOCITY for wall

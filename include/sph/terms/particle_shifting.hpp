@@ -23,14 +23,9 @@
 // one are not shifted: there grad C points into the fluid because the support is cut, and
 // shifting would push particles out through the surface (measured: a 2D tank at rest rose by
 // 2.5 % of its depth and churned at 0.8 m/s within 3 s). Within a kernel support of a wall or
-// body, the component of dr along the wall direction n_i = sum_{j wall} V_j W_ij n_j (n_j the
-// boundary particle's normal) is removed, dr -= n (dr . n) / |n|^2: particles are shifted along
-// walls, never towards or away from them, as at a free surface (Lind et al. 2012, sec. 3.3).
-// At a corner no direction is along every wall: there (|n_i| < 0.9 sum_{j wall} V_j W_ij, the
-// walls' normals differ) dr is not restricted. Restricted to the bisector's normal, the shift
-// pushed corner particles into one wall and away from the other: in a 2D tank at rest the
-// corner particles rattled at 0.09 m/s once the wall friction of the artificial viscosity was
-// gone (terms/artificial_viscosity.hpp). The wall's dummy particles keep
+// body, the component of dr along the wall direction n_i = sum_{j wall} V_j grad_i W_ij is
+// removed, dr -= n (dr . n) / |n|^2: particles are shifted along walls, never towards or away
+// from them, as at a free surface (Lind et al. 2012, sec. 3.3). The wall's dummy particles keep
 // a concentration gradient across the boundary layer; shifting along it moves particles
 // against the pressure that holds them, which acts as a flow through the wall and damps the
 // boundary layer. Measured at 50 x 50 (largest error on the references / their scale):
@@ -80,7 +75,6 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
         r.template insert<Vec>(FluidId::KERNEL_SUM_GRADIENT, OrderEnum::ZERO);
         r.template insert<Vec>(FluidId::DENSITY_GRADIENT, OrderEnum::ZERO);
         r.template insert<Vec>(FluidId::WALL_DIRECTION, OrderEnum::ZERO);
-        r.template insert<Float>(FluidId::WALL_WEIGHT, OrderEnum::ZERO);
         for (int b = 0; b < Dim; ++b)
             r.template insert<Vec>(velocityGradientId<Dim>(b), OrderEnum::ZERO);
     }
@@ -92,8 +86,6 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
         gradC_ = r.template getValue<Vec>(FluidId::KERNEL_SUM_GRADIENT);
         gradRho_ = r.template getValue<Vec>(FluidId::DENSITY_GRADIENT);
         wallDirection_ = r.template getValue<Vec>(FluidId::WALL_DIRECTION);
-        wallWeight_ = r.template getValue<Float>(FluidId::WALL_WEIGHT);
-        normal_ = s.template getValue<Vec>(QuantityId::NORMAL);
         for (int b = 0; b < Dim; ++b)
             gradV_[b] = r.template getValue<Vec>(velocityGradientId<Dim>(b));
     }
@@ -108,16 +100,10 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
         const Vec gradR = grad * (1 + r);
         gradC_[i] += gradR * vj;
         gradRho_[i] += grad * (vj * drho);
-        if (!isFluid(kind_[j])) {
-            wallDirection_[i] += normal_[j] * (vj * pair.w);
-            wallWeight_[i] += vj * pair.w;
-        }
+        if (!isFluid(kind_[j])) wallDirection_[i] += grad * vj;
         for (int b = 0; b < Dim; ++b) gradV_[b][i] += dv * (vj * grad[b]);
         if constexpr (Symmetric) {
-            if (!isFluid(kind_[i])) {
-                wallDirection_[j] += normal_[i] * (vi * pair.w);
-                wallWeight_[j] += vi * pair.w;
-            }
+            if (!isFluid(kind_[i])) wallDirection_[j] -= grad * vi;
             gradC_[j] -= gradR * vi;
             gradRho_[j] += grad * (vi * drho);
             for (int b = 0; b < Dim; ++b) gradV_[b][j] += dv * (vi * grad[b]);
@@ -130,10 +116,9 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
     std::shared_ptr<const ShiftingData<Dim>> data_;
     ArrayView<const Float> rho_, volume_;
     ArrayView<const int> kind_;
-    ArrayView<const Vec> velocity_, normal_;
+    ArrayView<const Vec> velocity_;
     ArrayView<Vec> gradC_, gradRho_;
     ArrayView<Vec> wallDirection_;
-    ArrayView<Float> wallWeight_;
     std::array<ArrayView<Vec>, Dim> gradV_;
 };
 
@@ -171,7 +156,6 @@ class ParticleShifting : public IEquationTerm<Dim> {
         const auto c = s.template getValue<Float>(FluidId::KERNEL_SUM);
         const auto nearSurface = s.template getValue<Float>(FluidId::SURFACE_NEIGHBOURS);
         const auto wallDirection = s.template getValue<Vec>(FluidId::WALL_DIRECTION);
-        const auto wallWeight = s.template getValue<Float>(FluidId::WALL_WEIGHT);
         const auto gradC = s.template getValue<Vec>(FluidId::KERNEL_SUM_GRADIENT);
         const auto gradRho = s.template getValue<Vec>(FluidId::DENSITY_GRADIENT);
         std::array<ArrayView<const Vec>, Dim> gradV;
@@ -190,8 +174,8 @@ class ParticleShifting : public IEquationTerm<Dim> {
                     continue;
                 Vec dr = gradC[i] * (-diffusion);
                 const Vec& n = wallDirection[i];
-                if (!normalToWalls_ && alongOneWall(n, wallWeight[i]))
-                    dr -= n * (dot(dr, n) / normSqr(n));
+                if (const Float nn = normSqr(n); !normalToWalls_ && nn > 0)
+                    dr -= n * (dot(dr, n) / nn);
                 const Float len = norm(dr);
                 if (len > cap) dr *= cap / len;
                 x[i] += dr;
@@ -202,10 +186,10 @@ class ParticleShifting : public IEquationTerm<Dim> {
         });
     }
     TermAccess access() const override {
-        return {.reads = {QuantityId::DENSITY, QuantityId::NORMAL},
+        return {.reads = {QuantityId::DENSITY},
                 .needs = {pairVolume, pairVelocity},
                 .produces = {FluidId::KERNEL_SUM_GRADIENT, FluidId::DENSITY_GRADIENT,
-                             FluidId::WALL_DIRECTION, FluidId::WALL_WEIGHT}};
+                             FluidId::WALL_DIRECTION}};
     }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Vec>(QuantityId::SHIFT, OrderEnum::ZERO, Vec{});
@@ -214,17 +198,9 @@ class ParticleShifting : public IEquationTerm<Dim> {
         s.template insert<Vec>(FluidId::KERNEL_SUM_GRADIENT, OrderEnum::ZERO, Vec{});
         s.template insert<Vec>(FluidId::DENSITY_GRADIENT, OrderEnum::ZERO, Vec{});
         s.template insert<Vec>(FluidId::WALL_DIRECTION, OrderEnum::ZERO, Vec{});
-        s.template insert<Float>(FluidId::WALL_WEIGHT, OrderEnum::ZERO, 0.0);
         for (int b = 0; b < Dim; ++b)
             s.template insert<Vec>(velocityGradientId<Dim>(b), OrderEnum::ZERO, Vec{});
     }
-
-    /// Within a support of walls that all face one way (|n| >= 0.9 of the walls' kernel weight):
-    /// not at a corner, and not away from every wall (weight 0).
-    static bool alongOneWall(const Vec& n, Float weight) {
-        return weight > 0 && normSqr(n) >= (cornerRatio * weight) * (cornerRatio * weight);
-    }
-    static constexpr Float cornerRatio = 0.9;
 
   private:
     Float coefficient_, soundSpeed_;

@@ -24,6 +24,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <tuple>
+#include <utility>
 #include <vector>
 #include "sph/defaults.hpp"
 
@@ -31,6 +33,20 @@
 #include "sph/equation_term.hpp"
 
 namespace num::sph {
+
+/// Every particle's material index and thermal condition. A storage without the quantity reads
+/// as zeros (the first material; CONDUCTING), kept in `zeros`, which stays empty otherwise.
+template <int Dim>
+std::pair<ArrayView<const int>, ArrayView<const int>> materialAndCondition(
+    const Storage<Dim>& s, std::vector<int>& zeros) {
+    const bool hasMaterial = s.has(QuantityId::MATERIAL);
+    const bool hasCondition = s.has(heat_ids::THERMAL_CONDITION);
+    zeros.assign(hasMaterial && hasCondition ? 0 : s.size(), 0);
+    return {
+        hasMaterial ? s.template getValue<int>(QuantityId::MATERIAL) : ArrayView<const int>(zeros),
+        hasCondition ? s.template getValue<int>(heat_ids::THERMAL_CONDITION)
+                     : ArrayView<const int>(zeros)};
+}
 
 /// The pair sum of the conduction operator, accumulated directly into dT/dt.
 template <int Dim>
@@ -55,22 +71,11 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
             k_[m] = table[m].conductivity;
             invC_[m] = 1.0 / table[m].heatCapacity;
         }
-        // Zeros stand in for a missing material or condition quantity (kept empty otherwise).
-        const bool needZeros = !s.has(QuantityId::MATERIAL) || !s.has(heat_ids::THERMAL_CONDITION);
-        zeros_.assign(needZeros ? s.size() : 0, 0);
-        if (s.has(QuantityId::MATERIAL)) {
-            mat_ = s.template getValue<int>(QuantityId::MATERIAL);
+        std::tie(mat_, cond_) = materialAndCondition(s, zeros_);
+        if (s.has(QuantityId::MATERIAL))  // stand-in zeros need no check
             for (int m : mat_)
                 if (m < 0 || std::size_t(m) >= table.size())
                     throw std::out_of_range("heat conduction: material index out of the table");
-        } else {
-            mat_ = zeros_;
-        }
-        if (s.has(heat_ids::THERMAL_CONDITION)) {
-            cond_ = s.template getValue<int>(heat_ids::THERMAL_CONDITION);
-        } else {
-            cond_ = zeros_;
-        }
         bindStates(s, results);
     }
     /// Shares block 0's material table and its checked material and condition views: the
@@ -147,16 +152,8 @@ class HeatConduction : public IEquationTerm<Dim> {
                        TimeStepLimits& limits) const override {
         const std::vector<ThermalMaterial> table = thermalMaterials(s);
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
-        // Zeros stand in for a missing material or condition quantity (empty otherwise).
-        const bool needZeros = !s.has(QuantityId::MATERIAL) || !s.has(heat_ids::THERMAL_CONDITION);
-        const std::vector<int> zeros(needZeros ? s.size() : 0, 0);
-        const ArrayView<const int> mat = s.has(QuantityId::MATERIAL)
-                                             ? s.template getValue<int>(QuantityId::MATERIAL)
-                                             : ArrayView<const int>(zeros);
-        const ArrayView<const int> cond =
-            s.has(heat_ids::THERMAL_CONDITION)
-                ? s.template getValue<int>(heat_ids::THERMAL_CONDITION)
-                : ArrayView<const int>(zeros);
+        std::vector<int> zeros;
+        const auto [mat, cond] = materialAndCondition(s, zeros);
         // alpha = k / (rho c) is largest at a material's smallest density: one division per
         // material (rounding is monotonic, so this is bitwise the largest alpha of a particle).
         std::vector<Float> rhoMin(table.size(), std::numeric_limits<Float>::infinity());

@@ -49,6 +49,9 @@ inline constexpr bool freeSurfaceNoTension = true;
 // guard against r -> 0. Morris et al. (1997) use 0.01, which makes the Laplacian 1.3 % weak on
 // a lattice at h = 1.5 dx and the Taylor-Green vortex decay 2.4 % too slowly; 0.001: 0.15 %.
 inline constexpr double laplacianEta2 = 0.001;
+// eta^2 / h^2 in 1 / (r^2 + eta^2) of the artificial viscosity (Monaghan 1992, eq. 4.2) and of
+// delta-SPH (Antuono et al. 2010): their sources' 0.01.
+inline constexpr double inverseR2Eta2 = 0.01;
 
 // Monaghan's artificial viscosity alpha of a material, where none is given: 0.02 where the flow
 // is not resolved, that is where the laminar viscosity nu is below the viscosity alpha brings,

@@ -21,13 +21,20 @@
 
 namespace num::sph {
 
-/// Geometry of one pair (i, j): dx = x_i - x_j (nearest periodic image), r = |dx|, and the
-/// kernel value w = W(r, h) (0 unless a derivative asked for kernel values).
+/// Geometry of one pair (i, j): dx = x_i - x_j (nearest periodic image), r = |dx|, the
+/// kernel value w = W(r, h) (0 unless a derivative asked for kernel values), and two factors
+/// that several terms share, computed once per pair (a division each):
+///   laplacian = dx . grad W / (r^2 + eta^2), eta^2 = defaults::laplacianEta2 h^2: the
+///               second-derivative factor of viscosity and conduction (Morris et al. 1997);
+///   inverseR2 = 1 / (r^2 + 0.01 h^2): of the artificial viscosity (Monaghan 1992) and
+///               delta-SPH (Antuono et al. 2010).
 template <int Dim>
 struct PairGeometry {
     Vector<Dim> dx;
     Float r;
     Float w;
+    Float laplacian;
+    Float inverseR2;
 };
 
 /// The geometry of all neighbours of a particle, parallel to its neighbour and gradient lists.
@@ -36,7 +43,11 @@ struct NeighbourGeometry {
     ArrayView<const Vector<Dim>> dx;
     ArrayView<const Float> r;
     ArrayView<const Float> w;
-    PairGeometry<Dim> pair(std::size_t k) const { return {dx[k], r[k], w.empty() ? 0.0 : w[k]}; }
+    ArrayView<const Float> laplacian;
+    ArrayView<const Float> inverseR2;
+    PairGeometry<Dim> pair(std::size_t k) const {
+        return {dx[k], r[k], w.empty() ? 0.0 : w[k], laplacian[k], inverseR2[k]};
+    }
 };
 
 /// Buffers a pair loop accumulates into. Each buffer names the storage level it goes to after

@@ -35,6 +35,7 @@
 
 #include "spatial/neighbour_list.hpp"
 #include "sph/decomposition.hpp"
+#include "sph/defaults.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
 
@@ -231,7 +232,7 @@ class Solver {
     struct Scratch {
         typename VerletList<Dim>::Neighbours found;
         std::vector<Vec> grads;
-        std::vector<Float> r, w;
+        std::vector<Float> r, w, laplacian, inverseR2;
         std::size_t pairs = 0, evaluated = 0;
     };
 
@@ -253,6 +254,8 @@ class Solver {
         const bool needsW = pass.needsW;
         const Float h = kernel_.h;
         const GradientFactor<Kernel> gradient(h);
+        const Float laplacianEta2 = defaults::laplacianEta2 * h * h;
+        const Float inverseR2Eta2 = defaults::inverseR2Eta2 * h * h;
         const char* owned = decomposition_ ? decomposition_->owned().data() : nullptr;
         // Gathering, a boundary particle is skipped unless a derivative adds anything for it.
         const int* kind = !symmetric_ && storage.has(QuantityId::KIND)
@@ -276,21 +279,31 @@ class Solver {
                     const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)
                                               : neighbours_.collect(i, sc.found);
                     sc.pairs += m;
-                    if (sc.r.size() < m) sc.r.resize(2 * m), sc.grads.resize(2 * m);
+                    if (sc.r.size() < m) {
+                        sc.r.resize(2 * m), sc.grads.resize(2 * m);
+                        sc.laplacian.resize(2 * m), sc.inverseR2.resize(2 * m);
+                    }
                     if (needsW && sc.w.size() < m) sc.w.resize(2 * m);  // passes differ in W
                     const Vec* dx = sc.found.dx.data();
                     const double* r2 = sc.found.r2.data();
                     Float* r = sc.r.data();
                     Vec* grads = sc.grads.data();
+                    Float* laplacian = sc.laplacian.data();
+                    Float* inverseR2 = sc.inverseR2.data();
                     for (Size k = 0; k < m; ++k) r[k] = std::sqrt(r2[k]);
                     for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradient.factor(r[k]);
+                    // The per-pair factors of PairGeometry, in loops the compiler vectorises.
+                    for (Size k = 0; k < m; ++k)
+                        laplacian[k] = dot(dx[k], grads[k]) / (r[k] * r[k] + laplacianEta2);
+                    for (Size k = 0; k < m; ++k) inverseR2[k] = 1.0 / (r[k] * r[k] + inverseR2Eta2);
                     if (needsW)
                         for (Size k = 0; k < m; ++k) sc.w[k] = Kernel::W(r[k], h);
                     const ArrayView<const Size> neighs(sc.found.j.data(), m);
                     const ArrayView<const Vec> g(grads, m);
                     const NeighbourGeometry<Dim> geo{
                         ArrayView<const Vec>(dx, m), ArrayView<const Float>(r, m),
-                        ArrayView<const Float>(sc.w.data(), needsW ? m : 0)};
+                        ArrayView<const Float>(sc.w.data(), needsW ? m : 0),
+                        ArrayView<const Float>(laplacian, m), ArrayView<const Float>(inverseR2, m)};
                     if (symmetric_)
                         pass.holders[b].evalSymmetric(i, neighs, g, geo);
                     else

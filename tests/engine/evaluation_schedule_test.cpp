@@ -3,6 +3,8 @@
 // solver against the analytic result.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <stdexcept>
@@ -298,6 +300,73 @@ TEST(TwoPasses, ALaterPassWithKernelValuesGivesWhatTheFirstPassGives) {
         2);
     EXPECT_TRUE(bitwiseEqual(one, two));
     EXPECT_GT(*std::min_element(one.begin(), one.end()), 0.2);  // every particle has neighbours
+}
+
+/// Per particle: the largest relative deviation of PairGeometry's shared factors from their
+/// definitions, dx . grad W / (r^2 + 0.001 h^2) and 1 / (r^2 + 0.01 h^2) (FACTOR_ERROR), and the
+/// number of pairs seen (PAIRS_SEEN).
+const QuantityId FACTOR_ERROR = QuantityId(-41), PAIRS_SEEN = QuantityId(-42);
+template <int Dim>
+class PairFactorCheck : public DerivativeTemplate<PairFactorCheck<Dim>, Dim> {
+  public:
+    explicit PairFactorCheck(Float h) : h_(h) {}
+    void create(Accumulated<Dim>& r) override {
+        r.template insert<Float>(FACTOR_ERROR), r.template insert<Float>(PAIRS_SEEN);
+    }
+    void initialize(const Storage<Dim>&, Accumulated<Dim>& r) override {
+        error_ = r.template getValue<Float>(FACTOR_ERROR);
+        seen_ = r.template getValue<Float>(PAIRS_SEEN);
+    }
+    template <bool Symmetric>
+    void eval(Size i, Size j, const Vector<Dim>& grad, const PairGeometry<Dim>& pair) {
+        const Float r2 = pair.r * pair.r;
+        const Float laplacian = dot(pair.dx, grad) / (r2 + defaults::laplacianEta2 * h_ * h_);
+        const Float inverseR2 = 1 / (r2 + defaults::inverseR2Eta2 * h_ * h_);
+        const Float e = std::max(std::abs(pair.laplacian / laplacian - 1),
+                                 std::abs(pair.inverseR2 / inverseR2 - 1));
+        error_[i] = std::max(error_[i], e), seen_[i] += 1;
+        if constexpr (Symmetric) error_[j] = std::max(error_[j], e), seen_[j] += 1;
+    }
+
+  private:
+    Float h_;
+    ArrayView<Float> error_, seen_;
+};
+
+template <int Dim>
+class PairFactorTerm : public IEquationTerm<Dim> {
+  public:
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
+        d.template require<PairFactorCheck<Dim>>(settings.get<double>("smoothing_length"));
+    }
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
+    void finalize(IScheduler&, Storage<Dim>&, Float) override {}
+    void create(Storage<Dim>& s, IMaterial&) const override {
+        s.template insert<Float>(FACTOR_ERROR, OrderEnum::ZERO, 0.0);
+        s.template insert<Float>(PAIRS_SEEN, OrderEnum::ZERO, 0.0);
+    }
+};
+
+TEST(PairGeometry, SharedFactorsAreTheirDefinitionsInBothLoops) {
+    // The factors are computed once per pair by the solver; every term reads them instead of
+    // dividing. They must equal their definitions to round-off (a few units in the last place).
+    const Float dx = 0.05;
+    num::Domain<2> domain;
+    domain.max = {{1.0, 1.0}};
+    SequentialScheduler sch;
+    Material material("cloud");
+    for (const char* evaluation : {"asymmetric", "symmetric"}) {
+        SCOPED_TRACE(evaluation);
+        Storage<2> s = cloudWithLinearField<2>(dx, Vector<2>{{1.0, 0.0}});
+        Solver<2> solver(sch, settingsFor<2>(dx, evaluation), makeTerm<PairFactorTerm<2>>(),
+                         domain);
+        solver.create(s, material);
+        solver.evaluate(s, 0);
+        const auto error = s.getValue<Float>(FACTOR_ERROR);
+        const auto seen = s.getValue<Float>(PAIRS_SEEN);
+        EXPECT_LT(*std::max_element(error.begin(), error.end()), 1e-14);
+        EXPECT_GT(*std::min_element(seen.begin(), seen.end()), 2.0);  // every particle has pairs
+    }
 }
 
 }  // namespace

@@ -4,6 +4,9 @@
 // stay fixed.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include "fluid_test_support.hpp"
 
 using namespace num::sph;
@@ -118,4 +121,20 @@ TEST(FluidSetup, SlidingLidIsNoMassSource) {
     for (Size i = 0; i < c.storage.size(); ++i)
         if (isFluid(kind[i])) largest = std::max(largest, std::abs(drho[i]));
     EXPECT_LT(largest, 1e-12);
+}
+
+TEST(EquationOfState, TaitPowerBySquaringAgreesWithPow) {
+    // power() multiplies for whole exponents: within a few units in the last place of std::pow
+    // (four roundings for gamma = 7), exactly pow otherwise.
+    const double ulp = std::numeric_limits<double>::epsilon();
+    for (double x = 0.5; x < 1.5; x += 0.0137)
+        for (double gamma : {1.0, 2.0, 7.0, 16.0})
+            EXPECT_NEAR(num::sph::power(x, gamma) / std::pow(x, gamma), 1.0, 8 * ulp)
+                << "x " << x << ", gamma " << gamma;
+    for (double gamma : {1.4, 7.5, 17.0})
+        EXPECT_EQ(num::sph::power(1.1, gamma), std::pow(1.1, gamma));
+    num::sph::EquationOfState tait;
+    EXPECT_EQ(tait.pressure(tait.rho0), 0.0);
+    EXPECT_NEAR(tait.pressure(1.01 * tait.rho0) / (tait.stiffness() * (std::pow(1.01, 7) - 1)), 1.0,
+                1e-13);
 }

@@ -1,7 +1,8 @@
 // Monaghan's artificial viscosity (Monaghan 1992, eq. 4.1-4.2), linear part:
 //   dv_i/dt = - sum_j m_j Pi_ij grad_i W_ij,
 //   Pi_ij = -alpha c0 mu_ij / rho_ij  if v_ij . r_ij < 0, else 0,
-//   mu_ij = h v_ij . r_ij / (r_ij^2 + eta^2),  rho_ij = (rho_i + rho_j) / 2,  eta^2 = 0.01 h^2.
+//   mu_ij = h v_ij . r_ij / (r_ij^2 + eta^2),  rho_ij = (rho_i + rho_j) / 2,  eta^2 = 0.01 h^2
+//   (1 / (r_ij^2 + eta^2) is PairGeometry::inverseR2).
 // Acts only between approaching particles; antisymmetric, so momentum is conserved. For a
 // viscous flow it corresponds to nu = alpha h c0 / (2 (Dim + 2)) (Monaghan 2005, sec. 5.4).
 // Boundary particles show the wall condition's velocity (FluidId::PAIR_VELOCITY,
@@ -17,8 +18,7 @@ template <int Dim>
 class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
-    ArtificialViscosityPart(Float alpha, Float c0, Float h)
-        : alphaC0h_(alpha * c0 * h), eta2_(0.01 * h * h) {}
+    ArtificialViscosityPart(Float alpha, Float c0, Float h) : alphaC0h_(alpha * c0 * h) {}
 
     /// The gather writes fluid particles only.
     bool gathersAtBoundary(Size) const override { return false; }
@@ -39,7 +39,7 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
         const Float vr = dot(v_[i] - v_[j], pair.dx);
         if (vr >= 0) return;
         // Pi_ij = -alpha c0 h vr / ((r^2 + eta^2) rho_ij)
-        const Float pi = -alphaC0h_ * vr / ((pair.r * pair.r + eta2_) * 0.5 * (rho_[i] + rho_[j]));
+        const Float pi = -alphaC0h_ * vr * pair.inverseR2 / (0.5 * (rho_[i] + rho_[j]));
         const Vec f = grad * pi;
         if (fi) a_[i] -= f * m_[j];
         if constexpr (Symmetric)
@@ -55,17 +55,16 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
         Vec sum = a_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
-            const Float r = geometry.r[k];
             const Float vr = dot(vi - v_[j], geometry.dx[k]);
             if (vr >= 0) continue;
-            const Float pi = -alphaC0h_ * vr / ((r * r + eta2_) * 0.5 * (rhoi + rho_[j]));
+            const Float pi = -alphaC0h_ * vr * geometry.inverseR2[k] / (0.5 * (rhoi + rho_[j]));
             sum -= grads[k] * pi * m_[j];
         }
         a_[i] = sum;
     }
 
   private:
-    Float alphaC0h_, eta2_;
+    Float alphaC0h_;
     ArrayView<const Float> m_, rho_;
     ArrayView<const int> kind_;
     ArrayView<const Vec> v_;

@@ -28,7 +28,7 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
     DeltaSphPart(std::shared_ptr<const DeltaSphData<Dim>> data, Float delta, Float c0, Float h)
-        : data_(std::move(data)), coefficient_(2 * delta * h * c0), eta2_(0.01 * h * h) {}
+        : data_(std::move(data)), coefficient_(2 * delta * h * c0) {}
 
     /// The gather writes fluid particles only.
     bool gathersAtBoundary(Size) const override { return false; }
@@ -46,7 +46,7 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
         if (!isFluid(kind_[i]) || !isFluid(kind_[j])) return;
         const DeltaSphData<Dim>& d = *data_;
         const Float psi = rho_[i] - rho_[j] - dot(d.gravityTerm, pair.dx);
-        const Float f = coefficient_ * psi * dot(pair.dx, grad) / (pair.r * pair.r + eta2_);
+        const Float f = coefficient_ * psi * dot(pair.dx, grad) * pair.inverseR2;
         drho_[i] += f * volume_[j];
         if constexpr (Symmetric) drho_[j] -= f * volume_[i];
     }
@@ -62,9 +62,8 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
             const Size j = neighs[k];
             if (!isFluid(kind_[j])) continue;
             const Vec& dx = geometry.dx[k];
-            const Float r = geometry.r[k];
             const Float psi = rhoi - rho_[j] - dot(d.gravityTerm, dx);
-            const Float f = coefficient_ * psi * dot(dx, grads[k]) / (r * r + eta2_);
+            const Float f = coefficient_ * psi * dot(dx, grads[k]) * geometry.inverseR2[k];
             sum += f * volume_[j];
         }
         drho_[i] = sum;
@@ -72,7 +71,7 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
 
   private:
     std::shared_ptr<const DeltaSphData<Dim>> data_;
-    Float coefficient_, eta2_;
+    Float coefficient_;
     ArrayView<const Float> rho_, volume_;
     ArrayView<const int> kind_;
     ArrayView<Float> drho_;

@@ -5,7 +5,7 @@
 //
 //   c_a dT_a/dt = sum_b  4 m_b k_a k_b / (rho_a rho_b (k_a + k_b))
 //                        (T_a - T_b) (r_ab . grad_a W_ab) / (r_ab^2 + eta^2),   eta^2 = 0.001 h^2
-//                        (defaults.hpp)
+//                        (defaults.hpp; the last factor is PairGeometry::laplacian)
 //
 // r_ab . grad_a W_ab <= 0, so a particle hotter than its neighbours cools: heat flows from hot
 // to cold (the seed's "du += -alpha * delta" has the opposite sign and is anti-diffusion).
@@ -27,7 +27,6 @@
 #include <tuple>
 #include <utility>
 #include <vector>
-#include "sph/defaults.hpp"
 
 #include "sph/boundary/thermal_condition.hpp"
 #include "sph/equation_term.hpp"
@@ -52,7 +51,7 @@ std::pair<ArrayView<const int>, ArrayView<const int>> materialAndCondition(
 template <int Dim>
 class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivative<Dim>, Dim> {
   public:
-    explicit HeatConductionDerivative(Float h) : eta2_(defaults::laplacianEta2 * h * h) {}
+    HeatConductionDerivative() = default;
 
     /// A boundary particle's conduction sum is needed unless it is adiabatic (a fixed
     /// temperature's for the books of thermal_walls.hpp, a conducting body's for its own T).
@@ -89,7 +88,7 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
     }
 
     template <bool Symmetric>
-    void eval(Size a, Size b, const Vector<Dim>& grad, const PairGeometry<Dim>& pair) {
+    void eval(Size a, Size b, const Vector<Dim>&, const PairGeometry<Dim>& pair) {
         if (!conductsHeat(cond_[a], cond_[b])) return;
         const Float ka = k_[mat_[a]], kb = k_[mat_[b]];
         const Float ksum = ka + kb;
@@ -97,8 +96,7 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
         // 4 k_a k_b / (k_a + k_b) = 2 x harmonic mean; pair.dx = r_ab = x_a - x_b.
         const Float Ta = cond_[a] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[a] : T_[a];
         const Float Tb = cond_[b] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[b] : T_[b];
-        const Float f = 4.0 * ka * kb / (ksum * rho_[a] * rho_[b]) * (Ta - Tb) *
-                        dot(pair.dx, grad) / (pair.r * pair.r + eta2_);
+        const Float f = 4.0 * ka * kb / (ksum * rho_[a] * rho_[b]) * (Ta - Tb) * pair.laplacian;
         dT_[a] += m_[b] * f * invC_[mat_[a]];
         if constexpr (Symmetric) dT_[b] -= m_[a] * f * invC_[mat_[b]];
     }
@@ -113,7 +111,6 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
         rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         dT_ = results.template getValue<Float>(QuantityId::TEMPERATURE);
     }
-    Float eta2_;
     std::vector<Float> k_, invC_;
     std::vector<int> zeros_;
     ArrayView<const int> mat_, cond_;
@@ -125,9 +122,8 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
 template <int Dim>
 class HeatConduction : public IEquationTerm<Dim> {
   public:
-    void setDerivatives(DerivativeHolder<Dim>& derivatives, const RunSettings& settings) override {
-        derivatives.template require<HeatConductionDerivative<Dim>>(
-            settings.get<double>("smoothing_length"));
+    void setDerivatives(DerivativeHolder<Dim>& derivatives, const RunSettings&) override {
+        derivatives.template require<HeatConductionDerivative<Dim>>();
     }
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}

@@ -1,6 +1,8 @@
 // Laminar viscosity (Morris, Fox & Zhu 1997, eq. 8), with the smooth kernel's derivative:
 //   dv_i/dt = sum_j m_j (mu_i + mu_j) / (rho_i rho_j) (r_ij . grad_i W_ij) / (r_ij^2 + eta^2) v_ij,
-//   mu = rho nu, r_ij = x_i - x_j, v_ij = v_i - v_j, eta^2 = 0.001 h^2 (defaults.hpp).
+//   mu = rho nu, r_ij = x_i - x_j, v_ij = v_i - v_j, eta^2 = 0.001 h^2 (defaults.hpp),
+// evaluated as (mu_i + mu_j) L_ij V_j / rho_i with V_j = m_j / rho_j (FluidId::VOLUME) and
+// L_ij = r_ij . grad_i W_ij / (r_ij^2 + eta^2) (PairGeometry::laplacian).
 // Since r_ij . grad_i W_ij <= 0 the term pulls v_i towards v_j; the pair terms are
 // antisymmetric, so momentum is conserved. A boundary particle shows the velocity of the wall
 // condition (2 v_wall - v~ for no-slip, Adami et al. 2012, eq. 23); free-slip boundary
@@ -10,7 +12,6 @@
 
 #include <memory>
 #include <vector>
-#include "sph/defaults.hpp"
 
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
@@ -19,16 +20,17 @@ namespace num::sph {
 
 template <int Dim>
 struct ViscousData {
-    std::vector<Float> mu;     // dynamic viscosity rho nu
-    std::vector<char> active;  // 0: free-slip boundary particle
+    std::vector<Float> mu;      // dynamic viscosity rho nu
+    std::vector<Float> invRho;  // 1 / rho
+    std::vector<char> active;   // 0: free-slip boundary particle
 };
 
 template <int Dim>
 class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
-    LaminarViscosityPart(std::shared_ptr<const ViscousData<Dim>> data, Float h)
-        : data_(std::move(data)), eta2_(defaults::laplacianEta2 * h * h) {}
+    explicit LaminarViscosityPart(std::shared_ptr<const ViscousData<Dim>> data)
+        : data_(std::move(data)) {}
 
     /// The gather writes fluid particles only.
     bool gathersAtBoundary(Size) const override { return false; }
@@ -36,40 +38,36 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
         r.template insert<Vec>(QuantityId::POSITION, OrderEnum::SECOND);
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
-        m_ = s.template getValue<Float>(QuantityId::MASS);
-        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
+        volume_ = s.template getValue<Float>(FluidId::VOLUME);
         kind_ = s.template getValue<int>(QuantityId::KIND);
         v_ = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         a_ = r.template getValue<Vec>(QuantityId::POSITION);
     }
     template <bool Symmetric>
-    void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
+    void eval(Size i, Size j, const Vec&, const PairGeometry<Dim>& pair) {
         const bool fi = isFluid(kind_[i]), fj = isFluid(kind_[j]);
         const ViscousData<Dim>& d = *data_;
         if (!(fi || (Symmetric && fj)) || !d.active[i] || !d.active[j]) return;
-        const Float factor = (d.mu[i] + d.mu[j]) / (rho_[i] * rho_[j]) * dot(pair.dx, grad) /
-                             (pair.r * pair.r + eta2_);
-        const Vec f = (v_[i] - v_[j]) * factor;
-        if (fi) a_[i] += f * m_[j];
+        const Float f = (d.mu[i] + d.mu[j]) * pair.laplacian;
+        const Vec dv = v_[i] - v_[j];
+        if (fi) a_[i] += dv * (f * volume_[j] * d.invRho[i]);
         if constexpr (Symmetric)
-            if (fj) a_[j] -= f * m_[i];
+            if (fj) a_[j] -= dv * (f * volume_[i] * d.invRho[j]);
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
-    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec>,
                           const NeighbourGeometry<Dim>& geometry) {
         const ViscousData<Dim>& d = *data_;
         if (!isFluid(kind_[i]) || !d.active[i]) return;
         const Vec vi = v_[i];
-        const Float mui = d.mu[i], rhoi = rho_[i];
+        const Float mui = d.mu[i], invRhoi = d.invRho[i];
         Vec sum = a_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
             if (!d.active[j]) continue;
-            const Float r = geometry.r[k];
-            const Float factor = (mui + d.mu[j]) / (rhoi * rho_[j]) *
-                                 dot(geometry.dx[k], grads[k]) / (r * r + eta2_);
-            sum += (vi - v_[j]) * factor * m_[j];
+            const Float f = (mui + d.mu[j]) * geometry.laplacian[k];
+            sum += (vi - v_[j]) * (f * volume_[j] * invRhoi);
         }
         a_[i] = sum;
     }
@@ -77,8 +75,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
   private:
     std::shared_ptr<const ViscousData<Dim>> data_;
     ArrayView<const Vec> v_;
-    Float eta2_;
-    ArrayView<const Float> m_, rho_;
+    ArrayView<const Float> volume_;
     ArrayView<const int> kind_;
     ArrayView<Vec> a_;
 };
@@ -90,9 +87,8 @@ class LaminarViscosity : public IEquationTerm<Dim> {
     /// nu: the kinematic viscosity every particle starts with (KINEMATIC_VISCOSITY).
     explicit LaminarViscosity(Float nu) : nu_(nu) {}
 
-    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
-        d.template require<LaminarViscosityPart<Dim>>(data_,
-                                                      settings.get<double>("smoothing_length"));
+    void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings&) override {
+        d.template require<LaminarViscosityPart<Dim>>(data_);
     }
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
@@ -100,10 +96,11 @@ class LaminarViscosity : public IEquationTerm<Dim> {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const auto slip = s.template getValue<int>(FluidId::WALL_SLIP);
         ViscousData<Dim>& d = *data_;
-        d.mu.resize(s.size()), d.active.resize(s.size());
+        d.mu.resize(s.size()), d.invRho.resize(s.size()), d.active.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 d.mu[i] = rho[i] * nu[i];
+                d.invRho[i] = 1.0 / rho[i];
                 d.active[i] = isFluid(kind[i]) || slip[i] == int(WallSlip::NO_SLIP);
             }
         });
@@ -111,7 +108,7 @@ class LaminarViscosity : public IEquationTerm<Dim> {
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     TermAccess access() const override {
         return {.reads = {QuantityId::DENSITY, FluidId::KINEMATIC_VISCOSITY},
-                .needs = {pairVelocity}};
+                .needs = {pairVolume, pairVelocity}};
     }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, nu_);

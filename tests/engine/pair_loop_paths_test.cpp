@@ -178,7 +178,6 @@ struct FluidPartData {
         for (Size i = 0; i < s.size(); ++i) {
             pressure->pOverRho2.push_back(p[i] / (rho[i] * rho[i]));
             viscous->mu.push_back(1e-3 * (1 + Float(i % 4)));
-            viscous->invRho.push_back(1.0 / rho[i]);
             viscous->active.push_back(i % 7 != 3);
         }
         delta->gravityTerm = V2{0.0, -0.3};

@@ -20,9 +20,8 @@ namespace num::sph {
 
 template <int Dim>
 struct ViscousData {
-    std::vector<Float> mu;      // dynamic viscosity rho nu
-    std::vector<Float> invRho;  // 1 / rho
-    std::vector<char> active;   // 0: free-slip boundary particle
+    std::vector<Float> mu;     // dynamic viscosity rho nu
+    std::vector<char> active;  // 0: free-slip boundary particle
 };
 
 template <int Dim>
@@ -39,6 +38,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
     }
     void initialize(const Storage<Dim>& s, Accumulated<Dim>& r) override {
         volume_ = s.template getValue<Float>(FluidId::VOLUME);
+        rho_ = s.template getValue<Float>(QuantityId::DENSITY);
         kind_ = s.template getValue<int>(QuantityId::KIND);
         v_ = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         a_ = r.template getValue<Vec>(QuantityId::POSITION);
@@ -50,9 +50,9 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
         if (!(fi || (Symmetric && fj)) || !d.active[i] || !d.active[j]) return;
         const Float f = (d.mu[i] + d.mu[j]) * pair.laplacian;
         const Vec dv = v_[i] - v_[j];
-        if (fi) a_[i] += dv * (f * volume_[j] * d.invRho[i]);
+        if (fi) a_[i] += dv * (f * volume_[j] * (1.0 / rho_[i]));
         if constexpr (Symmetric)
-            if (fj) a_[j] -= dv * (f * volume_[i] * d.invRho[j]);
+            if (fj) a_[j] -= dv * (f * volume_[i] * (1.0 / rho_[j]));
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
     /// register, added in the order of eval, so the result is bitwise eval's.
@@ -61,7 +61,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
         const ViscousData<Dim>& d = *data_;
         if (!isFluid(kind_[i]) || !d.active[i]) return;
         const Vec vi = v_[i];
-        const Float mui = d.mu[i], invRhoi = d.invRho[i];
+        const Float mui = d.mu[i], invRhoi = 1.0 / rho_[i];  // once per particle, not per pair
         Vec sum = a_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
@@ -75,7 +75,7 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
   private:
     std::shared_ptr<const ViscousData<Dim>> data_;
     ArrayView<const Vec> v_;
-    ArrayView<const Float> volume_;
+    ArrayView<const Float> volume_, rho_;
     ArrayView<const int> kind_;
     ArrayView<Vec> a_;
 };
@@ -96,11 +96,10 @@ class LaminarViscosity : public IEquationTerm<Dim> {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const auto slip = s.template getValue<int>(FluidId::WALL_SLIP);
         ViscousData<Dim>& d = *data_;
-        d.mu.resize(s.size()), d.invRho.resize(s.size()), d.active.resize(s.size());
+        d.mu.resize(s.size()), d.active.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 d.mu[i] = rho[i] * nu[i];
-                d.invRho[i] = 1.0 / rho[i];
                 d.active[i] = isFluid(kind[i]) || slip[i] == int(WallSlip::NO_SLIP);
             }
         });

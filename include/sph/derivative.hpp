@@ -26,8 +26,8 @@ namespace num::sph {
 /// that several terms share, computed once per pair (a division each):
 ///   laplacian = dx . grad W / (r^2 + eta^2), eta^2 = defaults::laplacianEta2 h^2: the
 ///               second-derivative factor of viscosity and conduction (Morris et al. 1997);
-///   inverseR2 = 1 / (r^2 + 0.01 h^2): of the artificial viscosity (Monaghan 1992) and
-///               delta-SPH (Antuono et al. 2010).
+///   inverseR2 = 1 / (r^2 + eta^2), eta^2 = defaults::inverseR2Eta2 h^2 (0.01 h^2): of the
+///               artificial viscosity (Monaghan 1992) and delta-SPH (Antuono et al. 2010).
 template <int Dim>
 struct PairGeometry {
     Vector<Dim> dx;

@@ -51,8 +51,6 @@ std::pair<ArrayView<const int>, ArrayView<const int>> materialAndCondition(
 template <int Dim>
 class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivative<Dim>, Dim> {
   public:
-    HeatConductionDerivative() = default;
-
     /// A boundary particle's conduction sum is needed unless it is adiabatic (a fixed
     /// temperature's for the books of thermal_walls.hpp, a conducting body's for its own T).
     bool gathersAtBoundary(Size i) const override {

@@ -13,8 +13,10 @@
 #include "sph/terms/continuity_density.hpp"
 #include "sph/terms/delta_sph.hpp"
 #include "sph/terms/free_surface.hpp"
+#include "sph/terms/heat_conduction.hpp"
 #include "sph/terms/laminar_viscosity.hpp"
 #include "sph/terms/pair_inputs.hpp"
+#include "sph/terms/particle_shifting.hpp"
 #include "sph/terms/pressure_gradient.hpp"
 #include "test_physics.hpp"
 
@@ -126,6 +128,15 @@ TEST(SharedInitialization, FusedKernelSumSharedEqualsOwnBitwise) {
     });
 }
 
+/// The sums the parts below accumulate, by type.
+const std::vector<QuantityId> floatSums = {QuantityId::DENSITY, QuantityId::TEMPERATURE,
+                                           FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS};
+const std::vector<QuantityId> vectorSums = {QuantityId::POSITION,      FluidId::KERNEL_SUM_GRADIENT,
+                                            FluidId::DENSITY_GRADIENT, FluidId::WALL_DIRECTION,
+                                            velocityGradientId<2>(0),  velocityGradientId<2>(1)};
+Float startingFloat(Size i) { return 0.1 * Float(i % 7); }
+V2 startingVector(Size i) { return V2{0.3 * Float(i % 5), -0.2 * Float(i % 3)}; }
+
 /// A part's gather loop against the generic loop of its DerivativeTemplate (eval per pair),
 /// both starting from the same nonzero sums (as after an earlier part of a fused loop).
 template <class Part>
@@ -134,13 +145,12 @@ void expectGatherEqualsPairByPair(Part gather, Part pairByPair, const Storage<2>
     gather.create(rGather), pairByPair.create(rPairs);
     for (Accumulated<2>* r : {&rGather, &rPairs}) {
         r->reset(s.size());
-        for (QuantityId id :
-             {QuantityId::DENSITY, FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS})
+        for (QuantityId id : floatSums)
             if (r->has(id))
-                for (Size i = 0; auto& x : r->getValue<Float>(id)) x = 0.1 * Float(i++ % 7);
-        if (r->has(QuantityId::POSITION))
-            for (Size i = 0; auto& a : r->getValue<V2>(QuantityId::POSITION))
-                a = V2{0.3 * Float(i % 5), -0.2 * Float(i % 3)}, ++i;
+                for (Size i = 0; auto& x : r->getValue<Float>(id)) x = startingFloat(i++);
+        for (QuantityId id : vectorSums)
+            if (r->has(id))
+                for (Size i = 0; auto& a : r->getValue<V2>(id)) a = startingVector(i++);
     }
     gather.initialize(s, rGather), pairByPair.initialize(s, rPairs);
     forEachParticle(s, 0.12, [&](Size i, auto neighs, auto grads, const auto& geometry) {
@@ -148,24 +158,56 @@ void expectGatherEqualsPairByPair(Part gather, Part pairByPair, const Storage<2>
         for (std::size_t k = 0; k < neighs.size(); ++k)
             pairByPair.template evalPair<false>(i, neighs[k], grads[k], geometry.pair(k));
     });
-    std::size_t changed = 0;
-    for (QuantityId id : {QuantityId::DENSITY, FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS})
+    for (QuantityId id : floatSums)
         if (rPairs.has(id)) {
+            std::size_t changed = 0;
             const auto a = rGather.getValue<Float>(id), b = rPairs.getValue<Float>(id);
             for (Size i = 0; i < s.size(); ++i) {
                 EXPECT_EQ(a[i], b[i]) << typeName(gather) << ", particle " << i;
-                changed += b[i] != 0.1 * Float(i % 7);
+                changed += b[i] != startingFloat(i);
             }
+            EXPECT_GT(changed, s.size() / 2) << typeName(gather);  // most particles got a sum
         }
-    if (rPairs.has(QuantityId::POSITION)) {
-        const auto a = rGather.getValue<V2>(QuantityId::POSITION);
-        const auto b = rPairs.getValue<V2>(QuantityId::POSITION);
-        for (Size i = 0; i < s.size(); ++i) {
-            EXPECT_EQ(a[i], b[i]) << typeName(gather) << ", particle " << i;
-            changed += b[i] != V2{0.3 * Float(i % 5), -0.2 * Float(i % 3)};
+    for (QuantityId id : vectorSums)
+        if (rPairs.has(id)) {
+            std::size_t changed = 0;
+            const auto a = rGather.getValue<V2>(id), b = rPairs.getValue<V2>(id);
+            for (Size i = 0; i < s.size(); ++i) {
+                EXPECT_EQ(a[i], b[i]) << typeName(gather) << ", particle " << i;
+                changed += b[i] != startingVector(i);
+            }
+            // The wall direction sums wall neighbours only; the others every neighbour.
+            const std::size_t least = id == FluidId::WALL_DIRECTION ? s.size() / 4 : s.size() / 2;
+            EXPECT_GT(changed, least) << typeName(gather) << ", quantity " << int(id);
         }
+}
+
+/// particlesWithSurface with what heat conduction reads: temperatures, two materials, and
+/// every thermal condition (one particle in six at a fixed temperature, one in eleven
+/// adiabatic).
+Storage<2> particlesWithHeat() {
+    Storage<2> s = particlesWithSurface();
+    std::vector<Float> T(s.size()), Tb(s.size());
+    std::vector<int> material(s.size()), condition(s.size());
+    for (Size i = 0; i < s.size(); ++i) {
+        T[i] = 20 + Float(i % 13), Tb[i] = 80 - Float(i % 5);
+        material[i] = int(i % 2);
+        condition[i] = i % 6 == 0    ? int(ThermalCondition::FIXED_TEMPERATURE)
+                       : i % 11 == 0 ? int(ThermalCondition::ADIABATIC)
+                                     : int(ThermalCondition::CONDUCTING);
     }
-    EXPECT_GT(changed, s.size() / 2) << typeName(gather);  // most particles got a sum
+    s.insert<Float>(QuantityId::TEMPERATURE, OrderEnum::FIRST, T);
+    s.insert<Float>(heat_ids::BOUNDARY_TEMPERATURE, OrderEnum::ZERO, Tb);
+    s.insert<int>(QuantityId::MATERIAL, OrderEnum::ZERO, material);
+    s.insert<int>(heat_ids::THERMAL_CONDITION, OrderEnum::ZERO, condition);
+    for (const Float k : {0.6, 45.0}) {
+        auto m = std::make_shared<Material>("material");
+        m->params().set("conductivity", k).set("heat_capacity", 4186.0 / k);
+        m->params().set("density", 1000.0).set("thermal_expansion", 0.0);
+        m->params().set("reference_temperature", 20.0);
+        s.materials().push_back(m);
+    }
+    return s;
 }
 
 /// Particle data for the fluid parts beyond the storage's velocities, volumes and pair
@@ -201,6 +243,14 @@ TEST(GatherLoops, FluidPartsEqualTheirPairByPairEvaluationBitwise) {
     expectGatherEqualsPairByPair(LaminarViscosityPart<2>(d.viscous),
                                  LaminarViscosityPart<2>(d.viscous), s);
     expectGatherEqualsPairByPair(KernelSumPart<2>(0.7), KernelSumPart<2>(0.7), s);
+    auto shifting = std::make_shared<ShiftingData<2>>();
+    for (Size i = 0; i < s.size(); ++i)  // some pairs closer than the local spacing
+        shifting->inverseWAtSpacing.push_back(1.2 + 0.1 * Float(i % 3));
+    expectGatherEqualsPairByPair(ParticleShiftingPart<2>(shifting),
+                                 ParticleShiftingPart<2>(shifting), s);
+    const Storage<2> heat = particlesWithHeat();
+    expectGatherEqualsPairByPair(HeatConductionDerivative<2>(), HeatConductionDerivative<2>(),
+                                 heat);
 }
 
 }  // namespace

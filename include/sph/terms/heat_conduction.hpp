@@ -98,6 +98,28 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
         dT_[a] += m_[b] * f * invC_[mat_[a]];
         if constexpr (Symmetric) dT_[b] -= m_[a] * f * invC_[mat_[b]];
     }
+    /// Gather (asymmetric) evaluation: particle a's own data read once and its sum kept in a
+    /// register, with eval's arithmetic in eval's order, so the result is bitwise eval's.
+    void gatherNeighbours(Size a, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>>,
+                          const NeighbourGeometry<Dim>& geometry) {
+        const int condA = cond_[a];
+        const Float ka = k_[mat_[a]], fourKa = 4.0 * ka, rhoA = rho_[a], invCa = invC_[mat_[a]];
+        const Float Ta = condA == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[a] : T_[a];
+        Float sum = dT_[a];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size b = neighs[k];
+            if (!conductsHeat(condA, cond_[b])) continue;
+            const Float kb = k_[mat_[b]];
+            const Float ksum = ka + kb;
+            if (!(ksum > 0)) continue;
+            const Float Tb =
+                cond_[b] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[b] : T_[b];
+            const Float f =
+                fourKa * kb / (ksum * rhoA * rho_[b]) * (Ta - Tb) * geometry.laplacian[k];
+            sum += m_[b] * f * invCa;
+        }
+        dT_[a] = sum;
+    }
 
   private:
     void bindStates(const Storage<Dim>& s, Accumulated<Dim>& results) {

@@ -40,6 +40,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -108,6 +109,32 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
             gradRho_[j] += grad * (vi * drho);
             for (int b = 0; b < Dim; ++b) gradV_[b][j] += dv * (vi * grad[b]);
         }
+    }
+    /// Gather (asymmetric) evaluation: the particle's own data read once and its sums kept in
+    /// registers, added in the order of eval, so the result is bitwise eval's.
+    void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
+                          const NeighbourGeometry<Dim>& geometry) {
+        const Float* inverseWAtSpacing = data_->inverseWAtSpacing.data();
+        const Vec velocityI = velocity_[i];
+        const Float rhoI = rho_[i], inverseWI = inverseWAtSpacing[i];
+        Vec gradC = gradC_[i], gradRho = gradRho_[i], wallDirection = wallDirection_[i];
+        std::array<Vec, Dim> gradV;
+        for (int b = 0; b < Dim; ++b) gradV[b] = gradV_[b][i];
+        for (std::size_t k = 0; k < neighs.size(); ++k) {
+            const Size j = neighs[k];
+            const Vec& grad = grads[k];
+            const Float vj = volume_[j];
+            const Vec dv = velocity_[j] - velocityI;
+            const Float drho = rho_[j] - rhoI;
+            const Float q = geometry.w[k] * 0.5 * (inverseWI + inverseWAtSpacing[j]);
+            const Float r = tensileR * std::max(0.0, (q * q) * (q * q) - tensileThreshold);
+            gradC += grad * (1 + r) * vj;
+            gradRho += grad * (vj * drho);
+            if (!isFluid(kind_[j])) wallDirection += grad * vj;
+            for (int b = 0; b < Dim; ++b) gradV[b] += dv * (vj * grad[b]);
+        }
+        gradC_[i] = gradC, gradRho_[i] = gradRho, wallDirection_[i] = wallDirection;
+        for (int b = 0; b < Dim; ++b) gradV_[b][i] = gradV[b];
     }
 
     static constexpr Float tensileR = 0.6, tensileThreshold = 1.5;

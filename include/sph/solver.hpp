@@ -54,16 +54,31 @@ struct KernelShape<kernels::RadialKernel<Shape, Dim, T>> {
 /// by r, so that the loop over a particle's neighbours vectorises. Equals Kernel::gradFactor
 /// to round-off for 0 < r < support radius (every found neighbour), and gives 0 at r = 0 (where
 /// the smooth kernels' dW/dr vanishes).
+/// The clamp of q is a member, not the constant: the compiler turns a clamp to a constant into
+/// a branch around the constant-folded f(support), and a loop with a branch does not vectorise
+/// (hence also the copies the pair loop makes inside each thread's function).
 template <class Kernel>
 struct GradientFactor {
     using Shape = typename detail::KernelShape<Kernel>::type;
-    Float invH, scale;
+    Float invH, scale, support = Kernel::support;
     explicit GradientFactor(Float h)
         : invH(1 / h), scale(Kernel::sigma / (Kernel::hPowDim(h) * h)) {}
     Float factor(Float r) const {
-        const Float q = std::min(r * invH, Float(Kernel::support));
+        const Float q = std::min(r * invH, support);
         return scale * Shape::df(q) / std::max(r, std::numeric_limits<Float>::min());
     }
+};
+
+/// W(r) of a radial kernel for the pair loop, without branches, so that the loop over a
+/// particle's neighbours vectorises (as GradientFactor). Bitwise Kernel::W for r below the
+/// support radius (every found neighbour): the same q = r / h and sigma / h^Dim * f(q); 0 from
+/// the support radius on.
+template <class Kernel>
+struct KernelValue {
+    using Shape = typename detail::KernelShape<Kernel>::type;
+    Float h, scale, support = Kernel::support;
+    explicit KernelValue(Float h) : h(h), scale(Kernel::sigma / Kernel::hPowDim(h)) {}
+    Float value(Float r) const { return scale * Shape::f(std::min(r / h, support)); }
 };
 
 /// Thrown by Solver::evaluate when its abandon check asked to stop part-way (a Ctrl-C during a
@@ -232,7 +247,7 @@ class Solver {
     struct Scratch {
         typename VerletList<Dim>::Neighbours found;
         std::vector<Vec> grads;
-        std::vector<Float> r, w, laplacian, inverseR2;
+        std::vector<Float> r, gradientFactor, w, laplacian, inverseR2;
         std::size_t pairs = 0, evaluated = 0;
     };
 
@@ -253,15 +268,20 @@ class Solver {
         const std::uint64_t blocks = pass.holders.size();
         const bool needsW = pass.needsW;
         const Float h = kernel_.h;
-        const GradientFactor<Kernel> gradient(h);
         const Float laplacianEta2 = defaults::laplacianEta2 * h * h;
         const Float inverseR2Eta2 = defaults::inverseR2Eta2 * h * h;
+        const GradientFactor<Kernel> sharedGradient(h);
+        const KernelValue<Kernel> sharedKernelValue(h);
         const char* owned = decomposition_ ? decomposition_->owned().data() : nullptr;
         // Gathering, a boundary particle is skipped unless a derivative adds anything for it.
         const int* kind = !symmetric_ && storage.has(QuantityId::KIND)
                               ? storage.template getValue<int>(QuantityId::KIND).data()
                               : nullptr;
         scheduler_.parallelFor(Size(blocks), 1, [&](Size b0, Size b1) {
+            // Copies local to the thread's function: no store of the loops below may alias them
+            // (else they are reloaded every pair), and their values are not constants there.
+            const GradientFactor<Kernel> gradient = sharedGradient;
+            const KernelValue<Kernel> kernelValue = sharedKernelValue;
             for (Size b = b0; b < b1; ++b) {
                 Scratch& sc = scratch_[b];
                 sc.pairs = 0, sc.evaluated = 0;
@@ -280,24 +300,29 @@ class Solver {
                                               : neighbours_.collect(i, sc.found);
                     sc.pairs += m;
                     if (sc.r.size() < m) {
-                        sc.r.resize(2 * m), sc.grads.resize(2 * m);
+                        sc.r.resize(2 * m), sc.gradientFactor.resize(2 * m), sc.grads.resize(2 * m);
                         sc.laplacian.resize(2 * m), sc.inverseR2.resize(2 * m);
                     }
                     if (needsW && sc.w.size() < m) sc.w.resize(2 * m);  // passes differ in W
                     const Vec* dx = sc.found.dx.data();
                     const double* r2 = sc.found.r2.data();
                     Float* r = sc.r.data();
+                    Float* gradientFactor = sc.gradientFactor.data();
                     Vec* grads = sc.grads.data();
                     Float* laplacian = sc.laplacian.data();
                     Float* inverseR2 = sc.inverseR2.data();
+                    // The geometry of PairGeometry, in loops the compiler vectorises (the
+                    // scalar factors apart from the vectors they scale).
                     for (Size k = 0; k < m; ++k) r[k] = std::sqrt(r2[k]);
-                    for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradient.factor(r[k]);
-                    // The per-pair factors of PairGeometry, in loops the compiler vectorises.
+                    for (Size k = 0; k < m; ++k) gradientFactor[k] = gradient.factor(r[k]);
+                    for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradientFactor[k];
                     for (Size k = 0; k < m; ++k)
                         laplacian[k] = dot(dx[k], grads[k]) / (r[k] * r[k] + laplacianEta2);
                     for (Size k = 0; k < m; ++k) inverseR2[k] = 1.0 / (r[k] * r[k] + inverseR2Eta2);
-                    if (needsW)
-                        for (Size k = 0; k < m; ++k) sc.w[k] = Kernel::W(r[k], h);
+                    if (needsW) {
+                        Float* w = sc.w.data();
+                        for (Size k = 0; k < m; ++k) w[k] = kernelValue.value(r[k]);
+                    }
                     const ArrayView<const Size> neighs(sc.found.j.data(), m);
                     const ArrayView<const Vec> g(grads, m);
                     const NeighbourGeometry<Dim> geo{

@@ -369,4 +369,42 @@ TEST(PairGeometry, SharedFactorsAreTheirDefinitionsInBothLoops) {
     }
 }
 
+template <int Dim>
+void expectPairLoopKernelFormsEqualTheKernels() {
+    for (const KernelType type : {KernelType::WENDLAND_C2, KernelType::WENDLAND_C4,
+                                  KernelType::CUBIC_SPLINE, KernelType::QUINTIC_SPLINE})
+        withKernel<Dim>(type, [&](auto kernel) {
+            using Kernel = decltype(kernel);
+            SCOPED_TRACE(typeName(kernel));
+            const Float h = 0.013;
+            const KernelValue<Kernel> value(h);
+            const GradientFactor<Kernel> gradient(h);
+            const Float support = Kernel::supportRadius(h);
+            // q = r / h there, r (1 / h) here, one rounding apart. The splines' derivatives
+            // cancel terms at small q and the Wendland (1 - q/2)^3 near the support radius, so
+            // the round-off is judged on the factor's scale: 1e-13 of its largest value.
+            Float largest = 0;
+            for (int k = 0; k < 1000; ++k)
+                largest = std::max(largest, std::abs(Kernel::gradFactor(support * k / 1000.0, h)));
+            for (int k = 0; k < 1000; ++k) {
+                const Float r = support * k / 1000.0;
+                EXPECT_EQ(value.value(r), Kernel::W(r, h)) << "r = " << r;
+                EXPECT_LE(std::abs(gradient.factor(r) - Kernel::gradFactor(r, h)), 1e-13 * largest)
+                    << "r = " << r;
+            }
+            for (const Float r : {support, std::nextafter(support, 1.0), 2 * support}) {
+                EXPECT_EQ(value.value(r), 0.0);
+                EXPECT_LE(std::abs(gradient.factor(r)), 1e-13 * largest);
+            }
+        });
+}
+
+TEST(PairGeometry, ThePairLoopsBranchFreeKernelFormsAreTheKernels) {
+    // The pair loop computes W and (1/r) dW/dr without branches, so that its loops vectorise:
+    // W bitwise Kernel::W and 0 from the support radius on, the gradient factor within
+    // round-off of Kernel::gradFactor, for every kernel.
+    expectPairLoopKernelFormsEqualTheKernels<2>();
+    expectPairLoopKernelFormsEqualTheKernels<3>();
+}
+
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "numerics.hpp"
@@ -128,29 +129,59 @@ TEST(SharedInitialization, FusedKernelSumSharedEqualsOwnBitwise) {
     });
 }
 
-/// The sums the parts below accumulate, by type.
-const std::vector<QuantityId> floatSums = {QuantityId::DENSITY, QuantityId::TEMPERATURE,
-                                           FluidId::KERNEL_SUM, FluidId::SURFACE_NEIGHBOURS};
-const std::vector<QuantityId> vectorSums = {QuantityId::POSITION,      FluidId::KERNEL_SUM_GRADIENT,
-                                            FluidId::DENSITY_GRADIENT, FluidId::WALL_DIRECTION,
-                                            velocityGradientId<2>(0),  velocityGradientId<2>(1)};
-Float startingFloat(Size i) { return 0.1 * Float(i % 7); }
-V2 startingVector(Size i) { return V2{0.3 * Float(i % 5), -0.2 * Float(i % 3)}; }
+/// The sums the parts below accumulate, by type, and the nonzero values each starts from (as
+/// after an earlier part of a fused loop).
+template <class T>
+struct Sums;
+template <>
+struct Sums<Float> {
+    static inline const std::vector<QuantityId> ids = {QuantityId::DENSITY, QuantityId::TEMPERATURE,
+                                                       FluidId::KERNEL_SUM,
+                                                       FluidId::SURFACE_NEIGHBOURS};
+    static Float start(Size i) { return 0.1 * Float(i % 7); }
+};
+template <>
+struct Sums<V2> {
+    static inline const std::vector<QuantityId> ids = {
+        QuantityId::POSITION,    FluidId::KERNEL_SUM_GRADIENT, FluidId::DENSITY_GRADIENT,
+        FluidId::WALL_DIRECTION, velocityGradientId<2>(0),     velocityGradientId<2>(1)};
+    static V2 start(Size i) { return V2{0.3 * Float(i % 5), -0.2 * Float(i % 3)}; }
+};
+
+template <class T>
+void setStartingSums(Accumulated<2>& r) {
+    for (QuantityId id : Sums<T>::ids)
+        if (r.has(id))
+            for (Size i = 0; auto& x : r.getValue<T>(id)) x = Sums<T>::start(i++);
+}
+
+/// Every sum of type T bitwise the same in both, and changed from its start for most particles.
+template <class T>
+void expectSumsEqual(Accumulated<2>& gather, Accumulated<2>& pairs, Size n,
+                     const std::string& part) {
+    for (QuantityId id : Sums<T>::ids) {
+        if (!pairs.has(id)) continue;
+        std::size_t changed = 0;
+        const auto a = gather.getValue<T>(id), b = pairs.getValue<T>(id);
+        for (Size i = 0; i < n; ++i) {
+            EXPECT_EQ(a[i], b[i]) << part << ", particle " << i;
+            changed += b[i] != Sums<T>::start(i);
+        }
+        // The wall direction sums wall neighbours only; the others every neighbour.
+        const std::size_t least = id == FluidId::WALL_DIRECTION ? n / 4 : n / 2;
+        EXPECT_GT(changed, least) << part << ", quantity " << int(id);
+    }
+}
 
 /// A part's gather loop against the generic loop of its DerivativeTemplate (eval per pair),
-/// both starting from the same nonzero sums (as after an earlier part of a fused loop).
+/// both starting from the same nonzero sums.
 template <class Part>
 void expectGatherEqualsPairByPair(Part gather, Part pairByPair, const Storage<2>& s) {
     Accumulated<2> rGather, rPairs;
     gather.create(rGather), pairByPair.create(rPairs);
     for (Accumulated<2>* r : {&rGather, &rPairs}) {
         r->reset(s.size());
-        for (QuantityId id : floatSums)
-            if (r->has(id))
-                for (Size i = 0; auto& x : r->getValue<Float>(id)) x = startingFloat(i++);
-        for (QuantityId id : vectorSums)
-            if (r->has(id))
-                for (Size i = 0; auto& a : r->getValue<V2>(id)) a = startingVector(i++);
+        setStartingSums<Float>(*r), setStartingSums<V2>(*r);
     }
     gather.initialize(s, rGather), pairByPair.initialize(s, rPairs);
     forEachParticle(s, 0.12, [&](Size i, auto neighs, auto grads, const auto& geometry) {
@@ -158,28 +189,8 @@ void expectGatherEqualsPairByPair(Part gather, Part pairByPair, const Storage<2>
         for (std::size_t k = 0; k < neighs.size(); ++k)
             pairByPair.template evalPair<false>(i, neighs[k], grads[k], geometry.pair(k));
     });
-    for (QuantityId id : floatSums)
-        if (rPairs.has(id)) {
-            std::size_t changed = 0;
-            const auto a = rGather.getValue<Float>(id), b = rPairs.getValue<Float>(id);
-            for (Size i = 0; i < s.size(); ++i) {
-                EXPECT_EQ(a[i], b[i]) << typeName(gather) << ", particle " << i;
-                changed += b[i] != startingFloat(i);
-            }
-            EXPECT_GT(changed, s.size() / 2) << typeName(gather);  // most particles got a sum
-        }
-    for (QuantityId id : vectorSums)
-        if (rPairs.has(id)) {
-            std::size_t changed = 0;
-            const auto a = rGather.getValue<V2>(id), b = rPairs.getValue<V2>(id);
-            for (Size i = 0; i < s.size(); ++i) {
-                EXPECT_EQ(a[i], b[i]) << typeName(gather) << ", particle " << i;
-                changed += b[i] != startingVector(i);
-            }
-            // The wall direction sums wall neighbours only; the others every neighbour.
-            const std::size_t least = id == FluidId::WALL_DIRECTION ? s.size() / 4 : s.size() / 2;
-            EXPECT_GT(changed, least) << typeName(gather) << ", quantity " << int(id);
-        }
+    expectSumsEqual<Float>(rGather, rPairs, s.size(), typeName(gather));
+    expectSumsEqual<V2>(rGather, rPairs, s.size(), typeName(gather));
 }
 
 /// particlesWithSurface with what heat conduction reads: temperatures, two materials, and

@@ -89,12 +89,9 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
     void eval(Size a, Size b, const Vector<Dim>&, const PairGeometry<Dim>& pair) {
         if (!conductsHeat(cond_[a], cond_[b])) return;
         const Float ka = k_[mat_[a]], kb = k_[mat_[b]];
-        const Float ksum = ka + kb;
-        if (!(ksum > 0)) return;
-        // 4 k_a k_b / (k_a + k_b) = 2 x harmonic mean; pair.dx = r_ab = x_a - x_b.
-        const Float Ta = cond_[a] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[a] : T_[a];
-        const Float Tb = cond_[b] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[b] : T_[b];
-        const Float f = 4.0 * ka * kb / (ksum * rho_[a] * rho_[b]) * (Ta - Tb) * pair.laplacian;
+        if (!(ka + kb > 0)) return;
+        const Float f =
+            exchange(ka, kb, rho_[a], rho_[b], temperature(a), temperature(b), pair.laplacian);
         dT_[a] += m_[b] * f * invC_[mat_[a]];
         if constexpr (Symmetric) dT_[b] -= m_[a] * f * invC_[mat_[b]];
     }
@@ -103,25 +100,31 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
     void gatherNeighbours(Size a, ArrayView<const Size> neighs, ArrayView<const Vector<Dim>>,
                           const NeighbourGeometry<Dim>& geometry) {
         const int condA = cond_[a];
-        const Float ka = k_[mat_[a]], fourKa = 4.0 * ka, rhoA = rho_[a], invCa = invC_[mat_[a]];
-        const Float Ta = condA == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[a] : T_[a];
+        const Float ka = k_[mat_[a]], rhoA = rho_[a], Ta = temperature(a), invCa = invC_[mat_[a]];
         Float sum = dT_[a];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size b = neighs[k];
             if (!conductsHeat(condA, cond_[b])) continue;
             const Float kb = k_[mat_[b]];
-            const Float ksum = ka + kb;
-            if (!(ksum > 0)) continue;
-            const Float Tb =
-                cond_[b] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[b] : T_[b];
-            const Float f =
-                fourKa * kb / (ksum * rhoA * rho_[b]) * (Ta - Tb) * geometry.laplacian[k];
-            sum += m_[b] * f * invCa;
+            if (!(ka + kb > 0)) continue;
+            sum += m_[b] *
+                   exchange(ka, kb, rhoA, rho_[b], Ta, temperature(b), geometry.laplacian[k]) *
+                   invCa;
         }
         dT_[a] = sum;
     }
 
   private:
+    /// The pair's exchange per unit mass and heat capacity, 4 k_a k_b / (k_a + k_b) (twice the
+    /// harmonic mean) / (rho_a rho_b) (T_a - T_b) (r_ab . grad W) / (r^2 + eta^2).
+    static Float exchange(Float ka, Float kb, Float rhoA, Float rhoB, Float Ta, Float Tb,
+                          Float laplacian) {
+        return 4.0 * ka * kb / ((ka + kb) * rhoA * rhoB) * (Ta - Tb) * laplacian;
+    }
+    /// The temperature particle a shows to conduction: a fixed-temperature particle's wall value.
+    Float temperature(Size a) const {
+        return cond_[a] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[a] : T_[a];
+    }
     void bindStates(const Storage<Dim>& s, Accumulated<Dim>& results) {
         T_ = s.template getValue<Float>(QuantityId::TEMPERATURE);
         Tfixed_ = s.has(heat_ids::BOUNDARY_TEMPERATURE)

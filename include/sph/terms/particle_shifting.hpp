@@ -96,9 +96,8 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
         const Float vi = volume_[i], vj = volume_[j];
         const Vec dv = velocity_[j] - velocity_[i];
         const Float drho = rho_[j] - rho_[i];
-        const Float q = pair.w * 0.5 * (d.inverseWAtSpacing[i] + d.inverseWAtSpacing[j]);
-        const Float r = tensileR * std::max(0.0, (q * q) * (q * q) - tensileThreshold);
-        const Vec gradR = grad * (1 + r);
+        const Vec gradR =
+            grad * tensileFactor(pair.w, d.inverseWAtSpacing[i], d.inverseWAtSpacing[j]);
         gradC_[i] += gradR * vj;
         gradRho_[i] += grad * (vj * drho);
         if (!isFluid(kind_[j])) wallDirection_[i] += grad * vj;
@@ -126,9 +125,7 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
             const Float vj = volume_[j];
             const Vec dv = velocity_[j] - velocityI;
             const Float drho = rho_[j] - rhoI;
-            const Float q = geometry.w[k] * 0.5 * (inverseWI + inverseWAtSpacing[j]);
-            const Float r = tensileR * std::max(0.0, (q * q) * (q * q) - tensileThreshold);
-            gradC += grad * (1 + r) * vj;
+            gradC += grad * tensileFactor(geometry.w[k], inverseWI, inverseWAtSpacing[j]) * vj;
             gradRho += grad * (vj * drho);
             if (!isFluid(kind_[j])) wallDirection += grad * vj;
             for (int b = 0; b < Dim; ++b) gradV[b] += dv * (vj * grad[b]);
@@ -138,6 +135,11 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
     }
 
     static constexpr Float tensileR = 0.6, tensileThreshold = 1.5;
+    /// 1 + R max(0, q^4 - 1.5), q = W_ij / W(dx_ij) with 1 / W(dx_ij) the mean of i's and j's.
+    static Float tensileFactor(Float w, Float inverseWi, Float inverseWj) {
+        const Float q = w * 0.5 * (inverseWi + inverseWj);
+        return 1 + tensileR * std::max(0.0, (q * q) * (q * q) - tensileThreshold);
+    }
 
   private:
     std::shared_ptr<const ShiftingData<Dim>> data_;

@@ -543,7 +543,7 @@ case("couette_3d", "couette_3d.json", couette, 5e-5, [1e-4, 1e-3 / 15, 5e-5], (1
 case("taylor_green_re100", "taylor_green_re100.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [None, 0.035]))
 case("taylor_green_re1000", "taylor_green_re1000.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [0.056]))
 case("cavity_re100", "cavity_re100.json", lambda r: cavity(r, 100, 0.03), 0.02, [0.05, 0.04, 0.02], (0.04, [0.087]))
-case("cavity_re1000", "cavity_re1000.json", lambda r: cavity(r, 1000, 0.05), 0.02, [0.05, 0.04, 0.02], (0.04, [0.21]))
+case("cavity_re1000", "cavity_re1000.json", lambda r: cavity(r, 1000, 0.05), 0.01, [0.05, 0.04, 0.02, 0.01], (0.04, [0.21]))
 case("hydrostatic_tank_2d", "hydrostatic_tank_2d.json", hydrostatic, 0.05, [0.1, 0.0666666667, 0.05], (0.0666666667, None),
      doc_note=_TIME + "was 0.025, now 0.05; the full 10 s")
 case("hydrostatic_tank_3d", "hydrostatic_tank_3d.json", hydrostatic, 0.1, [0.2, 0.125, 0.1], (0.125, [0.018, None]),

@@ -93,7 +93,7 @@ def main():
         png = plot(name, doc, runs, plot_dir)
         out = [f"## {name}\n", f"Scene `{doc['scene']}`, run as `{doc['command']}` "
                f"({doc['fluid_particles']} fluid particles, {doc['steps']} steps, {doc['wall_seconds']:.0f} s with "
-               f"{doc['threads']} threads; app build {doc['app_build']}).\n",
+               f"{doc['threads']} thread{'s' if doc['threads'] != 1 else ''}; app build {doc['app_build']}).\n",
                "| check at documentation resolution | measured | gate (issue 9) | result |", "| --- | --- | --- | --- |"]
         for ch in doc["checks"]:
             metric = ch["metric"].replace("|", "\\|")

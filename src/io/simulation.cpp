@@ -97,6 +97,11 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     const std::string fingerprint = runFingerprint(doc, setup, initial) + plugins.fingerprint;
     const FieldNames fieldNames = pluginFieldNames(plugins, initial, opt.fieldNames, doc.file());
 
+    // The root writes every output, from the particles of every process gathered.
+    std::optional<Outputs<Dim>> outputs;
+    onRoot(comm, [&] { outputs.emplace(scene, setup, dir, initial, fieldNames); });
+    const std::size_t initialParticles = initial.size();
+
     RunState<Dim> state;
     sph::Storage<Dim> storage;
     if (opt.restart) {
@@ -117,15 +122,14 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                                " s, at or after the end time " + fmt("%g", scene.endTime) +
                                " s (raise it with --end-time)");
     } else {
-        storage = initial;
+        storage = std::move(initial);
     }
+    // Not needed any more: a copy of every particle for the whole run (a third of its memory).
+    initial = sph::Storage<Dim>();
     Emitters<Dim> emitters(scene, setup);
     emitters.layers() = state.emitterLayers.empty() ? emitters.layers() : state.emitterLayers;
     emitters.setEmitted(state.emitted);
 
-    // The root writes every output, from the particles of every process gathered.
-    std::optional<Outputs<Dim>> outputs;
-    onRoot(comm, [&] { outputs.emplace(scene, setup, dir, initial, fieldNames); });
     auto scheduler = sph::makeScheduler(opt.backend, Size(threads));
     sph::Solver<Dim> solver(*scheduler, setup.settings,
                             sph::makeFluidEquations(setup.model, setup.geometry),
@@ -144,7 +148,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     };
     // Emitted particles come last in the particle order, with ids after the initial particles'
     // (the same on every process: each emits every particle, and keeps its own).
-    auto emit = [&, firstId = std::size_t(initial.size())](double t) {
+    auto emit = [&, firstId = initialParticles](double t) {
         const std::size_t before = emitters.emitted(), added = emitters.emit(storage, t);
         auto id = storage.template getValue<int>(QuantityId::PARTICLE_ID);
         auto key = storage.template getValue<int>(QuantityId::ORDER_KEY);

@@ -59,8 +59,14 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         if (!all.has(sph::QuantityId::OWNER))
             all.template insert<int>(sph::QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
         partition(loadPoints(all));
-        const auto x = all.template getValue<Vec>(sph::QuantityId::POSITION);
         auto owner = all.template getValue<int>(sph::QuantityId::OWNER);
+        if (comm_.size() == 1) {  // every particle stays and there is no halo: nothing to copy
+            std::fill(owner.begin(), owner.end(), 0);
+            sph::sortByOrderKey(all);
+            owned_.assign(all.size(), 1);
+            return;
+        }
+        const auto x = all.template getValue<Vec>(sph::QuantityId::POSITION);
         std::vector<Size> mine;
         for (Size i = 0; i < all.size(); ++i)
             if (boxOwner(domain_.wrap(x[i])) == comm_.rank()) mine.push_back(i);

@@ -85,39 +85,11 @@ double largestBlockSpeed(const FluidBlock<Dim>& f, double dx) {
     return u;
 }
 
-/// The height of the fluid blocks' highest point above the domain's lowest, along gravity g.
-template <int Dim>
-double waterTop(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
-    const sph::Vector<Dim> up = g * (-1 / norm(g));
-    // Along up, a box is highest at its corner with max on the axes up points along, else min.
-    auto highest = [&](const SceneVec<Dim>& lo, const SceneVec<Dim>& hi) {
-        double h = 0;
-        for (int k = 0; k < Dim; ++k) h += up[k] * (up[k] > 0 ? hi[k] : lo[k]);
-        return h;
-    };
-    double top = -1e300;
-    for (const auto& f : scene.fluids) {
-        double h = highest(f.min, f.max);
-        if (f.shape != Shape::BOX) {
-            h = f.radius;
-            for (int k = 0; k < Dim; ++k) h += up[k] * f.center[k];
-        }
-        top = std::max(top, h);
-    }
-    // The domain's lowest point along up: its min on the axes up points along, else its max.
-    double floor = 0;
-    for (int k = 0; k < Dim; ++k)
-        floor += up[k] * (up[k] > 0 ? scene.domainMin[k] : scene.domainMax[k]);
-    return top - floor;
-}
-
 /// The flow's velocity scale U for "auto" sound speeds (c0 = 10 U), derived from the scene:
 /// the largest of the initial fluid speeds (every lattice point of every block), the speeds
-/// of moving walls and of emitters, and, under gravity, where the water has a free surface,
-/// the free-fall speed sqrt(2 g H) with H the height of the water's top above the floor
-/// (Monaghan 1994, sec. 3; the domain's height along g where emitters or open sides may bring
-/// water from elsewhere), or, where the fluid fills a closed box, sqrt(g H) with H the
-/// domain's height (its hydrostatic compression) and the buoyancy speed sqrt(g beta dT H)
+/// of moving walls and of emitters, and, under gravity, the free-fall speed sqrt(2 g H) over
+/// the domain's height along g where the water has a free surface, or, where the fluid fills a
+/// closed box, sqrt(g H) (its hydrostatic compression) and the buoyancy speed sqrt(g beta dT H)
 /// (dT the spread of the fluid temperatures at every lattice point of every block, and of the
 /// walls and bodies). physics.max_speed overrides it. 0 where none of these gives a speed.
 template <int Dim>
@@ -149,9 +121,6 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
         const bool freeSurface =
             open || !scene.emitters.empty() || fluidVolume < 0.99 * domainVolume;
         if (freeSurface) {
-            // Water starting at rest cannot fall further than from its top to the floor.
-            if (!open && scene.emitters.empty() && !scene.fluids.empty())
-                height = std::min(height, waterTop(scene, g));
             U = std::max(U, std::sqrt(2 * gravity * height));
         } else {
             // No fall, but the hydrostatic compression rho0 g H must stay near 1 % of

@@ -1,12 +1,9 @@
-// The scene reader on its own: defaults, overrides by dotted path, every scene in scenes/ loads;
-// the velocity scale the set-up derives from a scene.
+// The scene reader on its own: defaults, overrides by dotted path, every scene in scenes/ loads.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <filesystem>
 
 #include "io/scene_loader.hpp"
-#include "io/scene_setup.hpp"
 
 using namespace num::io;
 
@@ -89,38 +86,4 @@ TEST(SceneReader, PairLoopEvaluation) {
     EXPECT_EQ(readScene<2>(doc).evaluation, "symmetric");
     doc.set("particles.evaluation=\"pairs\"");
     EXPECT_THROW(readScene<2>(doc), AppError);
-}
-
-// The velocity scale U of an "auto" sound speed (c0 = 10 U) under gravity with a free surface:
-// the free fall from the water's top to the floor, sqrt(2 g H) (Monaghan 1994), or from the
-// domain's top where water may come from elsewhere (an open side, an emitter).
-TEST(SceneSetup, AutoSoundSpeedFallsFromTheWatersTop) {
-    const std::string text = R"({
-      "dimension": 2, "domain": {"min": [0, 0], "max": [1, 2]},
-      "boundaries": {"x_min": {"type": "wall"}, "x_max": {"type": "wall"},
-                     "y_min": {"type": "wall"}, "y_max": {"type": "wall"}},
-      "particles": {"spacing": 0.05}, "time": {"end": 1}, "gravity": [0, -9.81],
-      "materials": {"water": {"density": 1000}},
-      "fluids": [{"material": "water", "shape": "box", "min": [0, 0], "max": [0.5, 0.8]}],
-      "physics": {"heat": false}})";
-    auto scale = [&](const std::vector<std::string>& sets) {
-        SceneDocument doc = SceneDocument::fromText(text, "scene.json");
-        for (const std::string& s : sets) doc.set(s);
-        return makeSceneSetup(readScene<2>(doc), 1).velocityScale;
-    };
-    const double g = 9.81;
-    EXPECT_DOUBLE_EQ(scale({}), std::sqrt(2 * g * 0.8));
-    // Gravity along -x: the water's top along +x is x = 0.5.
-    EXPECT_DOUBLE_EQ(scale({"gravity=[-9.81, 0]"}), std::sqrt(2 * g * 0.5));
-    // A disc's top: centre + radius.
-    EXPECT_DOUBLE_EQ(scale({"fluids.0={\"material\": \"water\", \"shape\": \"circle\", "
-                            "\"center\": [0.5, 1.0], \"radius\": 0.2}"}),
-                     std::sqrt(2 * g * 1.2));
-    // The highest of several blocks.
-    const std::string block = "{\"material\": \"water\", \"shape\": \"box\", \"min\": ";
-    EXPECT_DOUBLE_EQ(scale({"fluids=[" + block + "[0, 0], \"max\": [0.5, 0.8]}, " + block +
-                            "[0.6, 0], \"max\": [1, 1.5]}]"}),
-                     std::sqrt(2 * g * 1.5));
-    // An open side: the domain's height.
-    EXPECT_DOUBLE_EQ(scale({"boundaries.y_max.type=\"open\""}), std::sqrt(2 * g * 2));
 }

@@ -20,27 +20,36 @@ std::string number(double v) {
     return buf;
 }
 
-/// The bytes of one field, as VTK wants them (Float64 with 1 or 3 components, or Int32).
+/// How VTK stores one field: Float64 with 1 or 3 components, or Int32.
+struct FieldLayout {
+    int components;
+    const char* type;
+    std::uint64_t bytesPerParticle;
+};
+FieldLayout layoutOf(const OutputField& f) {
+    if (f.type == OutputField::Type::VECTOR) return {3, "Float64", 24};
+    if (f.type == OutputField::Type::FLOAT) return {1, "Float64", 8};
+    return {1, "Int32", 4};
+}
+
+/// The bytes of one field, as layoutOf(f) says.
 template <int Dim>
-std::vector<char> fieldBytes(const sph::Storage<Dim>& s, const OutputField& f, int& components,
-                             std::string& type) {
+std::vector<char> fieldBytes(const sph::Storage<Dim>& s, const OutputField& f) {
     std::vector<char> bytes;
     auto append = [&](const auto& v) {
         const char* p = reinterpret_cast<const char*>(&v);
         bytes.insert(bytes.end(), p, p + sizeof v);
     };
     const Size n = s.size();
+    bytes.reserve(n * layoutOf(f).bytesPerParticle);
     if (f.type == OutputField::Type::VECTOR) {
-        components = 3, type = "Float64";
         const auto v = f.derivative ? s.template getDt<sph::Vector<Dim>>(f.id)
                                     : s.template getValue<sph::Vector<Dim>>(f.id);
         for (Size i = 0; i < n; ++i)
             for (int k = 0; k < 3; ++k) append(double(k < Dim ? v[i][k] : 0.0));
     } else if (f.type == OutputField::Type::FLOAT) {
-        components = 1, type = "Float64";
         for (double x : s.template getValue<Float>(f.id)) append(x);
     } else {
-        components = 1, type = "Int32";
         for (int x : s.template getValue<int>(f.id)) append(std::int32_t(x));
     }
     return bytes;
@@ -48,20 +57,21 @@ std::vector<char> fieldBytes(const sph::Storage<Dim>& s, const OutputField& f, i
 
 }  // namespace
 
+// The arrays follow the XML in one appended block, each as its byte count (UInt64) and its
+// bytes. Their sizes are known in advance, so the XML is written first and each array is made
+// and written in turn: one array in memory at a time, not all of them.
 template <int Dim>
 void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
               const std::vector<OutputField>& fields, double time) {
     const std::uint64_t n = s.size();
-    std::vector<std::vector<char>> blocks;
     std::ostringstream xml;
     std::uint64_t offset = 0;
     auto array = [&](const std::string& name, const std::string& type, int components,
-                     std::vector<char> bytes) {
+                     std::uint64_t bytes) {
         xml << "        <DataArray type=\"" << type << "\" Name=\"" << name
             << "\" NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\""
             << offset << "\"/>\n";
-        offset += sizeof(std::uint64_t) + bytes.size();
-        blocks.push_back(std::move(bytes));
+        offset += sizeof(std::uint64_t) + bytes;
     };
     xml << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
@@ -75,12 +85,25 @@ void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
         << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
         << "      <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n";
     for (const OutputField& f : fields) {
-        int components = 1;
-        std::string type;
-        std::vector<char> bytes = fieldBytes(s, f, components, type);
-        array(f.name, type, components, std::move(bytes));
+        const FieldLayout l = layoutOf(f);
+        array(f.name, l.type, l.components, n * l.bytesPerParticle);
     }
     xml << "      </PointData>\n      <Points>\n";
+    array("Points", "Float64", 3, n * 24);
+    xml << "      </Points>\n      <Cells>\n";
+    array("connectivity", "Int64", 1, n * 8);
+    array("offsets", "Int64", 1, n * 8);
+    array("types", "UInt8", 1, n);
+    xml << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+        << "  <AppendedData encoding=\"raw\">\n   _";
+    OutFile out(path);
+    out.write(xml.str());
+    auto block = [&](const std::vector<char>& b) {
+        const std::uint64_t size = b.size();
+        out.write(&size, sizeof size);
+        out.write(b.data(), b.size());
+    };
+    for (const OutputField& f : fields) block(fieldBytes(s, f));
     {
         std::vector<char> bytes;
         bytes.reserve(n * 24);
@@ -90,27 +113,19 @@ void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
                 const char* p = reinterpret_cast<const char*>(&c);
                 bytes.insert(bytes.end(), p, p + 8);
             }
-        array("Points", "Float64", 3, std::move(bytes));
+        block(bytes);
     }
-    xml << "      </Points>\n      <Cells>\n";
-    std::vector<char> conn(n * 8), offs(n * 8), types(n, char(1));  // VTK_VERTEX = 1
-    for (std::uint64_t i = 0; i < n; ++i) {
-        const std::int64_t c = std::int64_t(i), o = std::int64_t(i + 1);
-        std::memcpy(&conn[i * 8], &c, 8);
-        std::memcpy(&offs[i * 8], &o, 8);
+    {
+        std::vector<char> conn(n * 8), offs(n * 8);
+        for (std::uint64_t i = 0; i < n; ++i) {
+            const std::int64_t c = std::int64_t(i), o = std::int64_t(i + 1);
+            std::memcpy(&conn[i * 8], &c, 8);
+            std::memcpy(&offs[i * 8], &o, 8);
+        }
+        block(conn);
+        block(offs);
     }
-    array("connectivity", "Int64", 1, std::move(conn));
-    array("offsets", "Int64", 1, std::move(offs));
-    array("types", "UInt8", 1, std::move(types));
-    xml << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
-        << "  <AppendedData encoding=\"raw\">\n   _";
-    OutFile out(path);
-    out.write(xml.str());
-    for (const auto& b : blocks) {
-        const std::uint64_t size = b.size();
-        out.write(&size, sizeof size);
-        out.write(b.data(), b.size());
-    }
+    block(std::vector<char>(n, char(1)));  // VTK_VERTEX = 1
     out.write("\n  </AppendedData>\n</VTKFile>\n");
     out.close();
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 #include <sstream>
+#include <stdexcept>
 
 #include "io/file.hpp"
 
@@ -66,8 +67,10 @@ void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
     const std::uint64_t n = s.size();
     std::ostringstream xml;
     std::uint64_t offset = 0;
+    std::vector<std::uint64_t> declared;  // each array's size, as the XML gives it
     auto array = [&](const std::string& name, const std::string& type, int components,
                      std::uint64_t bytes) {
+        declared.push_back(bytes);
         xml << "        <DataArray type=\"" << type << "\" Name=\"" << name
             << "\" NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\""
             << offset << "\"/>\n";
@@ -98,8 +101,11 @@ void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
         << "  <AppendedData encoding=\"raw\">\n   _";
     OutFile out(path);
     out.write(xml.str());
+    std::size_t written = 0;
     auto block = [&](const std::vector<char>& b) {
         const std::uint64_t size = b.size();
+        if (size != declared[written++])
+            throw std::logic_error("writeVtu: an array's size differs from its header's");
         out.write(&size, sizeof size);
         out.write(b.data(), b.size());
     };

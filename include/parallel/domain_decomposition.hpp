@@ -59,14 +59,13 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         if (!all.has(sph::QuantityId::OWNER))
             all.template insert<int>(sph::QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
         partition(loadPoints(all));
-        auto owner = all.template getValue<int>(sph::QuantityId::OWNER);
         if (comm_.size() == 1) {  // every particle stays and there is no halo: nothing to copy
-            std::fill(owner.begin(), owner.end(), 0);
+            ownEveryParticle(all);
             sph::sortByOrderKey(all);
-            owned_.assign(all.size(), 1);
             return;
         }
         const auto x = all.template getValue<Vec>(sph::QuantityId::POSITION);
+        auto owner = all.template getValue<int>(sph::QuantityId::OWNER);
         std::vector<Size> mine;
         for (Size i = 0; i < all.size(); ++i)
             if (boxOwner(domain_.wrap(x[i])) == comm_.rank()) mine.push_back(i);
@@ -158,9 +157,7 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
 
     bool beforeStep(sph::Storage<Dim>& s, bool reorder, bool particlesChanged) override {
         if (comm_.size() == 1) {
-            auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
-            std::fill(owner.begin(), owner.end(), 0);
-            owned_.assign(s.size(), 1);
+            ownEveryParticle(s);
             if (reorder) sph::reorderByKey(s, domain_, radius_);
             return reorder;
         }
@@ -201,6 +198,12 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
     double haloRadius() const { return haloRadius_; }
 
   private:
+    /// One process: it owns every particle and holds no halo.
+    void ownEveryParticle(sph::Storage<Dim>& s) {
+        auto owner = s.template getValue<int>(sph::QuantityId::OWNER);
+        std::fill(owner.begin(), owner.end(), 0);
+        owned_.assign(s.size(), 1);
+    }
     /// The process whose box holds x (wrapped on periodic axes); this one for a position no box
     /// holds (not finite: the health check reports it).
     int boxOwner(const Vec& x) const {

@@ -3,8 +3,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "io/file.hpp"
 
@@ -67,14 +69,24 @@ void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
     const std::uint64_t n = s.size();
     std::ostringstream xml;
     std::uint64_t offset = 0;
-    std::vector<std::uint64_t> declared;  // each array's size, as the XML gives it
+    // Each array's size as the XML gives it, and how to make its bytes, in the file's order.
+    std::vector<std::pair<std::uint64_t, std::function<std::vector<char>()>>> arrays;
     auto array = [&](const std::string& name, const std::string& type, int components,
-                     std::uint64_t bytes) {
-        declared.push_back(bytes);
+                     std::uint64_t bytes, std::function<std::vector<char>()> make) {
         xml << "        <DataArray type=\"" << type << "\" Name=\"" << name
             << "\" NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\""
             << offset << "\"/>\n";
         offset += sizeof(std::uint64_t) + bytes;
+        arrays.emplace_back(bytes, std::move(make));
+    };
+    // The cells: one vertex per particle (connectivity i, offsets i + 1).
+    auto indices = [n](std::int64_t first) {
+        std::vector<char> bytes(n * 8);
+        for (std::uint64_t i = 0; i < n; ++i) {
+            const std::int64_t v = std::int64_t(i) + first;
+            std::memcpy(&bytes[i * 8], &v, 8);
+        }
+        return bytes;
     };
     xml << "<?xml version=\"1.0\"?>\n"
         << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
@@ -89,49 +101,28 @@ void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
         << "      <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n";
     for (const OutputField& f : fields) {
         const FieldLayout l = layoutOf(f);
-        array(f.name, l.type, l.components, n * l.bytesPerParticle);
+        array(f.name, l.type, l.components, n * l.bytesPerParticle,
+              [&s, &f] { return fieldBytes(s, f); });
     }
     xml << "      </PointData>\n      <Points>\n";
-    array("Points", "Float64", 3, n * 24);
+    const OutputField points{"Points", sph::QuantityId::POSITION, OutputField::Type::VECTOR};
+    array("Points", "Float64", 3, n * layoutOf(points).bytesPerParticle,
+          [&] { return fieldBytes(s, points); });
     xml << "      </Points>\n      <Cells>\n";
-    array("connectivity", "Int64", 1, n * 8);
-    array("offsets", "Int64", 1, n * 8);
-    array("types", "UInt8", 1, n);
+    array("connectivity", "Int64", 1, n * 8, [&] { return indices(0); });
+    array("offsets", "Int64", 1, n * 8, [&] { return indices(1); });
+    array("types", "UInt8", 1, n, [n] { return std::vector<char>(n, char(1)); });  // VTK_VERTEX
     xml << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
         << "  <AppendedData encoding=\"raw\">\n   _";
     OutFile out(path);
     out.write(xml.str());
-    std::size_t written = 0;
-    auto block = [&](const std::vector<char>& b) {
-        const std::uint64_t size = b.size();
-        if (size != declared[written++])
+    for (const auto& [size, make] : arrays) {
+        const std::vector<char> bytes = make();
+        if (bytes.size() != size)
             throw std::logic_error("writeVtu: an array's size differs from its header's");
         out.write(&size, sizeof size);
-        out.write(b.data(), b.size());
-    };
-    for (const OutputField& f : fields) block(fieldBytes(s, f));
-    {
-        std::vector<char> bytes;
-        bytes.reserve(n * 24);
-        for (const auto& x : s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION))
-            for (int k = 0; k < 3; ++k) {
-                const double c = k < Dim ? x[k] : 0.0;
-                const char* p = reinterpret_cast<const char*>(&c);
-                bytes.insert(bytes.end(), p, p + 8);
-            }
-        block(bytes);
+        out.write(bytes.data(), bytes.size());
     }
-    {
-        std::vector<char> conn(n * 8), offs(n * 8);
-        for (std::uint64_t i = 0; i < n; ++i) {
-            const std::int64_t c = std::int64_t(i), o = std::int64_t(i + 1);
-            std::memcpy(&conn[i * 8], &c, 8);
-            std::memcpy(&offs[i * 8], &o, 8);
-        }
-        block(conn);
-        block(offs);
-    }
-    block(std::vector<char>(n, char(1)));  // VTK_VERTEX = 1
     out.write("\n  </AppendedData>\n</VTKFile>\n");
     out.close();
 }

@@ -531,7 +531,8 @@ def case(name, scene, compare, doc, study, ci, **kw):
 #   Ra 1e4 at 0.04 u_max 0.016-0.042, v_max 0.003-0.041 -> 0.063, 0.062; Ra 1e5 at 0.02 (the
 #   default, cfl 0.249 and symmetric) u_max 0.020-0.063, v_max 0.035-0.068 (bounds kept).
 # doc_note: where the documentation resolution is coarser than the case deserves (run.sh has to
-# finish on 2 cores), it says so; the report prints it.
+# finish on 2 cores), it says so; the report prints it. miss_note: for a case that misses its
+# gate, what was measured about why (the report prints it under the case's figures).
 REGRESSION_BUILD = "94eaf21"
 _TIME = "documentation resolution reduced so that validation/run.sh finishes on 2 cores; "
 case("poiseuille_2d", "poiseuille_2d.json", poiseuille, 2.5e-5, [1e-4, 5e-5, 2.5e-5], (5e-5, None))
@@ -549,11 +550,37 @@ case("hydrostatic_tank_2d", "hydrostatic_tank_2d.json", hydrostatic, 0.05, [0.1,
 case("hydrostatic_tank_3d", "hydrostatic_tank_3d.json", hydrostatic, 0.1, [0.2, 0.125, 0.1], (0.125, [0.018, None]),
      doc_note="documented at 0.1 (10 x 10 x 10) since 94eaf21: at 0.125 (8 x 8 x 8, every particle within a kernel "
      "support of a wall) the pressure is 1.2 % off")
-case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715 / 40, [0.05715 / 10, 0.05715 / 20, 0.05715 / 40],
-     (0.05715 / 20, [0.34]))
+# The study adds a / 80 (12,800 particles, 9 min on 2 cores); documented at a / 40.
+case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715 / 40,
+     [0.05715 / 10, 0.05715 / 20, 0.05715 / 40, 0.05715 / 80], (0.05715 / 20, [0.34]),
+     miss_note="the early surge. The front runs ahead of the experiment from the start, +0.12 to +0.16 at "
+     "T = 0.83 to 2.0, by about as much at a / 80 as at a / 40 (+0.131, +0.164, +0.131 against +0.120, +0.151, "
+     "+0.111): refining does not move it, while the late front converges (at T = 9.24, -0.160 at a / 40, "
+     "+0.003 at a / 80; +0.061 or less from T = 4.4 on at a / 80). Through the app (2026-12-01) neither a "
+     "hydrostatic initial pressure (fluids.0.pressure = rho g (2a - y): +0.126 at T = 0.83, 0.161 in all) nor "
+     "a sound speed from the water's top (c0 29 % lower: 0.157) changes it. The same scheme, column and "
+     "release (the dam removed at once) bring the front to the far wall of Lobovsky et al.'s tank, a "
+     "similar experiment, at T = 2.478 against its measured 2.464 (H / 80; dam_break_pressure_lobovsky). "
+     "The model has no gate: how the experiment's column was released is not modelled")
 # Documented at H / 80 (4 min on 2 cores): the arrival misses its gate at H / 60 (0.024).
 case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_break_pressure, 0.3 / 80,
-     [0.3 / 20, 0.3 / 40, 0.3 / 60, 0.3 / 80], (0.3 / 20, [0.16, 2.8, None]))
+     [0.3 / 20, 0.3 / 40, 0.3 / 60, 0.3 / 80], (0.3 / 20, [0.16, 2.8, None]),
+     miss_note="the impact peak. After the impact the wall pressure rings: at H / 40 the unaveraged "
+     "P at sensor 2 rises to 28, falls to 0 and rises again, several times, about T = 0.035 (6 ms) apart: "
+     "sound waves in water whose sound speed is 10 U (34 m/s), not 1,480 m/s, so the ringing is as slow "
+     "as the impact itself. At the "
+     "impacting front most particles have a cut kernel support, where the no-tension limit of free "
+     "surfaces (docs/physics.md) holds the pressure at or above ambient: it cuts the negative half of each "
+     "swing, and the average over T = 0.05 keeps the positive half. Measured through the app "
+     "(2026-12-01): without the limit (physics.free_surface_clamp: false) the peak falls from 9.6 to 3.3 "
+     "at H / 40 and from 12.3 to 3.0 at H / 80, but the front arrives late (T = 2.664 and 2.551 against "
+     "2.464) and the run at H / 80 is lost at t = 0.567 s (a density of 481 kg/m^3 in the film left on the wall behind the column); "
+     "with the limit on the pressure only (the density left free; a code change, not an option) the peak "
+     "is 9.2 at H / 40 and that run is lost at t = 0.60 s. Also at H / 40, peak with: density diffusion "
+     "0.3 instead of 0.1, 9.3; a sound speed of 20 U, 6.5; an artificial viscosity of 0.1, 8.8 (and a "
+     "late front); a surface threshold of 0.75 instead of 0.9 (a code change), 7.4. Meeting it needs a "
+     "free-surface treatment that does not rectify the sound waves and still keeps thin sheets from "
+     "thinning away; not built")
 # Ra = 1e5 is documented at 0.01 (100 x 100, 11 min): its thin boundary layers miss the gate
 # for v_max at 0.02 (0.060) and 0.0125 (0.041).
 for _ra, _doc, _ci, _bounds, _study in (("1e3", 0.02, 0.04, [0.053, 0.042, None], [0.05, 0.04, 0.02]),

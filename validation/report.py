@@ -99,6 +99,8 @@ def main():
             metric = ch["metric"].replace("|", "\\|")
             out.append(f"| {metric} | {ch['value']:.4g} | {ch['gate']:g} | {'pass' if ch['passed'] else '**MISSED**'} |")
         out.append(f"\n{doc['notes']}\n")
+        if not ok and c.get("miss_note"):
+            out.append(f"Why it misses its gate: {c['miss_note']}.\n")
         if c.get("doc_note"):
             out.append(f"Resolution: {c['doc_note']}.\n")
         out.append("Convergence (the same scene with `--set particles.spacing=DX`):\n")

@@ -58,9 +58,11 @@ inline constexpr double inverseR2Eta2 = 0.01;
 // alpha h c0 / (2 (Dim + 2)) (Monaghan 2005, Rep. Prog. Phys. 68, 1703, eq. 4.10), as for water
 // in a dam break at any practical spacing; else 0, since there the laminar term resolves the
 // dissipation and alpha would only add to it (in the Taylor-Green vortex at Re = 100, 50 x 50,
-// alpha = 0.02 would add 7.5 % to nu). Measured on the default 2D dam break: with 0,
-// spray reaches 17 m/s (3 times the free-fall speed) and densities 20 % above rest; with 0.02,
-// neither.
+// alpha = 0.02 would add 7.5 % to nu). Measured on the default 2D dam break of 90c88f1 (spacing
+// 0.02 m): with 0, spray reaches 17 m/s (3 times the free-fall speed) and densities 20 % above
+// rest; with 0.02, neither. The default of today (spacing 0.008 m, 21,000 fluid particles) still
+// reaches both once with 0.02, at the surge's impact on the right wall (t = 0.58 s: 17 m/s and
+// 1.2e3 kg/m^3; docs/scenes.md).
 inline constexpr double artificialViscosity = 0.02;
 inline double artificialViscosityFor(double nu, double h, double c0, int dim) {
     return nu < artificialViscosity * h * c0 / (2 * (dim + 2)) ? artificialViscosity : 0.0;

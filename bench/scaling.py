@@ -26,6 +26,8 @@ import sys
 import tempfile
 import time
 
+from machine import machine
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build/release"
 REPEATS = int(sys.argv[2]) if len(sys.argv) > 2 else 3
@@ -48,14 +50,8 @@ def run(app, args, processes, threads, out):
         return seconds, json.load(f)
 
 
-def machine():
-    cpu = "unknown CPU"
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    return f"{cpu}, {os.cpu_count()} cores, load average {os.getloadavg()[0]:.2f}"
+def machine_and_load():
+    return f"{machine()}, load average {os.getloadavg()[0]:.2f}"
 
 
 def strong_scaling(work):
@@ -68,7 +64,7 @@ def strong_scaling(work):
                "--end-time", "0.01"])]
     layouts = [(1, 1), (1, 2), (2, 1)]
     print("## Strong scaling (whole process, seconds; medians of", REPEATS, "alternating runs)")
-    print(f"machine: {machine()}")
+    print(f"machine: {machine_and_load()}")
     for name, app, args in cases:
         times = {layout: [] for layout in layouts}
         for _ in range(REPEATS):

@@ -18,6 +18,8 @@ import statistics
 import subprocess
 import sys
 
+from machine import machine
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build/release"
 ROUNDS = int(sys.argv[2]) if len(sys.argv) > 2 else 5
@@ -26,16 +28,6 @@ EVALUATION = sys.argv[4] if len(sys.argv) > 4 else "asymmetric"
 BENCH = os.path.join(ROOT, BUILD, "bench", "bench_dam_break")
 # Steps per timed repeat: about the same seconds per run at each size.
 SIZES = {"1e4": 40, "1e5": 12, "1e6": 4}
-
-
-def machine():
-    model = "unknown CPU"
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                model = line.split(":", 1)[1].strip()
-                break
-    return f"{model}, {os.cpu_count()} cores"
 
 
 def load():

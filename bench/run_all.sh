@@ -72,16 +72,11 @@ for eval in symmetric asymmetric; do
 done
 
 echo
-echo "## Scaling: 2D dam break, heat on, symmetric, 1e4 to 1e6 fluid particles"
-header
-for n in 1e4 3e4 1e5 3e5 1e6; do
-    steps=20
-    [ "$n" = 3e5 ] && steps=8
-    [ "$n" = 1e6 ] && steps=4
-    for t in 1 2; do
-        row "2D n=$n" --dim 2 --particles $n --heat 1 --threads $t --steps $steps --warmup 2 \
-            --evaluation symmetric
-    done
+echo "## Scaling: 2D dam break, heat on, 1e4 to 1e6 fluid particles (sizes alternated)"
+echo
+for loop in asymmetric symmetric; do
+    bench/size_scaling.py "$BUILD" "$REPEATS" 1,2 "$loop"
+    echo
 done
 
 echo

@@ -30,11 +30,6 @@ BENCH = os.path.join(ROOT, BUILD, "bench", "bench_dam_break")
 SIZES = {"1e4": 40, "1e5": 12, "1e6": 4}
 
 
-def load():
-    with open("/proc/loadavg") as f:
-        return float(f.read().split()[0])
-
-
 def run(size, steps, threads):
     cmd = [BENCH, "--dim", "2", "--particles", size, "--heat", "1", "--threads", str(threads),
            "--steps", str(steps), "--warmup", "2", "--repeats", "3", "--evaluation", EVALUATION]
@@ -45,13 +40,13 @@ def run(size, steps, threads):
 
 
 def main():
-    loads = [load()]
+    loads = [os.getloadavg()[0]]
     times = {(s, t): [] for s in SIZES for t in THREADS}
     for _ in range(ROUNDS):
         for t in THREADS:
             for size, steps in SIZES.items():
                 times[(size, t)].append(run(size, steps, t))
-                loads.append(load())
+                loads.append(os.getloadavg()[0])
     print(f"machine: {machine()}; load average {min(loads):.1f} to {max(loads):.1f}; "
           f"{ROUNDS} rounds, {EVALUATION} pair loop")
     print("| threads | fluid particles | ns per fluid particle-step (rounds' range) "

@@ -15,7 +15,8 @@
 
 namespace num::io {
 
-inline constexpr std::uint32_t kCheckpointVersion = 2;  ///< 2: with the run's fingerprint
+inline constexpr std::uint32_t kCheckpointVersion =
+    3;  ///< 2: the run's fingerprint; 3: emitter points blocked
 
 /// Appends plain values, strings and vectors to a byte buffer.
 class ByteWriter {

@@ -1,5 +1,5 @@
 // From a checked Scene to what the engine runs: run settings, the fluid model (with heat and
-// buoyancy terms), the geometry, the initial particles, and emitters that add particles.
+// buoyancy terms), the geometry and the initial particles (emitters: io/emitters.hpp).
 #pragma once
 
 #include <map>
@@ -37,24 +37,5 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
 /// (temperature, pressure, velocity of fluid blocks) and thermal conditions of walls and bodies.
 template <int Dim>
 sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& setup);
-
-/// Emitter state: the layers of particles each emitter has injected so far.
-template <int Dim>
-class Emitters {
-  public:
-    Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup);
-    /// Adds the layers due by time t; returns the number of particles added.
-    std::size_t emit(sph::Storage<Dim>& storage, double t);
-    std::vector<std::uint64_t>& layers() { return layers_; }
-    std::size_t emitted() const { return emitted_; }
-    void setEmitted(std::size_t n) { emitted_ = n; }
-
-  private:
-    const Scene<Dim>& scene_;
-    const SceneSetup<Dim>& setup_;
-    std::vector<std::vector<sph::Vector<Dim>>> discs_;  ///< lattice offsets of each nozzle
-    std::vector<std::uint64_t> layers_;
-    std::size_t emitted_ = 0;
-};
 
 }  // namespace num::io

@@ -84,7 +84,10 @@ void printRunReport(const std::string& program, const Outputs<Dim>& out, const S
                   (unsigned long long)summary.at("particles").get<std::uint64_t>(),
                   (unsigned long long)summary.at("emitted_particles").get<std::uint64_t>(),
                   (unsigned long long)summary.at("removed_particles").get<std::uint64_t>());
-    item("  particles", line);
+    std::string particles = line;
+    if (const auto blocked = summary.at("emitter_points_blocked").get<std::uint64_t>())
+        particles += ", " + std::to_string(blocked) + " nozzle points left out (water was there)";
+    item("  particles", particles);
     const auto& c = summary.at("conservation");
     auto startOf = [&](const char* k) { return c.at(k).at("start").get<double>(); };
     auto endOf = [&](const char* k) { return c.at(k).at("end").get<double>(); };

@@ -23,12 +23,14 @@ struct RunState {
     std::int64_t outputIndex = 0, checkpointCount = 0;
     std::vector<std::uint64_t> emitterLayers;
     std::uint64_t emitted = 0, removed = 0;
-    std::vector<double> start;  ///< conservation at t = 0 (see conservationVector)
+    std::uint64_t emitterBlocked = 0;  ///< nozzle points left out: water was there
+    std::vector<double> start;         ///< conservation at t = 0 (see conservationVector)
     std::vector<std::pair<double, std::string>> series;
 
     void write(ByteWriter& w) const {
         w.put(time), w.put(steps), w.put(outputIndex), w.put(checkpointCount);
-        w.putVector(emitterLayers), w.put(emitted), w.put(removed), w.putVector(start);
+        w.putVector(emitterLayers), w.put(emitted), w.put(removed), w.put(emitterBlocked);
+        w.putVector(start);
         w.put<std::uint64_t>(series.size());
         for (const auto& [t, f] : series) w.put(t), w.putString(f);
     }
@@ -37,6 +39,7 @@ struct RunState {
         outputIndex = r.get<std::int64_t>(), checkpointCount = r.get<std::int64_t>();
         emitterLayers = r.getVector<std::uint64_t>();
         emitted = r.get<std::uint64_t>(), removed = r.get<std::uint64_t>();
+        emitterBlocked = r.get<std::uint64_t>();
         start = r.getVector<double>();
         const auto n = r.get<std::uint64_t>();
         for (std::uint64_t k = 0; k < n; ++k) {
@@ -195,6 +198,7 @@ nlohmann::json summaryJson(const Scene<Dim>& scene, const sph::Storage<Dim>& s,
             {"smoothing_length", setup.settings.template get<double>("smoothing_length")},
             {"sound_speed", setup.model.c0()},
             {"emitted_particles", state.emitted},
+            {"emitter_points_blocked", state.emitterBlocked},
             {"removed_particles", state.removed},
             {"outputs", state.outputIndex},
             {"conservation", c}};

@@ -145,33 +145,6 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
     return U;
 }
 
-/// The particles one emitter injects per layer: offsets across its nozzle, on the lattice.
-template <int Dim>
-std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
-    std::vector<sph::Vector<Dim>> out;
-    const int m = std::max(1, int(std::lround(2 * e.radius / dx)));
-    auto offset = [&](int j) { return (j + 0.5 - 0.5 * m) * dx; };
-    if constexpr (Dim == 2) {
-        const sph::Vector<2> across{{-e.direction[1], e.direction[0]}};
-        for (int j = 0; j < m; ++j) out.push_back(across * offset(j));
-    } else {
-        // An orthonormal pair across the direction d.
-        sph::Vector<3> a{{1, 0, 0}};
-        if (std::abs(e.direction[0]) > 0.9) a = {{0, 1, 0}};
-        sph::Vector<3> e1 = a - e.direction * dot(a, e.direction);
-        e1 /= norm(e1);
-        const sph::Vector<3> e2{{e.direction[1] * e1[2] - e.direction[2] * e1[1],
-                                 e.direction[2] * e1[0] - e.direction[0] * e1[2],
-                                 e.direction[0] * e1[1] - e.direction[1] * e1[0]}};
-        for (int i = 0; i < m; ++i)
-            for (int j = 0; j < m; ++j)
-                if (offset(i) * offset(i) + offset(j) * offset(j) <= e.radius * e.radius + 1e-12)
-                    out.push_back(e1 * offset(i) + e2 * offset(j));
-        if (out.empty()) out.push_back({});
-    }
-    return out;
-}
-
 /// Whether the fluid fills a box closed by walls on every side, with no bodies or emitters: no
 /// free surface; under gravity the density is then the kernel sum (docs/physics.md, "Closed
 /// boxes"). Every lattice site (the sites fluid particles are made on) must lie in a fluid
@@ -424,54 +397,9 @@ sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& s
     return st;
 }
 
-template <int Dim>
-Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
-    : scene_(scene), setup_(setup), layers_(scene.emitters.size(), 0) {
-    for (const auto& e : scene.emitters) discs_.push_back(nozzle<Dim>(e, scene.spacing));
-}
-
-template <int Dim>
-std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t) {
-    const double dx = scene_.spacing;
-    std::size_t added = 0;
-    for (std::size_t e = 0; e < scene_.emitters.size(); ++e) {
-        const Emitter<Dim>& em = scene_.emitters[e];
-        if (t < em.start) continue;
-        const double te = std::min(t, em.end);
-        const auto due = std::uint64_t(std::floor((te - em.start) * em.speed / dx)) + 1;
-        if (due <= layers_[e]) continue;
-        const std::size_t count = (due - layers_[e]) * discs_[e].size();
-        sph::Storage<Dim> batch;
-        setup_.emitterTemplates[e].forEach([&](QuantityId id, const sph::Quantity<Dim>& q) {
-            q.visit([&](const auto& b) {
-                using T = typename std::decay_t<decltype(b.value)>::value_type;
-                batch.template insert<T>(id, q.order(), std::vector<T>(count, b.value[0]));
-            });
-        });
-        auto x = batch.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
-        auto v = batch.template getDt<sph::Vector<Dim>>(QuantityId::POSITION);
-        std::size_t n = 0;
-        for (std::uint64_t k = layers_[e]; k < due; ++k) {
-            const double travelled = (t - (em.start + double(k) * dx / em.speed)) * em.speed;
-            for (const auto& off : discs_[e]) {
-                x[n] = em.position + off + em.direction * travelled;
-                v[n] = em.direction * em.speed;
-                ++n;
-            }
-        }
-        storage.append(batch);
-        layers_[e] = due;
-        added += count;
-    }
-    emitted_ += added;
-    return added;
-}
-
 template SceneSetup<2> makeSceneSetup<2>(const Scene<2>&, int, const sph::EquationHolder<2>&);
 template SceneSetup<3> makeSceneSetup<3>(const Scene<3>&, int, const sph::EquationHolder<3>&);
 template sph::Storage<2> makeInitialStorage<2>(const Scene<2>&, SceneSetup<2>&);
 template sph::Storage<3> makeInitialStorage<3>(const Scene<3>&, SceneSetup<3>&);
-template class Emitters<2>;
-template class Emitters<3>;
 
 }  // namespace num::io

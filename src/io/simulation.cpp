@@ -17,6 +17,7 @@
 #include "initial_state.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
+#include "io/emitters.hpp"
 #include "io/file.hpp"
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
@@ -129,6 +130,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     Emitters<Dim> emitters(scene, setup);
     emitters.layers() = state.emitterLayers.empty() ? emitters.layers() : state.emitterLayers;
     emitters.setEmitted(state.emitted);
+    emitters.setBlocked(state.emitterBlocked);
 
     auto scheduler = sph::makeScheduler(opt.backend, Size(threads));
     sph::Solver<Dim> solver(*scheduler, setup.settings,
@@ -148,8 +150,16 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     };
     // Emitted particles come last in the particle order, with ids after the initial particles'
     // (the same on every process: each emits every particle, and keeps its own).
+    // A nozzle point is left out where water of any process (owned or halo) is near it.
+    auto occupied = [&](const std::vector<sph::Vector<Dim>>& points) {
+        std::vector<char> taken = fluidNear(storage, solver.domain(), points, 0.5 * scene.spacing);
+        if (comm.size() == 1) return taken;
+        for (const parallel::Bytes& other : comm.allGather(taken))
+            for (std::size_t p = 0; p < taken.size(); ++p) taken[p] |= other[p];
+        return taken;
+    };
     auto emit = [&, firstId = initialParticles](double t) {
-        const std::size_t before = emitters.emitted(), added = emitters.emit(storage, t);
+        const std::size_t before = emitters.emitted(), added = emitters.emit(storage, t, occupied);
         auto id = storage.template getValue<int>(QuantityId::PARTICLE_ID);
         auto key = storage.template getValue<int>(QuantityId::ORDER_KEY);
         for (std::size_t k = 0; k < added; ++k) {
@@ -199,6 +209,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         RunState<Dim> r = state;
         r.time = run.time(), r.steps = run.steps();
         r.emitterLayers = emitters.layers(), r.emitted = emitters.emitted();
+        r.emitterBlocked = emitters.blocked();
         if (root) r.series = outputs->series().entries();
         return r;
     };
@@ -309,6 +320,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     progress.finish(run.time(), run.lastDt(), Size(particles), run.steps());
 
     state.emitted = emitters.emitted();
+    state.emitterBlocked = emitters.blocked();
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     // The decomposition's figures, summed over the processes.

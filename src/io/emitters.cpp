@@ -1,0 +1,135 @@
+#include "io/emitters.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace num::io {
+
+using sph::QuantityId;
+using sph::Size;
+
+namespace {
+
+/// The particles one emitter injects per layer: offsets across its nozzle, on the lattice.
+template <int Dim>
+std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
+    std::vector<sph::Vector<Dim>> out;
+    const int m = std::max(1, int(std::lround(2 * e.radius / dx)));
+    auto offset = [&](int j) { return (j + 0.5 - 0.5 * m) * dx; };
+    if constexpr (Dim == 2) {
+        const sph::Vector<2> across{{-e.direction[1], e.direction[0]}};
+        for (int j = 0; j < m; ++j) out.push_back(across * offset(j));
+    } else {
+        // An orthonormal pair across the direction d.
+        sph::Vector<3> a{{1, 0, 0}};
+        if (std::abs(e.direction[0]) > 0.9) a = {{0, 1, 0}};
+        sph::Vector<3> e1 = a - e.direction * dot(a, e.direction);
+        e1 /= norm(e1);
+        const sph::Vector<3> e2{{e.direction[1] * e1[2] - e.direction[2] * e1[1],
+                                 e.direction[2] * e1[0] - e.direction[0] * e1[2],
+                                 e.direction[0] * e1[1] - e.direction[1] * e1[0]}};
+        for (int i = 0; i < m; ++i)
+            for (int j = 0; j < m; ++j)
+                if (offset(i) * offset(i) + offset(j) * offset(j) <= e.radius * e.radius + 1e-12)
+                    out.push_back(e1 * offset(i) + e2 * offset(j));
+        if (out.empty()) out.push_back({});
+    }
+    return out;
+}
+
+}  // namespace
+
+template <int Dim>
+std::vector<char> fluidNear(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
+                            const std::vector<sph::Vector<Dim>>& points, double radius) {
+    std::vector<char> near(points.size(), 0);
+    // Consecutive points (one nozzle's layer) lie close together: test a particle against the
+    // box around each run of 32 (centre, half-widths widened by the radius) before the points.
+    constexpr std::size_t run = 32;
+    std::vector<std::pair<sph::Vector<Dim>, sph::Vector<Dim>>> boxes;
+    for (std::size_t first = 0; first < points.size(); first += run) {
+        sph::Vector<Dim> lo = points[first], hi = points[first];
+        for (std::size_t p = first; p < std::min(points.size(), first + run); ++p)
+            for (int k = 0; k < Dim; ++k)
+                lo[k] = std::min(lo[k], points[p][k]), hi[k] = std::max(hi[k], points[p][k]);
+        boxes.emplace_back((lo + hi) * 0.5, (hi - lo) * 0.5);
+    }
+    const auto x = storage.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto kind = storage.template getValue<int>(QuantityId::KIND);
+    for (Size i = 0; i < storage.size(); ++i) {
+        if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+        for (std::size_t b = 0; b < boxes.size(); ++b) {
+            const sph::Vector<Dim> d = domain.minimumImage(x[i] - boxes[b].first);
+            bool inBox = true;
+            for (int k = 0; k < Dim; ++k) inBox &= std::abs(d[k]) < boxes[b].second[k] + radius;
+            if (!inBox) continue;
+            for (std::size_t p = b * run; p < std::min(points.size(), (b + 1) * run); ++p)
+                if (normSqr(domain.minimumImage(x[i] - points[p])) < radius * radius) near[p] = 1;
+        }
+    }
+    return near;
+}
+
+template <int Dim>
+Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
+    : scene_(scene), setup_(setup), layers_(scene.emitters.size(), 0) {
+    for (const auto& e : scene.emitters) discs_.push_back(nozzle<Dim>(e, scene.spacing));
+}
+
+template <int Dim>
+std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occupied& occupied) {
+    const double dx = scene_.spacing;
+    // The lattice points of every layer due, emitter by emitter.
+    std::vector<sph::Vector<Dim>> points;
+    std::vector<std::size_t> firstPoint(scene_.emitters.size() + 1, 0);
+    for (std::size_t e = 0; e < scene_.emitters.size(); ++e) {
+        firstPoint[e] = points.size();
+        const Emitter<Dim>& em = scene_.emitters[e];
+        if (t < em.start) continue;
+        const double te = std::min(t, em.end);
+        const auto due = std::uint64_t(std::floor((te - em.start) * em.speed / dx)) + 1;
+        for (std::uint64_t k = layers_[e]; k < due; ++k) {
+            const double travelled = (t - (em.start + double(k) * dx / em.speed)) * em.speed;
+            for (const auto& off : discs_[e])
+                points.push_back(em.position + off + em.direction * travelled);
+        }
+        layers_[e] = std::max(layers_[e], due);
+    }
+    firstPoint.back() = points.size();
+    if (points.empty()) return 0;
+    // A point closer than half a spacing to water would put two particles on top of each other.
+    const std::vector<char> taken = occupied(points);
+    std::size_t added = 0;
+    for (std::size_t e = 0; e < scene_.emitters.size(); ++e) {
+        std::size_t count = 0;
+        for (std::size_t p = firstPoint[e]; p < firstPoint[e + 1]; ++p) count += !taken[p];
+        blocked_ += firstPoint[e + 1] - firstPoint[e] - count;
+        if (count == 0) continue;
+        sph::Storage<Dim> batch;
+        setup_.emitterTemplates[e].forEach([&](QuantityId id, const sph::Quantity<Dim>& q) {
+            q.visit([&](const auto& b) {
+                using T = typename std::decay_t<decltype(b.value)>::value_type;
+                batch.template insert<T>(id, q.order(), std::vector<T>(count, b.value[0]));
+            });
+        });
+        auto x = batch.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+        auto v = batch.template getDt<sph::Vector<Dim>>(QuantityId::POSITION);
+        const Emitter<Dim>& em = scene_.emitters[e];
+        std::size_t n = 0;
+        for (std::size_t p = firstPoint[e]; p < firstPoint[e + 1]; ++p)
+            if (!taken[p]) x[n] = points[p], v[n] = em.direction * em.speed, ++n;
+        storage.append(batch);
+        added += count;
+    }
+    emitted_ += added;
+    return added;
+}
+
+template std::vector<char> fluidNear<2>(const sph::Storage<2>&, const Domain<2>&,
+                                        const std::vector<sph::Vector<2>>&, double);
+template std::vector<char> fluidNear<3>(const sph::Storage<3>&, const Domain<3>&,
+                                        const std::vector<sph::Vector<3>>&, double);
+template class Emitters<2>;
+template class Emitters<3>;
+
+}  // namespace num::io

@@ -1,0 +1,83 @@
+// Emitters leave out the nozzle points that water already occupies (no two particles on top of
+// each other); the occupancy search against a plain loop over every particle and point.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "io/emitters.hpp"
+#include "io/scene_loader.hpp"
+
+using namespace num;
+using namespace num::io;
+
+TEST(Emitters, FluidNearMatchesAPlainSearch) {
+    // Random fluid and wall particles, more points than one run of the search (32), and a
+    // periodic x axis so that points near x = 0 see particles near x = 1.
+    Domain<2> domain;
+    domain.min = {{0, 0}}, domain.max = {{1, 1}}, domain.periodic = {true, false};
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0, 1);
+    const std::size_t n = 2000;
+    std::vector<sph::Vector<2>> x(n);
+    std::vector<int> kind(n);
+    for (std::size_t i = 0; i < n; ++i)
+        x[i] = {{u(rng), u(rng)}},
+        kind[i] = int(i % 3 ? sph::ParticleKind::FLUID : sph::ParticleKind::WALL);
+    sph::Storage<2> storage;
+    storage.insert<sph::Vector<2>>(sph::QuantityId::POSITION, sph::OrderEnum::SECOND, x);
+    storage.insert<int>(sph::QuantityId::KIND, sph::OrderEnum::ZERO, kind);
+    std::vector<sph::Vector<2>> points;
+    for (int k = 0; k < 100; ++k) points.push_back({{0.01 * k, 0.3 + 0.004 * k}});
+    const double radius = 0.02;
+    const std::vector<char> near = fluidNear(storage, domain, points, radius);
+    int occupied = 0;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+        bool plain = false;
+        for (std::size_t i = 0; i < n; ++i)
+            plain |= kind[i] == int(sph::ParticleKind::FLUID) &&
+                     normSqr(domain.minimumImage(x[i] - points[p])) < radius * radius;
+        EXPECT_EQ(bool(near[p]), plain) << "point " << p;
+        occupied += plain;
+    }
+    EXPECT_GT(occupied, 10);  // the test sees both answers
+    EXPECT_LT(occupied, 90);
+}
+
+TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
+    // A nozzle whose lower half lies in the tiny scene's water block (x < 0.1, y < 0.12).
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    doc.set(R"(emitters=[{"position": [0.05, 0.12], "direction": [1, 0], "speed": 1,
+                          "radius": 0.04, "material": "water"}])");
+    const Scene<2> scene = readScene<2>(doc);
+    SceneSetup<2> setup = makeSceneSetup<2>(scene, 1);
+    sph::Storage<2> storage = makeInitialStorage<2>(scene, setup);
+    const std::size_t initial = storage.size();
+    Emitters<2> emitters(scene, setup);
+    const double dx = scene.spacing;
+    auto occupied = [&](const std::vector<sph::Vector<2>>& points) {
+        return fluidNear(storage, setup.geometry.domain, points, 0.5 * dx);
+    };
+    // Four points across the nozzle (y = 0.09, 0.11, 0.13, 0.15): the water's top particles sit
+    // at y = 0.11, so the lower two points fall on water.
+    EXPECT_EQ(emitters.emit(storage, 0.0, occupied), 2u);
+    EXPECT_EQ(emitters.blocked(), 2u);
+    const auto x = storage.getValue<sph::Vector<2>>(sph::QuantityId::POSITION);
+    const auto kind = storage.getValue<int>(sph::QuantityId::KIND);
+    for (std::size_t e = initial; e < storage.size(); ++e) {
+        EXPECT_GT(x[e][1], 0.12);
+        for (std::size_t i = 0; i < initial; ++i)
+            if (kind[i] == int(sph::ParticleKind::FLUID)) EXPECT_GE(norm(x[e] - x[i]), 0.5 * dx);
+    }
+    // A layer later, with the emitted particles not moved, the new layer (0.2 dx ahead of them)
+    // falls on them and on the water: nothing is added, and the layer counts as done.
+    const std::size_t afterFirst = storage.size();
+    EXPECT_EQ(emitters.emit(storage, 0.5 * dx, occupied), 0u);  // no layer due yet
+    EXPECT_EQ(emitters.emit(storage, 1.2 * dx, occupied), 0u);
+    EXPECT_EQ(emitters.blocked(), 6u);
+    // Once they have moved on by two spacings, as the flow carries them, the next layer enters.
+    auto moved = storage.getValue<sph::Vector<2>>(sph::QuantityId::POSITION);
+    for (std::size_t e = initial; e < afterFirst; ++e) moved[e][0] += 2 * dx;
+    EXPECT_EQ(emitters.emit(storage, 2.2 * dx, occupied), 2u);
+    EXPECT_EQ(emitters.layers()[0], 3u);
+    EXPECT_EQ(emitters.emitted(), 4u);
+}

@@ -16,6 +16,10 @@
 //                              mark VmHWM, reset after set-up) minus the resident memory before
 //                              the scene was built, divided by all particles
 //   setup_bytes_per_particle   the same with the peak of the set-up (particle generation) too
+//   storage_bytes_per_particle what the particle storage holds at the end (every level of every
+//                              quantity, as allocated), divided by all particles: the rest of
+//                              bytes_per_particle is the neighbour list, the per-thread sums, the
+//                              integrator's copies and the allocator's slack
 //   state_hash                 FNV-1a of every level of every quantity at the end: equal hashes
 //                              mean bitwise equal runs (to check that a change kept the results)
 #include <sys/resource.h>
@@ -75,6 +79,19 @@ std::uint64_t stateHash(const num::sph::Storage<Dim>& storage) {
     return h;
 }
 
+/// Bytes allocated for every level of every quantity.
+template <int Dim>
+double storageBytes(const num::sph::Storage<Dim>& storage) {
+    double bytes = 0;
+    storage.forEach([&](num::sph::QuantityId, const num::sph::Quantity<Dim>& q) {
+        q.visit([&](const auto& b) {
+            for (int k = 0; k < q.levels(); ++k)
+                bytes += double(b.level(k).capacity() * sizeof(b.level(k)[0]));
+        });
+    });
+    return bytes;
+}
+
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
@@ -131,10 +148,10 @@ int runCase(const Options& o) {
         "particles=%.0f steps=%d repeats=%d particle_steps_per_second=%.4e "
         "ns_per_particle_step=%.2f ns_per_any_particle_step=%.2f neighbours=%.2f "
         "cpu_ns_per_particle_step=%.2f bytes_per_particle=%.0f setup_bytes_per_particle=%.0f "
-        "load=%.2f sim_time=%.4g state_hash=%016llx\n",
+        "storage_bytes_per_particle=%.0f load=%.2f sim_time=%.4g state_hash=%016llx\n",
         Dim, so.dx, o.backend.c_str(), o.threads, int(o.heat), o.evaluation.c_str(), fluid, all,
         o.steps, o.repeats, mrate, 1e9 / mrate, median(perAny), median(neighbours), median(cpu),
-        bytes, setupBytes, loadAverage(), scene->run->time(),
+        bytes, setupBytes, storageBytes(scene->storage) / all, loadAverage(), scene->run->time(),
         static_cast<unsigned long long>(stateHash(scene->storage)));
     return 0;
 }

@@ -13,7 +13,8 @@ BUILD=${1:-build/release}
 REPEATS=${REPEATS:-5}
 BACKEND=${BACKEND:-threads}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD" --target bench_dam_break bench_pair_loops bench_neighbours -j2 >/dev/null
+cmake --build "$BUILD" --target bench_dam_break bench_pair_loops bench_neighbours bench_two_cores \
+    -j2 >/dev/null
 DAM="$BUILD/bench/bench_dam_break"
 
 echo "## Machine"
@@ -78,6 +79,13 @@ for loop in asymmetric symmetric; do
     bench/size_scaling.py "$BUILD" "$REPEATS" 1,2 "$loop"
     echo
 done
+
+echo "## Two threads apart from SPH (a loop that computes, one that streams memory)"
+echo
+echo '```'
+"$BUILD/bench/bench_two_cores" --rounds "$REPEATS"
+echo '```'
+
 
 echo
 echo "## PySPH side by side"

@@ -187,10 +187,17 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         });
     }
     const double every = scene.output.every;
-    auto nextOutputTime = [&] { return state.outputIndex * every; };
     auto reached = [](double t, double target) {
         return t >= target - 1e-9 * std::max(1e-300, std::abs(target)) - 1e-300;
     };
+    // Outputs fall on multiples of `every`; outputSlot is the next multiple, the file index
+    // (state.outputIndex) counts the files written. They differ only after a restart with
+    // another output.every: its outputs go on from the first multiple after the checkpoint's
+    // time and its files from the next free index, so no earlier file is overwritten.
+    std::int64_t outputSlot = std::max<std::int64_t>(0, std::int64_t(state.time / every) - 1);
+    while (reached(state.time, double(outputSlot) * every)) ++outputSlot;
+    if (!opt.restart) outputSlot = 0;  // the output at t = 0 comes first
+    auto nextOutputTime = [&] { return double(outputSlot) * every; };
 
     // From here a signal asks for a stop (stop_signals.hpp): after the step in progress, or at
     // once when that step is still running half a second later.
@@ -235,7 +242,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         everyParticle(storage, [&](const sph::Storage<Dim>& all) {
             onRoot(comm, [&] { outputs->write(all, run.time(), state.outputIndex); });
         });
-        ++state.outputIndex;
+        ++state.outputIndex, ++outputSlot;
     };
     double lastOutput = -1;
     if (!opt.restart) output(), lastOutput = 0;

@@ -70,6 +70,41 @@ INSTANTIATE_TEST_SUITE_P(Apps, RestartAt, ::testing::Values("0.023", "0.03"), []
     return "t" + n;
 });
 
+TEST(RestartWithOtherOutputs, OutputsGoOnFromTheCheckpointWithoutOverwriting) {
+    // Outputs every 0.01 s to a checkpoint at t = 0.025, then resumed with outputs every
+    // 0.002 s (finer) and every 0.02 s (coarser). The resumed outputs fall on the new interval's
+    // multiples after 0.025, in files numbered on from the last one written: before, the finer
+    // interval asked for its next output at 3 x 0.002 = 0.006 s, behind the checkpoint, and the
+    // run stepped backwards in time until it went unstable.
+    const std::string dir = freshDir("restart_other_outputs");
+    const std::string common = "--quiet --backend seq '" + scene("tiny_2d.json") + "' ";
+    const Result first =
+        run(FLUID_SIM, common + "--end-time 0.025 --checkpoint-every 0.025 --out part", dir);
+    ASSERT_EQ(first.code, 0) << first.output;
+    for (const std::string every : {"0.002", "0.02"}) {
+        SCOPED_TRACE("output.every " + every);
+        std::filesystem::remove_all(dir + "/resumed");
+        std::filesystem::create_directories(dir + "/resumed");
+        for (const auto& e : std::filesystem::directory_iterator(dir + "/part"))
+            std::filesystem::copy(e.path(), dir + "/resumed/" + e.path().filename().string());
+        const std::string earlier = readFile(dir + "/resumed/particles_0002.vtu");
+        const Result resumed = run(FLUID_SIM,
+                                   "--quiet --backend seq --end-time 0.04 --out resumed "
+                                   "--set output.every=" +
+                                       every + " --restart resumed/checkpoint_0001.chk",
+                                   dir);
+        ASSERT_EQ(resumed.code, 0) << resumed.output;
+        EXPECT_EQ(readFile(dir + "/resumed/particles_0002.vtu"), earlier);  // t = 0.02 kept
+        // Files 0000-0002 at 0, 0.01, 0.02; 0003 is the first run's end (0.025), which the
+        // resumed run writes again as its first output after the checkpoint.
+        const double firstAfter = every == "0.002" ? 0.026 : 0.04;
+        EXPECT_NEAR(readVtu(readFile(dir + "/resumed/particles_0003.vtu")).time, firstAfter, 1e-12);
+        const auto s = nlohmann::json::parse(readFile(dir + "/resumed/summary.json"));
+        EXPECT_EQ(s["status"], "completed");
+        EXPECT_NEAR(s["final_time"].get<double>(), 0.04, 1e-12);
+    }
+}
+
 class Interrupt : public ::testing::TestWithParam<int> {};
 
 TEST_P(Interrupt, SignalWritesFinalOutputSummaryAndCheckpoint) {

@@ -4,17 +4,31 @@
 
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "io/scene_setup.hpp"
+#include "sph/kernel_choice.hpp"
 
 namespace num::io {
 
-/// Which of `points` lie closer than `radius` to a fluid particle of `storage` (1) or not (0),
-/// distances taken to the nearest periodic image.
+/// Water's kernel sum above which a nozzle point counts as occupied (see WaterAt).
+inline constexpr double kOccupiedFraction = 0.4;
+
+/// The water at each of some points: the kernel sum of the fluid particles that `counts` selects
+/// (sum_j m_j / rho_j W(|p - x_j|): about 1 inside water, 0.5 half a spacing above a free
+/// surface, 0.2 at a nozzle whose earlier layers have moved on by a spacing) and whether any
+/// fluid particle lies closer than `radius` (distances to the nearest periodic image).
+struct WaterAt {
+    std::vector<double> fraction;
+    std::vector<char> near;
+    /// The points water occupies: a fluid particle near, or a sum above kOccupiedFraction.
+    std::vector<char> occupied() const;
+};
 template <int Dim>
-std::vector<char> fluidNear(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
-                            const std::vector<sph::Vector<Dim>>& points, double radius);
+WaterAt waterAt(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
+                const sph::RunKernel<Dim>& kernel, const std::vector<sph::Vector<Dim>>& points,
+                double radius, const std::function<bool(sph::Size)>& counts);
 
 /// Emitter state: the layers each emitter has injected so far and the particles it added or
 /// left out.
@@ -26,7 +40,7 @@ class Emitters {
 
     Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup);
     /// Adds the layers due by time t, each lattice point of a layer unless `occupied` says that
-    /// water is there (closer than half a spacing); returns the number of particles added.
+    /// water is there; returns the number of particles added.
     std::size_t emit(sph::Storage<Dim>& storage, double t, const Occupied& occupied);
     std::vector<std::uint64_t>& layers() { return layers_; }
     std::size_t emitted() const { return emitted_; }
@@ -34,6 +48,8 @@ class Emitters {
     /// Lattice points of due layers left out because water was there.
     std::uint64_t blocked() const { return blocked_; }
     void setBlocked(std::uint64_t n) { blocked_ = n; }
+    /// Of emitter e's points due in the last emit(): how many were left out, and of how many.
+    std::pair<std::size_t, std::size_t> lastBlocked(std::size_t e) const { return lastBlocked_[e]; }
 
   private:
     const Scene<Dim>& scene_;
@@ -42,6 +58,7 @@ class Emitters {
     std::vector<std::uint64_t> layers_;
     std::size_t emitted_ = 0;
     std::uint64_t blocked_ = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> lastBlocked_;
 };
 
 }  // namespace num::io

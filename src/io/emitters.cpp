@@ -39,12 +39,21 @@ std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
 
 }  // namespace
 
+std::vector<char> WaterAt::occupied() const {
+    std::vector<char> taken(near.size());
+    for (std::size_t p = 0; p < near.size(); ++p)
+        taken[p] = near[p] || fraction[p] > kOccupiedFraction;
+    return taken;
+}
+
 template <int Dim>
-std::vector<char> fluidNear(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
-                            const std::vector<sph::Vector<Dim>>& points, double radius) {
-    std::vector<char> near(points.size(), 0);
+WaterAt waterAt(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
+                const sph::RunKernel<Dim>& kernel, const std::vector<sph::Vector<Dim>>& points,
+                double radius, const std::function<bool(Size)>& counts) {
+    WaterAt water{std::vector<double>(points.size(), 0.0), std::vector<char>(points.size(), 0)};
+    const double reach = std::max(radius, kernel.supportRadius());
     // Consecutive points (one nozzle's layer) lie close together: test a particle against the
-    // box around each run of 32 (centre, half-widths widened by the radius) before the points.
+    // box around each run of 32 (centre, half-widths widened by the reach) before the points.
     constexpr std::size_t run = 32;
     std::vector<std::pair<sph::Vector<Dim>, sph::Vector<Dim>>> boxes;
     for (std::size_t first = 0; first < points.size(); first += run) {
@@ -55,24 +64,33 @@ std::vector<char> fluidNear(const sph::Storage<Dim>& storage, const Domain<Dim>&
         boxes.emplace_back((lo + hi) * 0.5, (hi - lo) * 0.5);
     }
     const auto x = storage.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto m = storage.template getValue<sph::Float>(QuantityId::MASS);
+    const auto rho = storage.template getValue<sph::Float>(QuantityId::DENSITY);
     const auto kind = storage.template getValue<int>(QuantityId::KIND);
     for (Size i = 0; i < storage.size(); ++i) {
         if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+        const bool counted = counts(i);
         for (std::size_t b = 0; b < boxes.size(); ++b) {
             const sph::Vector<Dim> d = domain.minimumImage(x[i] - boxes[b].first);
             bool inBox = true;
-            for (int k = 0; k < Dim; ++k) inBox &= std::abs(d[k]) < boxes[b].second[k] + radius;
+            for (int k = 0; k < Dim; ++k) inBox &= std::abs(d[k]) < boxes[b].second[k] + reach;
             if (!inBox) continue;
-            for (std::size_t p = b * run; p < std::min(points.size(), (b + 1) * run); ++p)
-                if (normSqr(domain.minimumImage(x[i] - points[p])) < radius * radius) near[p] = 1;
+            for (std::size_t p = b * run; p < std::min(points.size(), (b + 1) * run); ++p) {
+                const double r = norm(domain.minimumImage(x[i] - points[p]));
+                if (r < radius) water.near[p] = 1;
+                if (counted) water.fraction[p] += m[i] / rho[i] * kernel.W(r);
+            }
         }
     }
-    return near;
+    return water;
 }
 
 template <int Dim>
 Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
-    : scene_(scene), setup_(setup), layers_(scene.emitters.size(), 0) {
+    : scene_(scene),
+      setup_(setup),
+      layers_(scene.emitters.size(), 0),
+      lastBlocked_(scene.emitters.size()) {
     for (const auto& e : scene.emitters) discs_.push_back(nozzle<Dim>(e, scene.spacing));
 }
 
@@ -96,14 +114,16 @@ std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occu
         layers_[e] = std::max(layers_[e], due);
     }
     firstPoint.back() = points.size();
+    std::fill(lastBlocked_.begin(), lastBlocked_.end(), std::pair<std::size_t, std::size_t>{});
     if (points.empty()) return 0;
-    // A point closer than half a spacing to water would put two particles on top of each other.
     const std::vector<char> taken = occupied(points);
     std::size_t added = 0;
     for (std::size_t e = 0; e < scene_.emitters.size(); ++e) {
         std::size_t count = 0;
         for (std::size_t p = firstPoint[e]; p < firstPoint[e + 1]; ++p) count += !taken[p];
-        blocked_ += firstPoint[e + 1] - firstPoint[e] - count;
+        const std::size_t due = firstPoint[e + 1] - firstPoint[e];
+        lastBlocked_[e] = {due - count, due};
+        blocked_ += due - count;
         if (count == 0) continue;
         sph::Storage<Dim> batch;
         setup_.emitterTemplates[e].forEach([&](QuantityId id, const sph::Quantity<Dim>& q) {
@@ -125,10 +145,12 @@ std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occu
     return added;
 }
 
-template std::vector<char> fluidNear<2>(const sph::Storage<2>&, const Domain<2>&,
-                                        const std::vector<sph::Vector<2>>&, double);
-template std::vector<char> fluidNear<3>(const sph::Storage<3>&, const Domain<3>&,
-                                        const std::vector<sph::Vector<3>>&, double);
+template WaterAt waterAt<2>(const sph::Storage<2>&, const Domain<2>&, const sph::RunKernel<2>&,
+                            const std::vector<sph::Vector<2>>&, double,
+                            const std::function<bool(Size)>&);
+template WaterAt waterAt<3>(const sph::Storage<3>&, const Domain<3>&, const sph::RunKernel<3>&,
+                            const std::vector<sph::Vector<3>>&, double,
+                            const std::function<bool(Size)>&);
 template class Emitters<2>;
 template class Emitters<3>;
 

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
@@ -150,16 +151,51 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     };
     // Emitted particles come last in the particle order, with ids after the initial particles'
     // (the same on every process: each emits every particle, and keeps its own).
-    // A nozzle point is left out where water of any process (owned or halo) is near it.
+    // A nozzle point is left out where water is (io/emitters.hpp): where the fluid's kernel sum
+    // exceeds kOccupiedFraction, or a fluid particle (owned or halo, of any process) is closer
+    // than half a spacing. Each particle's share of the sum is counted by its owner only.
+    const sph::RunKernel<Dim> kernel(setup.settings);
     auto occupied = [&](const std::vector<sph::Vector<Dim>>& points) {
-        std::vector<char> taken = fluidNear(storage, solver.domain(), points, 0.5 * scene.spacing);
-        if (comm.size() == 1) return taken;
-        for (const parallel::Bytes& other : comm.allGather(taken))
-            for (std::size_t p = 0; p < taken.size(); ++p) taken[p] |= other[p];
-        return taken;
+        const auto owner = storage.template getValue<int>(QuantityId::OWNER);
+        WaterAt water =
+            waterAt(storage, solver.domain(), kernel, points, 0.5 * scene.spacing,
+                    [&](sph::Size i) { return owner[i] == comm.rank() || (owner[i] < 0 && root); });
+        if (comm.size() > 1) {
+            const parallel::Bytes mine(
+                reinterpret_cast<const char*>(water.fraction.data()),
+                reinterpret_cast<const char*>(water.fraction.data() + water.fraction.size()));
+            std::vector<double> sum(points.size(), 0.0), part(points.size());
+            for (const parallel::Bytes& other : comm.allGather(mine)) {
+                std::memcpy(part.data(), other.data(), other.size());
+                for (std::size_t p = 0; p < sum.size(); ++p) sum[p] += part[p];
+            }
+            water.fraction = sum;
+            for (const parallel::Bytes& other : comm.allGather(water.near))
+                for (std::size_t p = 0; p < points.size(); ++p) water.near[p] |= other[p];
+        }
+        return water.occupied();
     };
+    // The first time water sits on an emitter's nozzle: a warning (printed by the time loop, and
+    // in summary.json).
+    std::vector<std::string> emitterWarnings;
+    std::vector<char> warnedEmitter(scene.emitters.size(), 0);
+    auto warnBlocked = [&](double t) {
+        for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
+            const auto [left, of] = emitters.lastBlocked(e);
+            if (left == 0 || warnedEmitter[e]) continue;
+            warnedEmitter[e] = 1;
+            emitterWarnings.push_back(
+                "at t = " + fmt("%.3g", t) + " s emitter \"" + scene.emitters[e].name +
+                "\" left out " + std::to_string(left) + " of " + std::to_string(of) +
+                " nozzle points: water was there (a splash on the nozzle, or the nozzle in "
+                "water); a nozzle in water injects less than speed x area, so keep nozzles above "
+                "the water (summary.json counts the points left out)");
+        }
+    };
+    std::size_t emitterWarningsPrinted = 0;  // printed by the time loop
     auto emit = [&, firstId = initialParticles](double t) {
         const std::size_t before = emitters.emitted(), added = emitters.emit(storage, t, occupied);
+        warnBlocked(t);
         auto id = storage.template getValue<int>(QuantityId::PARTICLE_ID);
         auto key = storage.template getValue<int>(QuantityId::ORDER_KEY);
         for (std::size_t k = 0; k < added; ++k) {
@@ -291,6 +327,12 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 run.particlesChanged();
             }
             if (emit(run.time()) > 0) run.particlesChanged();
+            for (; emitterWarningsPrinted < emitterWarnings.size(); ++emitterWarningsPrinted)
+                if (!opt.quiet && root) {
+                    progress.clearLine();
+                    std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(),
+                                 emitterWarnings[emitterWarningsPrinted].c_str());
+                }
             progress.update(run.time(), dt, Size(particles), run.steps());
             if (testSignal.signal && run.steps() == testSignal.step) std::raise(testSignal.signal);
             if (reached(run.time(), nextOutputTime())) output(), lastOutput = run.time();
@@ -366,6 +408,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     }
     std::vector<std::string> warnings = scene.warnings;
     warnings.insert(warnings.end(), physical.warnings().begin(), physical.warnings().end());
+    warnings.insert(warnings.end(), emitterWarnings.begin(), emitterWarnings.end());
     onRoot(comm, [&] {
         addEndOfRun(summary, end, warnings);
         writeFileAtomically(outputs->path("summary.json"), summary.dump(2) + "\n");

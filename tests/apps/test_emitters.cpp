@@ -1,5 +1,5 @@
 // Emitters leave out the nozzle points that water already occupies (no two particles on top of
-// each other); the occupancy search against a plain loop over every particle and point.
+// each other); the water search against a plain loop over every particle and point.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -10,9 +10,10 @@
 using namespace num;
 using namespace num::io;
 
-TEST(Emitters, FluidNearMatchesAPlainSearch) {
-    // Random fluid and wall particles, more points than one run of the search (32), and a
-    // periodic x axis so that points near x = 0 see particles near x = 1.
+TEST(Emitters, WaterAtMatchesAPlainSum) {
+    // Random fluid and wall particles, more points than one run of the search (32), a periodic
+    // x axis (points near x = 0 see particles near x = 1), and every third particle not counted
+    // in the sum (as a halo copy another process counts).
     Domain<2> domain;
     domain.min = {{0, 0}}, domain.max = {{1, 1}}, domain.periodic = {true, false};
     std::mt19937 rng(7);
@@ -20,27 +21,41 @@ TEST(Emitters, FluidNearMatchesAPlainSearch) {
     const std::size_t n = 2000;
     std::vector<sph::Vector<2>> x(n);
     std::vector<int> kind(n);
-    for (std::size_t i = 0; i < n; ++i)
-        x[i] = {{u(rng), u(rng)}},
-        kind[i] = int(i % 3 ? sph::ParticleKind::FLUID : sph::ParticleKind::WALL);
+    std::vector<double> mass(n), density(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        x[i] = {{u(rng), u(rng)}};
+        kind[i] = int(i % 5 ? sph::ParticleKind::FLUID : sph::ParticleKind::WALL);
+        mass[i] = 1e-4 * (1 + u(rng)), density[i] = 1000 * (1 + 0.1 * u(rng));
+    }
     sph::Storage<2> storage;
     storage.insert<sph::Vector<2>>(sph::QuantityId::POSITION, sph::OrderEnum::SECOND, x);
     storage.insert<int>(sph::QuantityId::KIND, sph::OrderEnum::ZERO, kind);
+    storage.insert<double>(sph::QuantityId::MASS, sph::OrderEnum::ZERO, mass);
+    storage.insert<double>(sph::QuantityId::DENSITY, sph::OrderEnum::FIRST, density);
+    sph::RunSettings settings;
+    settings.set("kernel", std::string("wendland_c2")).set("smoothing_length", 0.03);
+    const sph::RunKernel<2> kernel(settings);
     std::vector<sph::Vector<2>> points;
     for (int k = 0; k < 100; ++k) points.push_back({{0.01 * k, 0.3 + 0.004 * k}});
     const double radius = 0.02;
-    const std::vector<char> near = fluidNear(storage, domain, points, radius);
-    int occupied = 0;
+    auto counts = [](sph::Size i) { return i % 3 != 0; };
+    const WaterAt water = waterAt(storage, domain, kernel, points, radius, counts);
+    int near = 0;
     for (std::size_t p = 0; p < points.size(); ++p) {
-        bool plain = false;
-        for (std::size_t i = 0; i < n; ++i)
-            plain |= kind[i] == int(sph::ParticleKind::FLUID) &&
-                     normSqr(domain.minimumImage(x[i] - points[p])) < radius * radius;
-        EXPECT_EQ(bool(near[p]), plain) << "point " << p;
-        occupied += plain;
+        bool plainNear = false;
+        double plainSum = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+            const double r = norm(domain.minimumImage(x[i] - points[p]));
+            plainNear |= r < radius;
+            if (counts(i)) plainSum += mass[i] / density[i] * kernel.W(r);
+        }
+        EXPECT_EQ(bool(water.near[p]), plainNear) << "point " << p;
+        EXPECT_NEAR(water.fraction[p], plainSum, 1e-12 * std::max(1.0, plainSum)) << "point " << p;
+        near += plainNear;
     }
-    EXPECT_GT(occupied, 10);  // the test sees both answers
-    EXPECT_LT(occupied, 90);
+    EXPECT_GT(near, 10);  // the test sees both answers
+    EXPECT_LT(near, 90);
 }
 
 TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
@@ -54,8 +69,11 @@ TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
     const std::size_t initial = storage.size();
     Emitters<2> emitters(scene, setup);
     const double dx = scene.spacing;
+    const sph::RunKernel<2> kernel(setup.settings);
     auto occupied = [&](const std::vector<sph::Vector<2>>& points) {
-        return fluidNear(storage, setup.geometry.domain, points, 0.5 * dx);
+        return waterAt(storage, setup.geometry.domain, kernel, points, 0.5 * dx,
+                       [](sph::Size) { return true; })
+            .occupied();
     };
     // Four points across the nozzle (y = 0.09, 0.11, 0.13, 0.15): the water's top particles sit
     // at y = 0.11, so the lower two points fall on water.

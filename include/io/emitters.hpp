@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/scene_setup.hpp"
+#include "parallel/communicator.hpp"
 #include "sph/kernel_choice.hpp"
 
 namespace num::io {
@@ -29,6 +30,15 @@ template <int Dim>
 WaterAt waterAt(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
                 const sph::RunKernel<Dim>& kernel, const std::vector<sph::Vector<Dim>>& points,
                 double radius, const std::function<bool(sph::Size)>& counts);
+
+/// The points water occupies (WaterAt::occupied, half a spacing for `near`), the same answer on
+/// every process of `comm`: each adds the kernel sums of the particles it owns (the root those
+/// not yet assigned) and looks for near particles among all it holds, halo copies included.
+template <int Dim>
+std::vector<char> occupiedPoints(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
+                                 const sph::RunKernel<Dim>& kernel,
+                                 const std::vector<sph::Vector<Dim>>& points, double spacing,
+                                 const parallel::Communicator& comm);
 
 /// Emitter state: the layers each emitter has injected so far and the particles it added or
 /// left out.

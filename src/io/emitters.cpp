@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace num::io {
 
@@ -86,6 +87,29 @@ WaterAt waterAt(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
 }
 
 template <int Dim>
+std::vector<char> occupiedPoints(const sph::Storage<Dim>& storage, const Domain<Dim>& domain,
+                                 const sph::RunKernel<Dim>& kernel,
+                                 const std::vector<sph::Vector<Dim>>& points, double spacing,
+                                 const parallel::Communicator& comm) {
+    const auto owner = storage.template getValue<int>(QuantityId::OWNER);
+    WaterAt water = waterAt(storage, domain, kernel, points, 0.5 * spacing, [&](Size i) {
+        return owner[i] == comm.rank() || (owner[i] < 0 && comm.isRoot());
+    });
+    if (comm.size() == 1) return water.occupied();
+    const auto* sums = reinterpret_cast<const char*>(water.fraction.data());
+    const parallel::Bytes mine(sums, sums + water.fraction.size() * sizeof(double));
+    std::vector<double> part(points.size());
+    std::fill(water.fraction.begin(), water.fraction.end(), 0.0);
+    for (const parallel::Bytes& other : comm.allGather(mine)) {  // by rank: the same order
+        std::memcpy(part.data(), other.data(), other.size());
+        for (std::size_t p = 0; p < points.size(); ++p) water.fraction[p] += part[p];
+    }
+    for (const parallel::Bytes& other : comm.allGather(water.near))
+        for (std::size_t p = 0; p < points.size(); ++p) water.near[p] |= other[p];
+    return water.occupied();
+}
+
+template <int Dim>
 Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
     : scene_(scene),
       setup_(setup),
@@ -151,6 +175,14 @@ template WaterAt waterAt<2>(const sph::Storage<2>&, const Domain<2>&, const sph:
 template WaterAt waterAt<3>(const sph::Storage<3>&, const Domain<3>&, const sph::RunKernel<3>&,
                             const std::vector<sph::Vector<3>>&, double,
                             const std::function<bool(Size)>&);
+template std::vector<char> occupiedPoints<2>(const sph::Storage<2>&, const Domain<2>&,
+                                             const sph::RunKernel<2>&,
+                                             const std::vector<sph::Vector<2>>&, double,
+                                             const parallel::Communicator&);
+template std::vector<char> occupiedPoints<3>(const sph::Storage<3>&, const Domain<3>&,
+                                             const sph::RunKernel<3>&,
+                                             const std::vector<sph::Vector<3>>&, double,
+                                             const parallel::Communicator&);
 template class Emitters<2>;
 template class Emitters<3>;
 

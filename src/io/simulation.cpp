@@ -8,7 +8,6 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
@@ -149,31 +148,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         const sph::Storage<Dim> all = decomposition.gatherToRoot(s);
         return use(all);
     };
-    // Emitted particles come last in the particle order, with ids after the initial particles'
-    // (the same on every process: each emits every particle, and keeps its own).
-    // A nozzle point is left out where water is (io/emitters.hpp): where the fluid's kernel sum
-    // exceeds kOccupiedFraction, or a fluid particle (owned or halo, of any process) is closer
-    // than half a spacing. Each particle's share of the sum is counted by its owner only.
+    // A nozzle point is left out where water is, every process agreeing (io/emitters.hpp).
     const sph::RunKernel<Dim> kernel(setup.settings);
     auto occupied = [&](const std::vector<sph::Vector<Dim>>& points) {
-        const auto owner = storage.template getValue<int>(QuantityId::OWNER);
-        WaterAt water =
-            waterAt(storage, solver.domain(), kernel, points, 0.5 * scene.spacing,
-                    [&](sph::Size i) { return owner[i] == comm.rank() || (owner[i] < 0 && root); });
-        if (comm.size() > 1) {
-            const parallel::Bytes mine(
-                reinterpret_cast<const char*>(water.fraction.data()),
-                reinterpret_cast<const char*>(water.fraction.data() + water.fraction.size()));
-            std::vector<double> sum(points.size(), 0.0), part(points.size());
-            for (const parallel::Bytes& other : comm.allGather(mine)) {
-                std::memcpy(part.data(), other.data(), other.size());
-                for (std::size_t p = 0; p < sum.size(); ++p) sum[p] += part[p];
-            }
-            water.fraction = sum;
-            for (const parallel::Bytes& other : comm.allGather(water.near))
-                for (std::size_t p = 0; p < points.size(); ++p) water.near[p] |= other[p];
-        }
-        return water.occupied();
+        return occupiedPoints(storage, solver.domain(), kernel, points, scene.spacing, comm);
     };
     // The first time water sits on an emitter's nozzle: a warning (printed by the time loop, and
     // in summary.json).
@@ -193,6 +171,8 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         }
     };
     std::size_t emitterWarningsPrinted = 0;  // printed by the time loop
+    // Emitted particles come last in the particle order, with ids after the initial particles'
+    // (the same on every process: each emits every particle, and keeps its own).
     auto emit = [&, firstId = initialParticles](double t) {
         const std::size_t before = emitters.emitted(), added = emitters.emit(storage, t, occupied);
         warnBlocked(t);
@@ -230,9 +210,11 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     // (state.outputIndex) counts the files written. They differ only after a restart with
     // another output.every: its outputs go on from the first multiple after the checkpoint's
     // time and its files from the next free index, so no earlier file is overwritten.
-    std::int64_t outputSlot = std::max<std::int64_t>(0, std::int64_t(state.time / every) - 1);
-    while (reached(state.time, double(outputSlot) * every)) ++outputSlot;
-    if (!opt.restart) outputSlot = 0;  // the output at t = 0 comes first
+    std::int64_t outputSlot = 0;  // a new run writes its output at t = 0 first
+    if (opt.restart) {
+        outputSlot = std::max<std::int64_t>(0, std::int64_t(state.time / every) - 1);
+        while (reached(state.time, double(outputSlot) * every)) ++outputSlot;
+    }
     auto nextOutputTime = [&] { return double(outputSlot) * every; };
 
     // From here a signal asks for a stop (stop_signals.hpp): after the step in progress, or at

@@ -70,10 +70,9 @@ TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
     Emitters<2> emitters(scene, setup);
     const double dx = scene.spacing;
     const sph::RunKernel<2> kernel(setup.settings);
+    const parallel::Communicator single;
     auto occupied = [&](const std::vector<sph::Vector<2>>& points) {
-        return waterAt(storage, setup.geometry.domain, kernel, points, 0.5 * dx,
-                       [](sph::Size) { return true; })
-            .occupied();
+        return occupiedPoints(storage, setup.geometry.domain, kernel, points, dx, single);
     };
     // Four points across the nozzle (y = 0.09, 0.11, 0.13, 0.15): the water's top particles sit
     // at y = 0.11, so the lower two points fall on water.

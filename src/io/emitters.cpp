@@ -91,9 +91,13 @@ std::vector<char> occupiedPoints(const sph::Storage<Dim>& storage, const Domain<
                                  const sph::RunKernel<Dim>& kernel,
                                  const std::vector<sph::Vector<Dim>>& points, double spacing,
                                  const parallel::Communicator& comm) {
-    const auto owner = storage.template getValue<int>(QuantityId::OWNER);
+    // Without owners (one process, before any distribution) the root counts every particle.
+    const bool owners = storage.has(QuantityId::OWNER);
+    const auto owner =
+        owners ? storage.template getValue<int>(QuantityId::OWNER) : sph::ArrayView<const int>();
     WaterAt water = waterAt(storage, domain, kernel, points, 0.5 * spacing, [&](Size i) {
-        return owner[i] == comm.rank() || (owner[i] < 0 && comm.isRoot());
+        const int o = owners ? owner[i] : -1;
+        return o == comm.rank() || (o < 0 && comm.isRoot());
     });
     if (comm.size() == 1) return water.occupied();
     const auto* sums = reinterpret_cast<const char*>(water.fraction.data());

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 #include <functional>
-#include <utility>
+#include <string>
 #include <vector>
 
 #include "io/scene_setup.hpp"
@@ -58,8 +58,8 @@ class Emitters {
     /// Lattice points of due layers left out because water was there.
     std::uint64_t blocked() const { return blocked_; }
     void setBlocked(std::uint64_t n) { blocked_ = n; }
-    /// Of emitter e's points due in the last emit(): how many were left out, and of how many.
-    std::pair<std::size_t, std::size_t> lastBlocked(std::size_t e) const { return lastBlocked_[e]; }
+    /// One warning per emitter, made the first time it left points out (in the order made).
+    const std::vector<std::string>& warnings() const { return warnings_; }
 
   private:
     const Scene<Dim>& scene_;
@@ -68,7 +68,8 @@ class Emitters {
     std::vector<std::uint64_t> layers_;
     std::size_t emitted_ = 0;
     std::uint64_t blocked_ = 0;
-    std::vector<std::pair<std::size_t, std::size_t>> lastBlocked_;
+    std::vector<char> warned_;
+    std::vector<std::string> warnings_;
 };
 
 }  // namespace num::io

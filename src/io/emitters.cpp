@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace num::io {
@@ -118,7 +119,7 @@ Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
     : scene_(scene),
       setup_(setup),
       layers_(scene.emitters.size(), 0),
-      lastBlocked_(scene.emitters.size()) {
+      warned_(scene.emitters.size(), 0) {
     for (const auto& e : scene.emitters) discs_.push_back(nozzle<Dim>(e, scene.spacing));
 }
 
@@ -142,7 +143,6 @@ std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occu
         layers_[e] = std::max(layers_[e], due);
     }
     firstPoint.back() = points.size();
-    std::fill(lastBlocked_.begin(), lastBlocked_.end(), std::pair<std::size_t, std::size_t>{});
     if (points.empty()) return 0;
     const std::vector<char> taken = occupied(points);
     std::size_t added = 0;
@@ -150,8 +150,18 @@ std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occu
         std::size_t count = 0;
         for (std::size_t p = firstPoint[e]; p < firstPoint[e + 1]; ++p) count += !taken[p];
         const std::size_t due = firstPoint[e + 1] - firstPoint[e];
-        lastBlocked_[e] = {due - count, due};
         blocked_ += due - count;
+        if (count < due && !warned_[e]) {
+            warned_[e] = 1;
+            char when[32];
+            std::snprintf(when, sizeof when, "%.3g", t);
+            warnings_.push_back(
+                std::string("at t = ") + when + " s emitter \"" + scene_.emitters[e].name +
+                "\" left out " + std::to_string(due - count) + " of " + std::to_string(due) +
+                " nozzle points: water was there (a splash on the nozzle, or the nozzle in "
+                "water); a nozzle in water injects less than speed x area, so keep nozzles above "
+                "the water (summary.json counts the points left out)");
+        }
         if (count == 0) continue;
         sph::Storage<Dim> batch;
         setup_.emitterTemplates[e].forEach([&](QuantityId id, const sph::Quantity<Dim>& q) {

@@ -153,29 +153,11 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     auto occupied = [&](const std::vector<sph::Vector<Dim>>& points) {
         return occupiedPoints(storage, solver.domain(), kernel, points, scene.spacing, comm);
     };
-    // The first time water sits on an emitter's nozzle: a warning (printed by the time loop, and
-    // in summary.json).
-    std::vector<std::string> emitterWarnings;
-    std::vector<char> warnedEmitter(scene.emitters.size(), 0);
-    auto warnBlocked = [&](double t) {
-        for (std::size_t e = 0; e < scene.emitters.size(); ++e) {
-            const auto [left, of] = emitters.lastBlocked(e);
-            if (left == 0 || warnedEmitter[e]) continue;
-            warnedEmitter[e] = 1;
-            emitterWarnings.push_back(
-                "at t = " + fmt("%.3g", t) + " s emitter \"" + scene.emitters[e].name +
-                "\" left out " + std::to_string(left) + " of " + std::to_string(of) +
-                " nozzle points: water was there (a splash on the nozzle, or the nozzle in "
-                "water); a nozzle in water injects less than speed x area, so keep nozzles above "
-                "the water (summary.json counts the points left out)");
-        }
-    };
-    std::size_t emitterWarningsPrinted = 0;  // printed by the time loop
+    std::size_t emitterWarningsPrinted = 0;  // of emitters.warnings(), by the time loop
     // Emitted particles come last in the particle order, with ids after the initial particles'
     // (the same on every process: each emits every particle, and keeps its own).
     auto emit = [&, firstId = initialParticles](double t) {
         const std::size_t before = emitters.emitted(), added = emitters.emit(storage, t, occupied);
-        warnBlocked(t);
         auto id = storage.template getValue<int>(QuantityId::PARTICLE_ID);
         auto key = storage.template getValue<int>(QuantityId::ORDER_KEY);
         for (std::size_t k = 0; k < added; ++k) {
@@ -309,11 +291,11 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 run.particlesChanged();
             }
             if (emit(run.time()) > 0) run.particlesChanged();
-            for (; emitterWarningsPrinted < emitterWarnings.size(); ++emitterWarningsPrinted)
+            for (; emitterWarningsPrinted < emitters.warnings().size(); ++emitterWarningsPrinted)
                 if (!opt.quiet && root) {
                     progress.clearLine();
                     std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(),
-                                 emitterWarnings[emitterWarningsPrinted].c_str());
+                                 emitters.warnings()[emitterWarningsPrinted].c_str());
                 }
             progress.update(run.time(), dt, Size(particles), run.steps());
             if (testSignal.signal && run.steps() == testSignal.step) std::raise(testSignal.signal);
@@ -390,7 +372,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     }
     std::vector<std::string> warnings = scene.warnings;
     warnings.insert(warnings.end(), physical.warnings().begin(), physical.warnings().end());
-    warnings.insert(warnings.end(), emitterWarnings.begin(), emitterWarnings.end());
+    warnings.insert(warnings.end(), emitters.warnings().begin(), emitters.warnings().end());
     onRoot(comm, [&] {
         addEndOfRun(summary, end, warnings);
         writeFileAtomically(outputs->path("summary.json"), summary.dump(2) + "\n");

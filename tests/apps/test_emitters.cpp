@@ -78,6 +78,9 @@ TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
     // at y = 0.11, so the lower two points fall on water.
     EXPECT_EQ(emitters.emit(storage, 0.0, occupied), 2u);
     EXPECT_EQ(emitters.blocked(), 2u);
+    ASSERT_EQ(emitters.warnings().size(), 1u);  // once per emitter, the first time
+    EXPECT_NE(emitters.warnings()[0].find("left out 2 of 4 nozzle points"), std::string::npos)
+        << emitters.warnings()[0];
     const auto x = storage.getValue<sph::Vector<2>>(sph::QuantityId::POSITION);
     const auto kind = storage.getValue<int>(sph::QuantityId::KIND);
     for (std::size_t e = initial; e < storage.size(); ++e) {
@@ -91,6 +94,7 @@ TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
     EXPECT_EQ(emitters.emit(storage, 0.5 * dx, occupied), 0u);  // no layer due yet
     EXPECT_EQ(emitters.emit(storage, 1.2 * dx, occupied), 0u);
     EXPECT_EQ(emitters.blocked(), 6u);
+    EXPECT_EQ(emitters.warnings().size(), 1u);
     // Once they have moved on by two spacings, as the flow carries them, the next layer enters.
     auto moved = storage.getValue<sph::Vector<2>>(sph::QuantityId::POSITION);
     for (std::size_t e = initial; e < afterFirst; ++e) moved[e][0] += 2 * dx;

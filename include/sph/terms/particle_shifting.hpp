@@ -169,18 +169,9 @@ class ParticleShifting : public IEquationTerm<Dim> {
         const auto volume = s.template getValue<Float>(FluidId::VOLUME);
         ShiftingData<Dim>& d = *data_;
         d.inverseWAtSpacing.resize(s.size());
-        // The local spacing V^(1/Dim): sqrt and cbrt cost a fraction of std::pow.
-        auto spacing = [](Float v) {
-            if constexpr (Dim == 2)
-                return std::sqrt(v);
-            else if constexpr (Dim == 3)
-                return std::cbrt(v);
-            else
-                return v;
-        };
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i)
-                d.inverseWAtSpacing[i] = 1 / kernel_->W(spacing(volume[i]));
+                d.inverseWAtSpacing[i] = 1 / kernel_->W(std::pow(volume[i], 1.0 / Dim));
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}

@@ -86,7 +86,6 @@ echo '```'
 "$BUILD/bench/bench_two_cores" --rounds "$REPEATS"
 echo '```'
 
-
 echo
 echo "## PySPH side by side"
 echo

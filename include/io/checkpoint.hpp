@@ -15,8 +15,8 @@
 
 namespace num::io {
 
-inline constexpr std::uint32_t kCheckpointVersion =
-    3;  ///< 2: the run's fingerprint; 3: emitter points blocked
+/// Format version: 2 added the run's fingerprint, 3 the count of emitter points left out.
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 
 /// Appends plain values, strings and vectors to a byte buffer.
 class ByteWriter {

@@ -54,6 +54,11 @@ struct NeighbourGeometry {
 /// the loop: the value (OrderEnum::ZERO) of its quantity is replaced by the sum; dt (FIRST) or
 /// d2t (SECOND) is added to (the solver zeroes the highest derivatives before initialize, so
 /// the terms' own contributions and the pair sums add up whatever their order).
+/// With sumValuesInStorage() (the gather loop, where each particle's sums are written by the
+/// one block that gathers it) a value target has no buffer: the derivatives sum into the
+/// stored quantity itself, which keeps its previous value until startSums() zeroes it just
+/// before the pair loop (a derivative reads the previous value in initialize, never in its
+/// pair sums). The result is bitwise that of a buffer (0 + sum), one copy per particle fewer.
 template <int Dim>
 class Accumulated {
   public:
@@ -66,8 +71,14 @@ class Accumulated {
                                            " requested twice with different types or targets");
                 return;
             }
-        buffers_.push_back({id, target, std::vector<T>(size_), owner_});
+        const bool inStorage = valuesInStorage_ && target == OrderEnum::ZERO;
+        buffers_.push_back({id, target, std::vector<T>(inStorage ? 0 : size_), ArrayView<T>(),
+                            inStorage, false, owner_});
     }
+
+    /// Value targets inserted from now on are summed in the storage (see above). Call before
+    /// insert.
+    void sumValuesInStorage() { valuesInStorage_ = true; }
 
     /// Names the derivative whose buffers the next insert() calls make (for messages).
     void setOwner(std::string owner) { owner_ = std::move(owner); }
@@ -76,6 +87,7 @@ class Accumulated {
     ArrayView<T> getValue(QuantityId id) {
         for (auto& b : buffers_)
             if (b.id == id) {
+                if (b.inStorage) return bind<T>(b);
                 auto& v = std::get<std::vector<T>>(b.data);
                 return ArrayView<T>(v.data(), v.size());
             }
@@ -86,20 +98,37 @@ class Accumulated {
     void reset(Size n) {
         size_ = n;
         for (auto& b : buffers_)
-            std::visit(
-                [&](auto& v) { v.assign(n, typename std::decay_t<decltype(v)>::value_type{}); },
-                b.data);
+            if (!b.inStorage)
+                std::visit(
+                    [&](auto& v) { v.assign(n, typename std::decay_t<decltype(v)>::value_type{}); },
+                    b.data);
     }
 
-    /// Zeroes the storage levels these buffers go to.
-    void zeroTargets(Storage<Dim>& storage) const {
-        for (const auto& b : buffers_)
-            std::visit(
-                [&](const auto& v) {
-                    using T = typename std::decay_t<decltype(v)>::value_type;
-                    for (auto& x : target<T>(storage, b)) x = T{};
-                },
-                b.data);
+    /// Sets every buffer to zeros, one per particle of `storage`; the value targets summed in
+    /// the storage are its arrays from now on (their values stay until startSums).
+    void reset(Storage<Dim>& storage) {
+        reset(storage.size());
+        storage_ = &storage;
+        for (auto& b : buffers_) b.bound = false;
+    }
+
+    /// Zeroes the value targets summed in the storage: call after the derivatives' initialize,
+    /// before the pair loop. forRanges as for addInto.
+    template <class ForRanges>
+    void startSums(ForRanges&& forRanges) {
+        for (auto& b : buffers_)
+            if (b.inStorage)
+                std::visit(
+                    [&](const auto& v) {
+                        using T = typename std::decay_t<decltype(v)>::value_type;
+                        ArrayView<T> view;
+                        attributingMissingQuantity([&] { view = bind<T>(b); },
+                                                   [&] { return "the pair sum of " + b.owner; });
+                        forRanges(Size(view.size()), [&](Size begin, Size end) {
+                            std::fill(view.begin() + begin, view.begin() + end, T{});
+                        });
+                    },
+                    b.data);
     }
 
     /// Number of buffers.
@@ -127,6 +156,7 @@ class Accumulated {
         if (blocks.empty()) return;
         for (std::size_t k = 0; k < blocks[0].buffers_.size(); ++k) {
             const Buffer& b0 = blocks[0].buffers_[k];
+            if (b0.inStorage) continue;  // summed there already
             std::visit(
                 [&](const auto& v0) {
                     using T = typename std::decay_t<decltype(v0)>::value_type;
@@ -154,9 +184,19 @@ class Accumulated {
     struct Buffer {
         QuantityId id;
         OrderEnum target;
-        std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;
-        std::string owner;  ///< the derivative that made the buffer
+        std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;  ///< empty if inStorage
+        std::variant<ArrayView<Float>, ArrayView<Vector<Dim>>> view;      ///< the storage's array
+        bool inStorage;
+        bool bound = false;  ///< view is the array of the storage of the last reset
+        std::string owner;   ///< the derivative that made the buffer
     };
+    /// The storage's array of an in-storage buffer (MissingQuantity if it has none).
+    template <class T>
+    ArrayView<T> bind(Buffer& b) {
+        if (!storage_) throw std::logic_error("Accumulated: reset(storage) before the sums");
+        if (!b.bound) b.view = target<T>(*storage_, b), b.bound = true;
+        return std::get<ArrayView<T>>(b.view);
+    }
     template <class T>
     static ArrayView<T> target(Storage<Dim>& s, const Buffer& b) {
         switch (b.target) {
@@ -170,6 +210,8 @@ class Accumulated {
     }
     std::vector<Buffer> buffers_;
     Size size_ = 0;
+    bool valuesInStorage_ = false;
+    Storage<Dim>* storage_ = nullptr;  ///< of the last reset(storage)
     std::string owner_ = "a derivative";
 };
 

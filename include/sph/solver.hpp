@@ -107,6 +107,7 @@ class Solver {
             PairPass& pass = passes_[p];
             pass.holders.resize(scratch_.size());
             pass.accumulated.resize(symmetric_ ? scratch_.size() : 1);
+            if (!symmetric_) pass.accumulated[0].sumValuesInStorage();
             for (std::size_t b = 0; b < pass.holders.size(); ++b) {
                 equations_.setDerivatives(pass.holders[b], settings_,
                                           schedule_.passes[p].derivatives);
@@ -151,16 +152,19 @@ class Solver {
             if (decomposition_) decomposition_->exchangeHalo(storage);
             PairPass& pass = passes_[p];
             if (p == 0 || pass.holders[0].size() > 0) {
-                for (auto& a : pass.accumulated) a.reset(storage.size());
+                const auto forRanges = [&](Size n, const auto& range) {
+                    scheduler_.parallelFor(n, 8192, range);
+                };
+                for (auto& a : pass.accumulated) a.reset(storage);
                 pass.holders[0].initialize(storage, pass.accumulated[0]);
                 for (std::size_t b = 1; b < pass.holders.size(); ++b)
                     pass.holders[b].initializeLike(pass.holders[0], storage,
                                                    pass.accumulated[symmetric_ ? b : 0]);
+                for (auto& a : pass.accumulated) a.startSums(forRanges);
                 withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k, pass); });
                 if (abandoned_.exchange(false)) throw EvaluationAbandoned();
                 Accumulated<Dim>::addInto(
-                    storage, std::span<const Accumulated<Dim>>(pass.accumulated),
-                    [&](Size n, const auto& range) { scheduler_.parallelFor(n, 8192, range); });
+                    storage, std::span<const Accumulated<Dim>>(pass.accumulated), forRanges);
             }
             equations_.forTerms(order.terms,
                                 [&](auto& term) { term.finalize(scheduler_, storage, t); });

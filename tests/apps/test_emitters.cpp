@@ -86,7 +86,9 @@ TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
     for (std::size_t e = initial; e < storage.size(); ++e) {
         EXPECT_GT(x[e][1], 0.12);
         for (std::size_t i = 0; i < initial; ++i)
-            if (kind[i] == int(sph::ParticleKind::FLUID)) EXPECT_GE(norm(x[e] - x[i]), 0.5 * dx);
+            if (kind[i] == int(sph::ParticleKind::FLUID)) {
+                EXPECT_GE(norm(x[e] - x[i]), 0.5 * dx);
+            }
     }
     // A layer later, with the emitted particles not moved, the new layer (0.2 dx ahead of them)
     // falls on them and on the water: nothing is added, and the layer counts as done.

@@ -59,6 +59,50 @@ TEST(Accumulated, BlocksAreSummedInBlockOrderIntoTheirTargets) {
     EXPECT_EQ(s.getD2t<V2>(QuantityId::POSITION)[1], (V2{{2.5, 2.75}}));
 }
 
+// The gather loop's buffers: a value target is the stored array itself, its previous value
+// readable until startSums zeroes it; a d2t target keeps a buffer of its own.
+TEST(Accumulated, ValueTargetsSummedInStorageKeepTheirValueUntilTheSumsStart) {
+    Storage<2> s;
+    s.insert<V2>(QuantityId::POSITION, OrderEnum::SECOND, std::vector<V2>(2));
+    s.insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO, 5.0);
+    s.getD2t<V2>(QuantityId::POSITION)[1] = V2{{1.0, 2.0}};
+    Accumulated<2> sums;
+    sums.sumValuesInStorage();
+    sums.insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO);
+    sums.insert<V2>(QuantityId::POSITION, OrderEnum::SECOND);
+    sums.reset(s);
+    const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+    auto sum = sums.getValue<Float>(QuantityId::DENSITY);
+    EXPECT_EQ(sum.data(), rho.data());
+    EXPECT_EQ(sum[1], 5.0);  // the previous value, for a derivative's initialize
+    EXPECT_NE(sums.getValue<V2>(QuantityId::POSITION).data(),
+              s.getD2t<V2>(QuantityId::POSITION).data());
+    const auto sequential = [](Size n, const auto& range) { range(Size(0), n); };
+    sums.startSums(sequential);
+    EXPECT_EQ(rho[0], 0.0);
+    EXPECT_EQ(rho[1], 0.0);
+    sum[1] += 3.0;
+    sums.getValue<V2>(QuantityId::POSITION)[1] = V2{{0.5, 0.25}};
+    Accumulated<2>::addInto(s, std::span<const Accumulated<2>>(&sums, 1), sequential);
+    EXPECT_EQ(rho[1], 3.0);  // not added again
+    EXPECT_EQ(s.getD2t<V2>(QuantityId::POSITION)[1], (V2{{1.5, 2.25}}));
+
+    // A value target the storage lacks: the derivative's initialize meets it (and the
+    // DerivativeHolder names the derivative and its term), else the sums name the derivative.
+    Accumulated<2> missing;
+    missing.sumValuesInStorage();
+    missing.setOwner("MyDerivative");
+    missing.insert<Float>(QuantityId::TEMPERATURE, OrderEnum::ZERO);
+    missing.reset(s);
+    EXPECT_THROW(missing.getValue<Float>(QuantityId::TEMPERATURE), MissingQuantity);
+    try {
+        missing.startSums(sequential);
+        ADD_FAILURE() << "no error for a missing quantity";
+    } catch (const MissingQuantity& e) {
+        EXPECT_NE(std::string(e.what()).find("MyDerivative"), std::string::npos) << e.what();
+    }
+}
+
 /// The pair force and the Laplacian, fused into one pass.
 template <int Dim>
 class FusedTerm : public IEquationTerm<Dim> {

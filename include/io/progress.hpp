@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <string>
 
+#include "io/formatted.hpp"
+
 namespace num::io {
 
 class Progress {
@@ -47,15 +49,11 @@ class Progress {
         const double frac = t1_ > t0_ ? (t - t0_) / (t1_ - t0_) : 1.0;
         const double elapsed = seconds(start_, now);
         const double eta = frac > 1e-6 ? elapsed * (1 - frac) / frac : 0.0;
-        char line[200];
-        std::snprintf(line, sizeof line,
-                      "t = %.4f s / %.4g s  %5.1f %%  step %zu  dt = %.3g s  %zu particles  "
-                      "elapsed %.0f s  ETA %.0f s",
-                      t, t1_, 100 * frac, steps, dt, particles, elapsed, eta);
-        if (mode_ == Mode::TERMINAL)
-            std::printf("\r\033[K%s", line);
-        else
-            std::printf("%s\n", line);
+        const std::string line = formatted(
+            "t = %.4f s / %.4g s  %5.1f %%  step %zu  dt = %.3g s  %zu particles  "
+            "elapsed %.0f s  ETA %.0f s",
+            t, t1_, 100 * frac, steps, dt, particles, elapsed, eta);
+        std::printf(mode_ == Mode::TERMINAL ? "\r\033[K%s" : "%s\n", line.c_str());
         std::fflush(stdout);
     }
 

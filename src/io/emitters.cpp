@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
+
+#include "io/formatted.hpp"
 
 namespace num::io {
 
@@ -153,10 +154,8 @@ std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occu
         blocked_ += due - count;
         if (count < due && !warned_[e]) {
             warned_[e] = 1;
-            char when[32];
-            std::snprintf(when, sizeof when, "%.3g", t);
             warnings_.push_back(
-                std::string("at t = ") + when + " s emitter \"" + scene_.emitters[e].name +
+                formatted("at t = %.3g s emitter \"", t) + scene_.emitters[e].name +
                 "\" left out " + std::to_string(due - count) + " of " + std::to_string(due) +
                 " nozzle points: water was there (a splash on the nozzle, or the nozzle in "
                 "water); a nozzle in water injects less than speed x area, so keep nozzles above "

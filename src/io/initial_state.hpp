@@ -5,9 +5,9 @@
 #pragma once
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
+#include "io/formatted.hpp"
 #include "io/scene_setup.hpp"
 
 namespace num::io {
@@ -29,14 +29,12 @@ void checkInitialState(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
         if (b == scene.fluids.size()) continue;
         const FluidBlock<Dim>& f = scene.fluids[b];
         const std::string path = "fluids[" + std::to_string(b) + "].";
-        char at[96];
-        std::snprintf(at, sizeof at, " at x = %.6g, y = %.6g%s", x[i][0], x[i][1],
-                      Dim == 3 ? (", z = " + std::to_string(x[i][Dim - 1])).c_str() : "");
+        const std::string at = formatted(" at x = %.6g, y = %.6g", x[i][0], x[i][1]) +
+                               (Dim == 3 ? formatted(", z = %.6g", x[i][Dim - 1]) : std::string());
         auto fail = [&](const std::string& key, const Expression& e, const std::string& expected,
                         double found, ExitCode code) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%g", std::isnan(found) ? NAN : found);
-            throw sceneError(scene.file, path + key, expected, value + std::string(at),
+            throw sceneError(scene.file, path + key, expected,
+                             formatted("%g", std::isnan(found) ? NAN : found) + at,
                              e.isConstant() ? "" : "from \"" + e.text() + "\"", code);
         };
         bool vFinite = true;
@@ -67,10 +65,9 @@ void checkGravity(const Scene<Dim>& scene) {
         for (int k = 0; k < Dim; ++k) {
             const double g = scene.gravity[k](0, 0, 0, t);
             if (!std::isfinite(g)) {
-                char found[64];
-                std::snprintf(found, sizeof found, "%g at t = %g s", std::isnan(g) ? NAN : g, t);
                 throw sceneError(scene.file, "gravity[" + std::to_string(k) + "]",
-                                 "a finite acceleration over the run", found,
+                                 "a finite acceleration over the run",
+                                 formatted("%g at t = %g s", std::isnan(g) ? NAN : g, t),
                                  "from \"" + scene.gravity[k].text() + "\"", ExitCode::EXPRESSION);
             }
         }

@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
+
+#include "io/formatted.hpp"
 
 namespace num::io::detail {
 
@@ -24,9 +25,9 @@ std::string describe(const json& v) {
             std::string text;
             for (unsigned char c : v.get<std::string>()) {
                 if (text.size() > 80) return "the string \"" + text + "...\"";
-                char esc[8];
-                std::snprintf(esc, sizeof esc, "\\u%04x", c);
-                text += c == '\n' ? "\\n" : c < 0x20 || c == 0x7f ? esc : std::string(1, char(c));
+                text += c == '\n'               ? std::string("\\n")
+                        : c < 0x20 || c == 0x7f ? formatted("\\u%04x", c)
+                                                : std::string(1, char(c));
             }
             return "the string \"" + text + "\"";
         }
@@ -34,11 +35,8 @@ std::string describe(const json& v) {
             return "an array of " + std::to_string(v.size()) + " values";
         case json::value_t::object:
             return "an object";
-        default: {
-            std::ostringstream s;
-            s << v.get<double>();
-            return s.str();
-        }
+        default:
+            return formatted("%g", v.get<double>());
     }
 }
 

@@ -10,6 +10,7 @@
 
 #include "io/diagnostics.hpp"
 #include "io/file.hpp"
+#include "io/formatted.hpp"
 #include "io/probe_plot.hpp"
 
 namespace num::io {
@@ -66,9 +67,7 @@ Outputs<Dim>::Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std
 
 template <int Dim>
 std::string Outputs<Dim>::fileName(int index, const std::string& extension) const {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "_%04d.", index);
-    return scene_.output.prefix + buf + extension;
+    return scene_.output.prefix + formatted("_%04d.", index) + extension;
 }
 
 template <int Dim>
@@ -150,15 +149,10 @@ template <int Dim>
 void Outputs<Dim>::writeProbes(const sph::Storage<Dim>& s, double t) {
     if (scene_.probes.empty()) return;
     const sph::RunKernel<Dim> kernel(setup_.settings);
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.10g", t);
-    std::string row = buf;
+    std::string row = formatted("%.10g", t);
     for (const auto& p : scene_.probes)
         for (const auto& f : p.fields)
-            for (double v : probe(s, kernel, p.point, f)) {
-                std::snprintf(buf, sizeof buf, ",%.10g", v);
-                row += buf;
-            }
+            for (double v : probe(s, kernel, p.point, f)) row += formatted(",%.10g", v);
     row += "\n";
     appendToFile(path("probes.csv"), row);
 }

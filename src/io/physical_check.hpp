@@ -11,12 +11,12 @@
 #pragma once
 
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "io/errors.hpp"
+#include "io/formatted.hpp"
 #include "parallel/communicator.hpp"
 #include "sph/storage.hpp"
 #include "sph/types.hpp"
@@ -60,35 +60,35 @@ class PhysicalCheck {
                 sph::Vector<Dim> x;
                 std::memcpy(&x, b.data(), sizeof x);
                 std::string text = " at (";
-                for (int d = 0; d < Dim; ++d) text += (d ? ", " : "") + number(x[d]);
+                for (int d = 0; d < Dim; ++d) text += (d ? ", " : "") + formatted("%.3g", x[d]);
                 return text + ") m";
             }
             return std::string();
         };
-        const std::string at = "at t = " + number(t) + " s ";
+        const std::string at = "at t = " + formatted("%.3g", t) + " s ";
         if (vmax >= c0_)
             throw AppError(ExitCode::UNSTABLE,
                            at + "a fluid particle" + where(fastest, localVmax == vmax) +
-                               " moves at " + number(vmax) + " m/s, at or above the sound speed " +
-                               number(c0_) +
+                               " moves at " + formatted("%.3g", vmax) +
+                               " m/s, at or above the sound speed " + formatted("%.3g", c0_) +
                                " m/s: the run left the weakly-compressible model; raise the "
                                "material's sound_speed or physics.max_speed, or lower time.cfl");
         if (rhoMin < 0.5 * rho0_ || rhoMax > 2 * rho0_) {
             const bool low = rhoMin < 0.5 * rho0_;
             throw AppError(ExitCode::UNSTABLE,
-                           at + "the fluid density reached " + number(low ? rhoMin : rhoMax) +
-                               " kg/m^3" +
+                           at + "the fluid density reached " +
+                               formatted("%.3g", low ? rhoMin : rhoMax) + " kg/m^3" +
                                (low ? where(thinnest, localRhoMin == rhoMin)
                                     : where(densest, localRhoMax == rhoMax)) +
-                               " against the rest density " + number(rho0_) +
+                               " against the rest density " + formatted("%.3g", rho0_) +
                                ": the run is lost; raise the sound speed or refine the spacing");
         }
         std::string warning;
         if (!speedWarned_ && vmax > WARN_SPEED * U_) {
             speedWarned_ = true;
             warning = at + "a fluid particle" + where(fastest, localVmax == vmax) + " moves at " +
-                      number(vmax) + " m/s, " + number(vmax / U_) +
-                      " times the velocity scale U = " + number(U_) +
+                      formatted("%.3g", vmax) + " m/s, " + formatted("%.3g", vmax / U_) +
+                      " times the velocity scale U = " + formatted("%.3g", U_) +
                       " m/s the sound speed was set for: spray this fast is not physical; set "
                       "physics.max_speed to the speed you expect";
         } else if (!densityWarned_ &&
@@ -96,11 +96,12 @@ class PhysicalCheck {
             densityWarned_ = true;
             // Named: the particle furthest from rest, below or above.
             const bool thin = rho0_ - rhoMin >= rhoMax - rho0_;
-            warning = at + "the fluid density ranges over " + number(rhoMin) + " to " +
-                      number(rhoMax) + " kg/m^3 (" + (thin ? "the lowest" : "the highest") +
+            warning = at + "the fluid density ranges over " + formatted("%.3g", rhoMin) + " to " +
+                      formatted("%.3g", rhoMax) + " kg/m^3 (" +
+                      (thin ? "the lowest" : "the highest") +
                       (thin ? where(thinnest, localRhoMin == rhoMin)
                             : where(densest, localRhoMax == rhoMax)) +
-                      "), more than 20 % from the rest density " + number(rho0_) +
+                      "), more than 20 % from the rest density " + formatted("%.3g", rho0_) +
                       ": the fluid is far from incompressible; raise the sound speed";
         }
         if (!warning.empty()) warnings_.push_back(warning);
@@ -117,12 +118,6 @@ class PhysicalCheck {
     const std::vector<std::string>& warnings() const { return warnings_; }
 
   private:
-    static std::string number(double x) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.3g", x);
-        return buf;
-    }
-
     static constexpr double WARN_SPEED = 3, WARN_DENSITY = 0.2;
 
     double U_, c0_, rho0_;

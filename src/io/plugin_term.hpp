@@ -3,13 +3,13 @@
 // the term, the hook and the time, and the run stops with its last good output.
 #pragma once
 
-#include <cstdio>
 #include <exception>
 #include <memory>
 #include <string>
 #include <utility>
 
 #include "io/errors.hpp"
+#include "io/formatted.hpp"
 #include "sph/equation_term.hpp"
 
 namespace num::io {
@@ -71,11 +71,7 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
     }
     std::string where(const char* hook, double t) const {
         std::string text = label_ + " failed in " + hook;
-        if (t >= 0) {
-            char buf[48];
-            std::snprintf(buf, sizeof buf, " at t = %.6g s", t);
-            text += buf;
-        }
+        if (t >= 0) text += formatted(" at t = %.6g s", t);
         return text;
     }
 

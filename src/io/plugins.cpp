@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 
+#include "io/formatted.hpp"
 #include "io/plugin.hpp"
 #include "json_check.hpp"
 #include "plugin_term.hpp"
@@ -88,9 +89,7 @@ std::string fileHash(const std::string& path) {
             h = (h ^ (unsigned char)buf[k]) * 1099511628211ull;
         if (!in) break;
     }
-    char text[24];
-    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)h);
-    return text;
+    return formatted("%016llx", (unsigned long long)h);
 }
 
 std::string absoluteLibrary(const std::string& library, const std::string& sceneFile) {

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <sstream>
 #include <vector>
+
+#include "io/formatted.hpp"
 
 namespace num::io {
 
@@ -54,11 +55,7 @@ std::string panelOf(const std::string& column) {
     return field;
 }
 
-std::string label(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", std::abs(v) < 1e-12 ? 0.0 : v);
-    return buf;
-}
+std::string label(double v) { return formatted("%.4g", std::abs(v) < 1e-12 ? 0.0 : v); }
 
 }  // namespace
 

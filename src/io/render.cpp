@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numeric>
+
+#include "io/formatted.hpp"
 
 namespace num::io {
 
@@ -14,12 +15,6 @@ namespace {
 
 const Rgb kBackground{24, 26, 30}, kText{235, 235, 235}, kWall{110, 110, 118}, kFloor{44, 47, 54};
 
-std::string format(const char* fmt, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, fmt, v);
-    return buf;
-}
-
 /// The colour bar at the right edge (x from x0), from y0 to y1, with its labels.
 void colourBar(Image& img, int x0, int y0, int y1, double lo, double hi) {
     const int w = 22;
@@ -29,7 +24,7 @@ void colourBar(Image& img, int x0, int y0, int y1, double lo, double hi) {
     for (int k = 0; k <= 4; ++k) {
         const int y = y0 + (y1 - y0 - 1) * k / 4;
         img.fillRect(x0 + w, y, x0 + w + 5, y + 1, kText);
-        img.text(x0 + w + 8, y - 7, format("%.4g", hi - (hi - lo) * k / 4), kText, 2);
+        img.text(x0 + w + 8, y - 7, formatted("%.4g", hi - (hi - lo) * k / 4), kText, 2);
     }
     img.text(x0 - 4, y0 - 26, "T [C]", kText, 2);
 }
@@ -133,7 +128,7 @@ Image renderParticles(const sph::Storage<Dim>& s, const RenderSettings<Dim>& r, 
             img.fillSphere(px(p.u), py(p.v), radius, p.c, kBackground, 0.5 * far);
         }
     }
-    img.text(margin, 12, "time " + format("%.3f", time) + " s", kText, 2);
+    img.text(margin, 12, "time " + formatted("%.3f", time) + " s", kText, 2);
     if (!r.title.empty()) img.text(margin + 200, 12, r.title, kText, 2);
     colourBar(img, margin + plotW + 30, top + 20, std::min(top + plotH - 10, top + 20 + 300),
               r.colorMin, r.colorMax);

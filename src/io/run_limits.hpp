@@ -7,10 +7,10 @@
 #include <unistd.h>
 
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "io/formatted.hpp"
 #include "io/scene_setup.hpp"
 
 namespace num::io {
@@ -30,17 +30,8 @@ inline double availableMemory() {
     return double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGESIZE));
 }
 
-inline std::string count(double n) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, n < 1e6 ? "%.0f" : "%.3g", n);
-    return buf;
-}
-
-inline std::string number(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", x);
-    return buf;
-}
+/// A count in full below a million, else in three digits ("1.23e+08").
+inline std::string count(double n) { return n < 1e6 ? formatted("%.0f", n) : formatted("%.3g", n); }
 
 template <int Dim>
 void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, double checkpointEvery) {
@@ -49,8 +40,8 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
         throw sceneError(
             scene.file, "output.every",
             "an interval giving at most " + count(kMaxOutputs) + " outputs over the run",
-            count(outputs) + " outputs (every " + std::to_string(scene.output.every) + " s until " +
-                std::to_string(scene.endTime) + " s)");
+            count(outputs) +
+                formatted(" outputs (every %g s until %g s)", scene.output.every, scene.endTime));
     if (checkpointEvery > 0 && scene.endTime / checkpointEvery > kMaxOutputs)
         throw AppError(ExitCode::USAGE, "--checkpoint-every: at most " + count(kMaxOutputs) +
                                             " checkpoints per run, found " +
@@ -88,16 +79,15 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
         throw sceneError(
             scene.file, "particles.spacing",
             "at most " + count(kMaxLatticePoints) + " lattice points over the domain and its walls",
-            count(lattice) + " (spacing " + number(dx) + " m)", hint);
+            count(lattice) + " (spacing " + formatted("%g", dx) + " m)", hint);
     if (total > kMaxParticles)
         throw sceneError(scene.file, "particles.spacing",
                          "a scene of at most " + count(kMaxParticles) + " particles", numbers,
                          hint);
     const double need = total * kBytesPerParticle, have = availableMemory();
     if (need > 0.8 * have) {
-        char mem[128];
-        std::snprintf(mem, sizeof mem, ", which need about %.3g GB; %.3g GB are available",
-                      need / 1e9, have / 1e9);
+        const std::string mem =
+            formatted(", which need about %.3g GB; %.3g GB are available", need / 1e9, have / 1e9);
         throw sceneError(scene.file, "particles.spacing",
                          "a scene that fits in memory (at most 80 % of what is available)",
                          numbers + mem, hint);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "io/formatted.hpp"
 #include "io/outputs.hpp"
 #include "io/scene.hpp"
 
@@ -27,18 +28,9 @@ namespace detail {
 
 /// "+0.012 %" of a relative change, or the absolute change with its unit when the start is 0.
 inline std::string change(double start, double end, const char* unit) {
-    char buf[64];
     if (std::abs(start) > 1e-300)
-        std::snprintf(buf, sizeof buf, "%+.3g %%", 100 * (end - start) / std::abs(start));
-    else
-        std::snprintf(buf, sizeof buf, "%+.3g %s", end - start, unit);
-    return buf;
-}
-
-inline std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4g", v);
-    return buf;
+        return formatted("%+.3g %%", 100 * (end - start) / std::abs(start));
+    return formatted("%+.3g %s", end - start, unit);
 }
 
 }  // namespace detail
@@ -72,19 +64,17 @@ void printRunReport(const std::string& program, const Outputs<Dim>& out, const S
     item("summary.json", "run statistics and conservation diagnostics; its key figures:");
 
     const double wall = summary.at("wall_seconds");
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "%llu (this run) in %.1f s, %.3g million particle-steps/s, %d threads",
-                  (unsigned long long)summary.at("steps_this_run").get<std::uint64_t>(), wall,
-                  summary.at("particle_steps_per_second").get<double>() * 1e-6,
-                  summary.at("threads").get<int>());
-    item("  steps", line);
-    std::snprintf(line, sizeof line, "%llu fluid of %llu (emitted %llu, removed %llu)",
+    item("  steps",
+         formatted("%llu (this run) in %.1f s, %.3g million particle-steps/s, %d threads",
+                   (unsigned long long)summary.at("steps_this_run").get<std::uint64_t>(), wall,
+                   summary.at("particle_steps_per_second").get<double>() * 1e-6,
+                   summary.at("threads").get<int>()));
+    std::string particles =
+        formatted("%llu fluid of %llu (emitted %llu, removed %llu)",
                   (unsigned long long)summary.at("fluid_particles").get<std::uint64_t>(),
                   (unsigned long long)summary.at("particles").get<std::uint64_t>(),
                   (unsigned long long)summary.at("emitted_particles").get<std::uint64_t>(),
                   (unsigned long long)summary.at("removed_particles").get<std::uint64_t>());
-    std::string particles = line;
     if (const auto blocked = summary.at("emitter_points_blocked").get<std::uint64_t>())
         particles += ", " + std::to_string(blocked) + " nozzle points left out (water was there)";
     item("  particles", particles);
@@ -103,8 +93,8 @@ void printRunReport(const std::string& program, const Outputs<Dim>& out, const S
                  detail::change(startOf("thermal_energy"), endOf("thermal_energy"), "J"));
     else  // particles came in or left: the sums are not meant to be conserved
         item("  conservation", "not a closed system (emitters, open sides): fluid mass " +
-                                   detail::number(startOf("mass")) + " -> " +
-                                   detail::number(endOf("mass")) + " kg");
+                                   formatted("%.4g", startOf("mass")) + " -> " +
+                                   formatted("%.4g", endOf("mass")) + " kg");
     const auto& warnings = summary.at("warnings");
     item("  warnings", warnings.empty() ? "none" : std::to_string(warnings.size()) + " (above)");
     if (end.videoWanted && end.video.empty() && completed)

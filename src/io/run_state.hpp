@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cmath>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -11,6 +10,7 @@
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/fields.hpp"
+#include "io/formatted.hpp"
 #include "io/outputs.hpp"
 #include "sph/solver.hpp"
 
@@ -86,9 +86,8 @@ template <int Dim>
 void checkHealth(const sph::Storage<Dim>& s, const Scene<Dim>& scene, double t, std::uint64_t step,
                  double dt, const std::string& criterion, const FieldNames& names = {}) {
     using sph::QuantityId;
-    char where[160];
-    std::snprintf(where, sizeof where,
-                  "the run went unstable at t = %.6g s (step %llu, dt = %.3g s limited by %s): ", t,
+    const std::string where =
+        formatted("the run went unstable at t = %.6g s (step %llu, dt = %.3g s limited by %s): ", t,
                   (unsigned long long)step, dt, criterion.c_str());
     const std::string cause =
         ". Likely cause: the time step is too large or the sound speed too low for this flow; "

@@ -1,8 +1,8 @@
 // Geometry checks of a scene: everything inside the domain, no fluid in a body, not empty.
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
 
 namespace num::io {
@@ -11,17 +11,9 @@ namespace {
 
 template <int Dim>
 std::string text(const SceneVec<Dim>& v) {
-    std::ostringstream s;
-    s << "[";
-    for (int k = 0; k < Dim; ++k) s << (k ? ", " : "") << v[k];
-    s << "]";
-    return s.str();
-}
-
-std::string number(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
+    std::string s = "[";
+    for (int k = 0; k < Dim; ++k) s += (k ? ", " : "") + formatted("%g", v[k]);
+    return s + "]";
 }
 
 /// Bounding box of a box or a round shape.
@@ -76,7 +68,7 @@ void checkSceneGeometry(const Scene<Dim>& s) {
         if (s.domainMax[k] - s.domainMin[k] < 2 * s.spacing)
             throw sceneError(file, "particles.spacing",
                              "a spacing at most half the domain's extent on every axis",
-                             std::to_string(s.spacing));
+                             formatted("%g", s.spacing));
     double estimate = 0;
     for (std::size_t i = 0; i < s.fluids.size(); ++i) {
         const FluidBlock<Dim>& f = s.fluids[i];
@@ -91,14 +83,14 @@ void checkSceneGeometry(const Scene<Dim>& s) {
         if (f.shape != Shape::BOX && 2 * f.radius < s.spacing)
             throw sceneError(
                 file, path + ".radius",
-                "a radius of at least half the spacing (" + std::to_string(s.spacing / 2) + " m)",
-                std::to_string(f.radius), "the block would hold no particle");
+                "a radius of at least half the spacing (" + formatted("%g", s.spacing / 2) + " m)",
+                formatted("%g", f.radius), "the block would hold no particle");
         for (int k = 0; k < Dim; ++k)
             if (hi[k] - lo[k] < s.spacing)
                 throw sceneError(file, path,
-                                 "a block at least one spacing (" + std::to_string(s.spacing) +
+                                 "a block at least one spacing (" + formatted("%g", s.spacing) +
                                      " m) wide on every axis",
-                                 "a width of " + std::to_string(hi[k] - lo[k]) + " m on axis " +
+                                 "a width of " + formatted("%g", hi[k] - lo[k]) + " m on axis " +
                                      std::to_string(k),
                                  "the block would hold no particle");
         estimate += cells;
@@ -125,10 +117,11 @@ void checkSceneGeometry(const Scene<Dim>& s) {
         for (int k = 0; k < Dim; ++k) extent = std::max(extent, s.domainMax[k] - s.domainMin[k]);
         if (2 * e.radius < s.spacing || 2 * e.radius > extent)
             throw sceneError(file, "emitters[" + std::to_string(i) + "].radius",
-                             "a radius of at least half the spacing (" + number(s.spacing / 2) +
+                             "a radius of at least half the spacing (" +
+                                 formatted("%g", s.spacing / 2) +
                                  " m) and at most half the domain's largest extent (" +
-                                 number(extent / 2) + " m)",
-                             number(e.radius) + " m");
+                                 formatted("%g", extent / 2) + " m)",
+                             formatted("%g", e.radius) + " m");
     }
     for (std::size_t i = 0; i < s.probes.size(); ++i)
         if (!inside(s.probes[i].point, s.probes[i].point))
@@ -141,10 +134,11 @@ void checkSceneGeometry(const Scene<Dim>& s) {
                          "add a block such as {\"material\": \"water\", \"shape\": \"box\", "
                          "\"min\": [...], \"max\": [...]}");
     if (estimate > 2e7)
-        throw sceneError(
-            file, "particles.spacing", "a spacing giving at most 20 million fluid particles",
-            std::to_string(s.spacing) + " (about " + std::to_string(long(estimate)) + " particles)",
-            "increase the spacing");
+        throw sceneError(file, "particles.spacing",
+                         "a spacing giving at most 20 million fluid particles",
+                         formatted("%g", s.spacing) + " (about " + std::to_string(long(estimate)) +
+                             " particles)",
+                         "increase the spacing");
     const double support = 2.0 * s.hOverSpacing * s.spacing;  // largest kernel support: 2h
     for (int k = 0; k < Dim; ++k)
         if (s.sides[k][0].type == SideType::PERIODIC &&

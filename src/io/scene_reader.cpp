@@ -2,9 +2,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <set>
 
+#include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
 #include "json_check.hpp"
 
@@ -203,11 +203,7 @@ void warnSidewaysOpenSides(Scene<Dim>& s) {
         if (std::abs(g[k]) > std::abs(g[down])) down = k;
     const char* top = sideName(down, g[down] < 0 ? 1 : 0);
     std::string gText;
-    for (int k = 0; k < Dim; ++k) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%g", g[k]);
-        gText += (k ? ", " : "") + std::string(buf);
-    }
+    for (int k = 0; k < Dim; ++k) gText += (k ? ", " : "") + formatted("%g", g[k]);
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)
             if (s.sides[k][hi].type == SideType::OPEN && std::abs(g[k]) <= 1e-12 * std::sqrt(g2))

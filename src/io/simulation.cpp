@@ -19,6 +19,7 @@
 #include "io/diagnostics.hpp"
 #include "io/emitters.hpp"
 #include "io/file.hpp"
+#include "io/formatted.hpp"
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
 #include "parallel/domain_decomposition.hpp"
@@ -34,16 +35,6 @@ namespace num::io {
 
 using sph::QuantityId;
 using sph::Size;
-
-namespace {
-
-std::string fmt(const char* f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
-}
-
-}  // namespace
 
 SceneDocument sceneOfCheckpoint(const std::string& path, int dimension) {
     const std::string payload = readCheckpointFile(path, dimension);
@@ -119,9 +110,9 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         storage = readStorage<Dim>(r, initial);
         if (state.time >= scene.endTime)
             throw AppError(ExitCode::USAGE,
-                           *opt.restart + ": the checkpoint is at t = " + fmt("%g", state.time) +
-                               " s, at or after the end time " + fmt("%g", scene.endTime) +
-                               " s (raise it with --end-time)");
+                           *opt.restart + ": the checkpoint is at t = " +
+                               formatted("%g", state.time) + " s, at or after the end time " +
+                               formatted("%g", scene.endTime) + " s (raise it with --end-time)");
     } else {
         storage = std::move(initial);
     }
@@ -304,17 +295,17 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                 reached(run.time(), (state.checkpointCount + 1) * opt.checkpointEvery)) {
                 while (reached(run.time(), (state.checkpointCount + 1) * opt.checkpointEvery))
                     ++state.checkpointCount;
-                writeCheckpoint(fmt("checkpoint_%04.0f.chk", double(state.checkpointCount)));
+                writeCheckpoint(formatted("checkpoint_%04.0f.chk", double(state.checkpointCount)));
             }
         }
         if (stopRequested()) status = "interrupted";
         if (abandoned) {
             // The storage is part-way through the abandoned step: no output or checkpoint of it.
-            message = std::string("stopped by ") + stop::signalName(stop::requested()) +
-                      " during step " + std::to_string(run.steps() + 1) +
-                      " from t = " + fmt("%g", run.time()) +
-                      " s: the step was abandoned, the outputs written before stay" +
-                      (lastOutput >= 0 ? " (the last at t = " + fmt("%g", lastOutput) + " s)" : "");
+            message =
+                std::string("stopped by ") + stop::signalName(stop::requested()) + " during step " +
+                std::to_string(run.steps() + 1) + " from t = " + formatted("%g", run.time()) +
+                " s: the step was abandoned, the outputs written before stay" +
+                (lastOutput >= 0 ? " (the last at t = " + formatted("%g", lastOutput) + " s)" : "");
             if (!opt.quiet) progress.clearLine();
             std::fprintf(stderr, "%s: %s\n", opt.program.c_str(), message.c_str());
         } else {

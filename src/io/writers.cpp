@@ -1,7 +1,6 @@
 #include "io/writers.hpp"
 
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <sstream>
@@ -9,6 +8,7 @@
 #include <utility>
 
 #include "io/file.hpp"
+#include "io/formatted.hpp"
 
 namespace num::io {
 
@@ -16,12 +16,6 @@ using sph::Float;
 using sph::Size;
 
 namespace {
-
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
 
 /// How VTK stores one field: Float64 with 1 or 3 components, or Int32.
 struct FieldLayout {
@@ -95,7 +89,7 @@ void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
         << "    <FieldData>\n"
         << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
            "format=\"ascii\">"
-        << number(time) << "</DataArray>\n"
+        << formatted("%.17g", time) << "</DataArray>\n"
         << "    </FieldData>\n"
         << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
         << "      <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n";
@@ -151,23 +145,17 @@ void writeCsv(const std::string& path, const sph::Storage<Dim>& s,
     text += "\n";
     const bool haveKind = s.has(sph::QuantityId::KIND);
     const auto x = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
-    char buf[40];
     OutFile out(path);
     for (Size i = 0; i < s.size(); ++i) {
         if (haveKind && s.template getValue<int>(sph::QuantityId::KIND)[i] != 0) continue;
-        for (int k = 0; k < Dim; ++k) {
-            std::snprintf(buf, sizeof buf, k ? ",%.10g" : "%.10g", x[i][k]);
-            text += buf;
-        }
+        for (int k = 0; k < Dim; ++k) text += formatted(k ? ",%.10g" : "%.10g", x[i][k]);
         for (const OutputField& f : fields) {
             if (f.type == OutputField::Type::VECTOR) {
                 const auto v = f.derivative ? s.template getDt<sph::Vector<Dim>>(f.id)[i]
                                             : s.template getValue<sph::Vector<Dim>>(f.id)[i];
-                for (int k = 0; k < Dim; ++k)
-                    std::snprintf(buf, sizeof buf, ",%.10g", v[k]), text += buf;
+                for (int k = 0; k < Dim; ++k) text += formatted(",%.10g", v[k]);
             } else if (f.type == OutputField::Type::FLOAT) {
-                std::snprintf(buf, sizeof buf, ",%.10g", s.template getValue<Float>(f.id)[i]);
-                text += buf;
+                text += formatted(",%.10g", s.template getValue<Float>(f.id)[i]);
             } else {
                 text += ',';
                 text += std::to_string(s.template getValue<int>(f.id)[i]);
@@ -190,8 +178,8 @@ void PvdSeries::write(const std::string& path) const {
         << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
         << "  <Collection>\n";
     for (const auto& [t, file] : entries_)
-        xml << "    <DataSet timestep=\"" << number(t) << "\" group=\"\" part=\"0\" file=\"" << file
-            << "\"/>\n";
+        xml << "    <DataSet timestep=\"" << formatted("%.17g", t)
+            << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
     xml << "  </Collection>\n</VTKFile>\n";
     writeFileAtomically(path, xml.str());
 }
@@ -216,8 +204,10 @@ void writeParaviewScript(const std::string& path, const ParaviewView& v) {
         const int a1 = (v.upAxis + 1) % 3, a2 = (v.upAxis + 2) % 3;
         double c[3], u[3] = {0, 0, 0};
         c[v.upAxis] = 0.9, c[a1] = 1.0, c[a2] = -1.4, u[v.upAxis] = 1;
-        camera = "[" + number(c[0]) + ", " + number(c[1]) + ", " + number(c[2]) + "]";
-        up = "[" + number(u[0]) + ", " + number(u[1]) + ", " + number(u[2]) + "]";
+        camera = "[" + formatted("%.17g", c[0]) + ", " + formatted("%.17g", c[1]) + ", " +
+                 formatted("%.17g", c[2]) + "]";
+        up = "[" + formatted("%.17g", u[0]) + ", " + formatted("%.17g", u[1]) + ", " +
+             formatted("%.17g", u[2]) + "]";
     }
     std::ostringstream py;
     py << "# Opens this run in ParaView coloured by temperature, fluid and bodies drawn as "
@@ -240,10 +230,10 @@ void writeParaviewScript(const std::string& path, const ParaviewView& v) {
        << v.dimension
        << "\n"
           "spacing = "
-       << number(v.spacing)
+       << formatted("%.17g", v.spacing)
        << "  # m\n"
           "temperature_range = ["
-       << number(v.colorMin) << ", " << number(v.colorMax)
+       << formatted("%.17g", v.colorMin) << ", " << formatted("%.17g", v.colorMax)
        << "]  # C\n\n"
           "run = PVDReader(FileName=os.path.join(here, series))\n"
           "view = GetActiveViewOrCreate(\"RenderView\")\n"

@@ -54,11 +54,14 @@ struct NeighbourGeometry {
 /// the loop: the value (OrderEnum::ZERO) of its quantity is replaced by the sum; dt (FIRST) or
 /// d2t (SECOND) is added to (the solver zeroes the highest derivatives before initialize, so
 /// the terms' own contributions and the pair sums add up whatever their order).
-/// With sumValuesInStorage() (the gather loop, where each particle's sums are written by the
-/// one block that gathers it) a value target has no buffer: the derivatives sum into the
-/// stored quantity itself, which keeps its previous value until startSums() zeroes it just
-/// before the pair loop (a derivative reads the previous value in initialize, never in its
-/// pair sums). The result is bitwise that of a buffer (0 + sum), one copy per particle fewer.
+/// With sumInStorage() (the gather loop, where each particle's sums are written by the one
+/// block that gathers it) no target has a buffer: the derivatives sum into the stored arrays
+/// themselves, which saves a copy of each per particle and the additions after the loop. A
+/// value target keeps its previous value until startSums() zeroes it just before the pair loop
+/// (a derivative reads the previous value in initialize, never in its pair sums); a dt or d2t
+/// target holds what terms added in their initialize, and the pair sums add on from there
+/// (the built-in terms add to rates in finalize, so their sums start from 0 as in a buffer:
+/// results bitwise the same; a term that adds in initialize changes only the round-off).
 template <int Dim>
 class Accumulated {
   public:
@@ -71,14 +74,13 @@ class Accumulated {
                                            " requested twice with different types or targets");
                 return;
             }
-        const bool inStorage = valuesInStorage_ && target == OrderEnum::ZERO;
+        const bool inStorage = inStorage_;
         buffers_.push_back({id, target, std::vector<T>(inStorage ? 0 : size_), ArrayView<T>(),
                             inStorage, false, owner_});
     }
 
-    /// Value targets inserted from now on are summed in the storage (see above). Call before
-    /// insert.
-    void sumValuesInStorage() { valuesInStorage_ = true; }
+    /// Targets inserted from now on are summed in the storage (see above). Call before insert.
+    void sumInStorage() { inStorage_ = true; }
 
     /// Names the derivative whose buffers the next insert() calls make (for messages).
     void setOwner(std::string owner) { owner_ = std::move(owner); }
@@ -104,8 +106,8 @@ class Accumulated {
                     b.data);
     }
 
-    /// Sets every buffer to zeros, one per particle of `storage`; the value targets summed in
-    /// the storage are its arrays from now on (their values stay until startSums).
+    /// Sets every buffer to zeros, one per particle of `storage`; the targets summed in the
+    /// storage are its arrays from now on (values stay as they are until startSums).
     void reset(Storage<Dim>& storage) {
         reset(storage.size());
         storage_ = &storage;
@@ -117,7 +119,7 @@ class Accumulated {
     template <class ForRanges>
     void startSums(ForRanges&& forRanges) {
         for (auto& b : buffers_)
-            if (b.inStorage)
+            if (b.inStorage && b.target == OrderEnum::ZERO)
                 std::visit(
                     [&](const auto& v) {
                         using T = typename std::decay_t<decltype(v)>::value_type;
@@ -210,7 +212,7 @@ class Accumulated {
     }
     std::vector<Buffer> buffers_;
     Size size_ = 0;
-    bool valuesInStorage_ = false;
+    bool inStorage_ = false;
     Storage<Dim>* storage_ = nullptr;  ///< of the last reset(storage)
     std::string owner_ = "a derivative";
 };

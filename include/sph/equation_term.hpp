@@ -10,9 +10,9 @@
 //         as the lists read them until the evaluation ends);
 //      b. initialize() of every derivative the pass's terms required (setDerivatives, once per
 //         block when the solver is made) and the pair loop over them;
-//      c. the accumulated sums go to the storage: a value target is replaced by its sum (the
-//         gather loop sums it in the stored array itself, zeroed after the derivatives'
-//         initialize: Accumulated), a dt or d2t target gets its sum added;
+//      c. the accumulated sums go to the storage: a value target is replaced by its sum, a dt or
+//         d2t target gets its sum added (the gather loop sums straight into the stored arrays,
+//         a value's zeroed after the derivatives' initialize: Accumulated);
 //      d. finalize() of the pass's terms, in the order the terms were added.
 //   A term goes to the first pass in which what it reads is ready (access()): a term that reads
 //   another's pair sums runs one pass later. Terms that declare nothing share the first pass.

@@ -107,7 +107,7 @@ class Solver {
             PairPass& pass = passes_[p];
             pass.holders.resize(scratch_.size());
             pass.accumulated.resize(symmetric_ ? scratch_.size() : 1);
-            if (!symmetric_) pass.accumulated[0].sumValuesInStorage();
+            if (!symmetric_) pass.accumulated[0].sumInStorage();
             for (std::size_t b = 0; b < pass.holders.size(); ++b) {
                 equations_.setDerivatives(pass.holders[b], settings_,
                                           schedule_.passes[p].derivatives);
@@ -241,7 +241,8 @@ class Solver {
     }
 
     /// One pair loop of an evaluation: the derivatives of each block and the buffers they sum
-    /// into (one per block in symmetric mode, one shared in asymmetric mode).
+    /// into (one set per block in symmetric mode; in asymmetric mode one shared set, which sums
+    /// into the storage's arrays: Accumulated::sumInStorage).
     struct PairPass {
         std::vector<DerivativeHolder<Dim>> holders;
         std::vector<Accumulated<Dim>> accumulated;

@@ -59,38 +59,40 @@ TEST(Accumulated, BlocksAreSummedInBlockOrderIntoTheirTargets) {
     EXPECT_EQ(s.getD2t<V2>(QuantityId::POSITION)[1], (V2{{2.5, 2.75}}));
 }
 
-// The gather loop's buffers: a value target is the stored array itself, its previous value
-// readable until startSums zeroes it; a d2t target keeps a buffer of its own.
-TEST(Accumulated, ValueTargetsSummedInStorageKeepTheirValueUntilTheSumsStart) {
+// The gather loop's sums: every target is the stored array itself; a value keeps its previous
+// value until startSums zeroes it, a d2t keeps what terms added and the sums add on to it.
+TEST(Accumulated, SumsInStorageAreTheStoredArrays) {
     Storage<2> s;
     s.insert<V2>(QuantityId::POSITION, OrderEnum::SECOND, std::vector<V2>(2));
     s.insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO, 5.0);
-    s.getD2t<V2>(QuantityId::POSITION)[1] = V2{{1.0, 2.0}};
+    s.getD2t<V2>(QuantityId::POSITION)[1] = V2{{1.0, 2.0}};  // a term's, before the loop
     Accumulated<2> sums;
-    sums.sumValuesInStorage();
+    sums.sumInStorage();
     sums.insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO);
     sums.insert<V2>(QuantityId::POSITION, OrderEnum::SECOND);
     sums.reset(s);
     const auto rho = s.getValue<Float>(QuantityId::DENSITY);
-    auto sum = sums.getValue<Float>(QuantityId::DENSITY);
-    EXPECT_EQ(sum.data(), rho.data());
-    EXPECT_EQ(sum[1], 5.0);  // the previous value, for a derivative's initialize
-    EXPECT_NE(sums.getValue<V2>(QuantityId::POSITION).data(),
-              s.getD2t<V2>(QuantityId::POSITION).data());
+    const auto acceleration = s.getD2t<V2>(QuantityId::POSITION);
+    auto rhoSum = sums.getValue<Float>(QuantityId::DENSITY);
+    auto accelerationSum = sums.getValue<V2>(QuantityId::POSITION);
+    EXPECT_EQ(rhoSum.data(), rho.data());
+    EXPECT_EQ(accelerationSum.data(), acceleration.data());
+    EXPECT_EQ(rhoSum[1], 5.0);  // the previous value, for a derivative's initialize
     const auto sequential = [](Size n, const auto& range) { range(Size(0), n); };
     sums.startSums(sequential);
     EXPECT_EQ(rho[0], 0.0);
     EXPECT_EQ(rho[1], 0.0);
-    sum[1] += 3.0;
-    sums.getValue<V2>(QuantityId::POSITION)[1] = V2{{0.5, 0.25}};
+    EXPECT_EQ(acceleration[1], (V2{{1.0, 2.0}}));
+    rhoSum[1] += 3.0;
+    accelerationSum[1] += V2{{0.5, 0.25}};
     Accumulated<2>::addInto(s, std::span<const Accumulated<2>>(&sums, 1), sequential);
     EXPECT_EQ(rho[1], 3.0);  // not added again
-    EXPECT_EQ(s.getD2t<V2>(QuantityId::POSITION)[1], (V2{{1.5, 2.25}}));
+    EXPECT_EQ(acceleration[1], (V2{{1.5, 2.25}}));
 
     // A value target the storage lacks: the derivative's initialize meets it (and the
     // DerivativeHolder names the derivative and its term), else the sums name the derivative.
     Accumulated<2> missing;
-    missing.sumValuesInStorage();
+    missing.sumInStorage();
     missing.setOwner("MyDerivative");
     missing.insert<Float>(QuantityId::TEMPERATURE, OrderEnum::ZERO);
     missing.reset(s);

@@ -74,9 +74,8 @@ class Accumulated {
                                            " requested twice with different types or targets");
                 return;
             }
-        const bool inStorage = inStorage_;
-        buffers_.push_back({id, target, std::vector<T>(inStorage ? 0 : size_), ArrayView<T>(),
-                            inStorage, false, owner_});
+        buffers_.push_back({id, target, std::vector<T>(inStorage_ ? 0 : size_), ArrayView<T>(),
+                            inStorage_, false, owner_});
     }
 
     /// Targets inserted from now on are summed in the storage (see above). Call before insert.

@@ -74,8 +74,8 @@ class Accumulated {
                                            " requested twice with different types or targets");
                 return;
             }
-        buffers_.push_back({id, target, std::vector<T>(inStorage_ ? 0 : size_), ArrayView<T>(),
-                            inStorage_, false, owner_});
+        buffers_.push_back(
+            {id, target, std::vector<T>(inStorage_ ? 0 : size_), ArrayView<T>(), false, owner_});
     }
 
     /// Targets inserted from now on are summed in the storage (see above). Call before insert.
@@ -88,7 +88,7 @@ class Accumulated {
     ArrayView<T> getValue(QuantityId id) {
         for (auto& b : buffers_)
             if (b.id == id) {
-                if (b.inStorage) return bind<T>(b);
+                if (inStorage_) return bind<T>(b);
                 auto& v = std::get<std::vector<T>>(b.data);
                 return ArrayView<T>(v.data(), v.size());
             }
@@ -98,8 +98,8 @@ class Accumulated {
     /// Sets every buffer to n zeros.
     void reset(Size n) {
         size_ = n;
-        for (auto& b : buffers_)
-            if (!b.inStorage)
+        if (!inStorage_)
+            for (auto& b : buffers_)
                 std::visit(
                     [&](auto& v) { v.assign(n, typename std::decay_t<decltype(v)>::value_type{}); },
                     b.data);
@@ -118,7 +118,7 @@ class Accumulated {
     template <class ForRanges>
     void startSums(ForRanges&& forRanges) {
         for (auto& b : buffers_)
-            if (b.inStorage && b.target == OrderEnum::ZERO)
+            if (inStorage_ && b.target == OrderEnum::ZERO)
                 std::visit(
                     [&](const auto& v) {
                         using T = typename std::decay_t<decltype(v)>::value_type;
@@ -154,10 +154,9 @@ class Accumulated {
     template <class ForRanges>
     static void addInto(Storage<Dim>& storage, std::span<const Accumulated> blocks,
                         ForRanges&& forRanges) {
-        if (blocks.empty()) return;
+        if (blocks.empty() || blocks[0].inStorage_) return;  // summed there already
         for (std::size_t k = 0; k < blocks[0].buffers_.size(); ++k) {
             const Buffer& b0 = blocks[0].buffers_[k];
-            if (b0.inStorage) continue;  // summed there already
             std::visit(
                 [&](const auto& v0) {
                     using T = typename std::decay_t<decltype(v0)>::value_type;
@@ -185,13 +184,12 @@ class Accumulated {
     struct Buffer {
         QuantityId id;
         OrderEnum target;
-        std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;  ///< empty if inStorage
+        std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;  ///< empty in storage
         std::variant<ArrayView<Float>, ArrayView<Vector<Dim>>> view;      ///< the storage's array
-        bool inStorage;
         bool bound = false;  ///< view is the array of the storage of the last reset
         std::string owner;   ///< the derivative that made the buffer
     };
-    /// The storage's array of an in-storage buffer (MissingQuantity if it has none).
+    /// The storage's array of a target summed in the storage (MissingQuantity if it has none).
     template <class T>
     ArrayView<T> bind(Buffer& b) {
         if (!storage_) throw std::logic_error("Accumulated: reset(storage) before the sums");

@@ -33,9 +33,9 @@
 // Quantities in the storage (types.hpp and terms/fluid_quantities.hpp):
 //   POSITION (2nd order: x, v, a), MASS, DENSITY (1st order with continuity), PRESSURE,
 //   TEMPERATURE, MATERIAL (int, index into storage.materials()), KIND (int ParticleKind:
-//   FLUID, WALL, BODY), WALL_VELOCITY and NORMAL (boundary particles: prescribed surface
-//   velocity, unit normal pointing into the fluid), FluidId::BOUNDARY_VELOCITY,
-//   FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY, heat_ids::BOUNDARY_TEMPERATURE.
+//   FLUID, WALL, BODY), WALL_VELOCITY (boundary particles: prescribed surface velocity),
+//   FluidId::PAIR_VELOCITY, FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY,
+//   heat_ids::BOUNDARY_TEMPERATURE.
 // Boundary particles (walls and bodies) never move; fluid particles never cross them.
 //
 // Order of the terms (each term's initialize, finalize and postStep run in this order; particle
@@ -170,12 +170,12 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
                            : wallLayersFor(RunKernel<Dim>(settings).supportRadius(), dx);
     const auto particles = generateParticles(geometry, layers);
     const std::size_t n = particles.size();
-    std::vector<Vec> x(n), v(n), wallVelocity(n), normal(n);
+    std::vector<Vec> x(n), v(n), wallVelocity(n);
     std::vector<Float> temperature(n);
     std::vector<int> material(n), kind(n), slip(n);
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = particles[i];
-        x[i] = p.x, v[i] = p.v, wallVelocity[i] = p.wallVelocity, normal[i] = p.normal;
+        x[i] = p.x, v[i] = p.v, wallVelocity[i] = p.wallVelocity;
         temperature[i] = p.temperature, material[i] = p.material;
         kind[i] = int(p.kind), slip[i] = int(p.slip);
     }
@@ -196,8 +196,8 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
     s.template insert<int>(QuantityId::MATERIAL, OrderEnum::ZERO, std::move(material));
     s.template insert<int>(QuantityId::KIND, OrderEnum::ZERO, std::move(kind));
     s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, wallVelocity);
-    s.template insert<Vec>(QuantityId::NORMAL, OrderEnum::ZERO, std::move(normal));
-    s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, std::move(wallVelocity));
+    // Until the wall condition extrapolates it, a boundary particle shows its wall's velocity.
+    s.template insert<Vec>(FluidId::PAIR_VELOCITY, OrderEnum::ZERO, std::move(wallVelocity));
     s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, std::move(slip));
     s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, model.viscosity);
     ensureParticleIds(s);

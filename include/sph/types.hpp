@@ -23,23 +23,24 @@ using Vector = Vec<Float, Dim>;
 ///     enum class AdditionalId { ENERGY_LAPLACIAN = -1 };
 ///     storage.insert<Float>(QuantityId(AdditionalId::ENERGY_LAPLACIAN), OrderEnum::ZERO, 0.0);
 enum class QuantityId : int {
-    POSITION = 0,      ///< second order: value x, dt velocity, d2t acceleration
-    MASS,              ///< particle mass [kg]
-    DENSITY,           ///< mass density [kg/m^3]
-    PRESSURE,          ///< pressure [Pa]
-    ENERGY,            ///< specific internal energy [J/kg]
-    TEMPERATURE,       ///< temperature [degC or K, as the scene uses]
-    MATERIAL,          ///< index into the storage's material table (int)
-    KIND,              ///< ParticleKind as int: fluid, wall, body
-    SOUND_SPEED,       ///< local sound speed [m/s]
-    SHIFT,             ///< particle shifting displacement per unit time [m/s]
-    NORMAL,            ///< wall or body normal (boundary particles)
-    WALL_VELOCITY,     ///< prescribed velocity of boundary particles
-    NEIGHBOUR_COUNT,   ///< number of neighbours found in the last evaluation (int)
-    OWNER,             ///< the process that owns the particle (int; -1: not yet assigned)
-    PARTICLE_ID,       ///< stable particle id (int): never changes, never reused
-    ORDER_KEY,         ///< the particle's cell at the last reordering (int, particle_order.hpp)
-    USER_FIRST = 1000  ///< first id free for user quantities (or use negative ids)
+    POSITION = 0,  ///< second order: value x, dt velocity, d2t acceleration
+    MASS,          ///< particle mass [kg]
+    DENSITY,       ///< mass density [kg/m^3]
+    PRESSURE,      ///< pressure [Pa]
+    ENERGY,        ///< specific internal energy [J/kg]
+    TEMPERATURE,   ///< temperature [degC or K, as the scene uses]
+    MATERIAL,      ///< index into the storage's material table (int)
+    KIND,          ///< ParticleKind as int: fluid, wall, body
+    SOUND_SPEED,   ///< local sound speed [m/s]
+    SHIFT,         ///< particle shifting displacement per unit time [m/s]
+    // 10 was the boundary particles' normal, which no term read; checkpoints hold the ids, so
+    // an id is never given another meaning.
+    WALL_VELOCITY = 11,  ///< prescribed velocity of boundary particles
+    NEIGHBOUR_COUNT,     ///< number of neighbours found in the last evaluation (int)
+    OWNER,               ///< the process that owns the particle (int; -1: not yet assigned)
+    PARTICLE_ID,         ///< stable particle id (int): never changes, never reused
+    ORDER_KEY,           ///< the particle's cell at the last reordering (int, particle_order.hpp)
+    USER_FIRST = 1000    ///< first id free for user quantities (or use negative ids)
 };
 
 /// Highest time derivative a quantity carries.

@@ -45,9 +45,9 @@ Storage<2> particlesWithSurface() {
     }
     s.insert<int>(QuantityId::KIND, OrderEnum::ZERO, kind);
     s.insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, previous);
-    s.insert<V2>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, V2{0.25, -0.5});
     s.insert<Float>(FluidId::VOLUME, OrderEnum::ZERO, 0.0);
-    s.insert<V2>(FluidId::PAIR_VELOCITY, OrderEnum::ZERO, V2{});
+    // The walls show (0.25, -0.5); PairInputs sets the fluid particles' own velocity.
+    s.insert<V2>(FluidId::PAIR_VELOCITY, OrderEnum::ZERO, V2{0.25, -0.5});
     preparePairInputs(s);
     return s;
 }

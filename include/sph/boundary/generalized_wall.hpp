@@ -5,7 +5,8 @@
 // pair loop:
 //   p_w = [ sum_f p_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf ] / sum_f W_wf   (eq. 27)
 //   v~_w = sum_f v_f W_wf / sum_f W_wf                                                 (eq. 22)
-//   no-slip:   v_w = 2 v_wall - v~_w   (eq. 23; used by the viscous terms only)
+//   no-slip:   v_w = 2 v_wall - v~_w   (eq. 23; used by the viscous terms and shifting only,
+//                                     FluidId::PAIR_VELOCITY)
 //   free-slip: the viscous terms skip the boundary particle
 //   rho_w = rho(p_w) from the inverse equation of state                               (eq. 28)
 //   T_w = 2 T_wall - T~_w,  T~_w = sum_f T_f W_wf / sum_f W_wf  (fixed-temperature particles;
@@ -47,7 +48,7 @@ class GeneralizedWall : public IEquationTerm<Dim> {
         const auto slip = s.template getValue<int>(FluidId::WALL_SLIP);
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         auto p = s.template getValue<Float>(QuantityId::PRESSURE);
-        auto vb = s.template getValue<Vec>(FluidId::BOUNDARY_VELOCITY);
+        auto vb = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         const bool heat =
             s.has(heat_ids::THERMAL_CONDITION) && s.has(heat_ids::BOUNDARY_TEMPERATURE);
         const auto T = s.template getValue<Float>(QuantityId::TEMPERATURE);
@@ -68,8 +69,8 @@ class GeneralizedWall : public IEquationTerm<Dim> {
                 sumV += v[f] * W;
                 if (heat) sumT += T[f] * W;
             });
-            // Pressure and density are written for boundary particles only, which the gather
-            // never reads, so the pass is free of races.
+            // Pressure, density and the pair velocity are written for boundary particles only,
+            // which the gather never reads, so the pass is free of races.
             if (sumW > 0) {
                 p[w] = (sumP + dot(g, sumRhoR)) / sumW;
                 vb[w] = slip[w] == int(WallSlip::NO_SLIP) ? wallVelocity[w] * 2.0 - sumV / sumW
@@ -89,12 +90,12 @@ class GeneralizedWall : public IEquationTerm<Dim> {
 
     TermAccess access() const override {
         return {.reads = {QuantityId::PRESSURE, QuantityId::DENSITY, QuantityId::TEMPERATURE},
-                .prepares = {QuantityId::PRESSURE, QuantityId::DENSITY, FluidId::BOUNDARY_VELOCITY,
+                .prepares = {QuantityId::PRESSURE, QuantityId::DENSITY, FluidId::PAIR_VELOCITY,
                              heat_ids::BOUNDARY_TEMPERATURE}};
     }
     void create(Storage<Dim>& s, IMaterial&) const override {
         s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vec{});
-        s.template insert<Vec>(FluidId::BOUNDARY_VELOCITY, OrderEnum::ZERO, Vec{});
+        s.template insert<Vec>(FluidId::PAIR_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, int(WallSlip::NO_SLIP));
         if (s.has(QuantityId::TEMPERATURE)) {  // each particle starts showing its own temperature
             const auto T = s.template getValue<Float>(QuantityId::TEMPERATURE);

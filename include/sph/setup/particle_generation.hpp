@@ -38,7 +38,7 @@ struct GeneratedParticle {
     ParticleKind kind = ParticleKind::FLUID;
     Float temperature = 20;
     int material = 0;
-    Vector<Dim> wallVelocity{}, normal{};
+    Vector<Dim> wallVelocity{};
     WallSlip slip = WallSlip::NO_SLIP;
 };
 
@@ -72,12 +72,9 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
         // Outside the box: a wall particle, described by the side it lies deepest beyond.
         Float depth = 0;
         int axis = -1, side = 0;
-        Vec normal{};
         for (int k = 0; k < Dim; ++k) {
             if (d.periodic[k]) continue;
             const Float below = d.min[k] - x[k], above = x[k] - d.max[k];
-            if (below > 0) normal[k] = 1;
-            if (above > 0) normal[k] = -1;
             if (below > depth) depth = below, axis = k, side = 0;
             if (above > depth) depth = above, axis = k, side = 1;
         }
@@ -86,7 +83,6 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
             p.kind = ParticleKind::WALL;
             p.temperature = w.temperature, p.material = w.material;
             p.wallVelocity = w.velocity, p.slip = w.slip;
-            p.normal = normal / norm(normal);
             out.push_back(p);
             return;
         }
@@ -96,7 +92,6 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
             if (b.thickness > 0 && s < -b.thickness) return;
             p.kind = ParticleKind::BODY;
             p.temperature = b.temperature, p.material = b.material, p.slip = b.slip;
-            p.normal = b.shape.outwardNormal(x);
             out.push_back(p);
             return;
         }

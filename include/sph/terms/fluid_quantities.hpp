@@ -12,9 +12,6 @@
 namespace num::sph {
 
 namespace FluidId {
-/// Velocity a boundary particle shows to the fluid in the viscous terms (Vector). For a no-slip
-/// boundary it is 2 v_wall - v~ (Adami, Hu & Adams 2012, eq. 22-23); fluid particles ignore it.
-inline constexpr QuantityId BOUNDARY_VELOCITY = QuantityId(100);
 /// Slip condition of a boundary particle (int): 0 no-slip, 1 free-slip.
 inline constexpr QuantityId WALL_SLIP = QuantityId(101);
 /// Kinematic viscosity nu of each particle [m^2/s] (Float); a term may change it per step
@@ -36,10 +33,12 @@ inline constexpr QuantityId SURFACE_NEIGHBOURS = QuantityId(109);
 /// evaluation (Vector): points towards the walls within one kernel support of them, zero
 /// elsewhere; from particle shifting.
 inline constexpr QuantityId WALL_DIRECTION = QuantityId(110);
-/// Per-particle inputs of the pair terms, prepared once per evaluation by PairInputs
-/// (terms/pair_inputs.hpp) after the wall condition: the volume m / rho (Float) and the
-/// velocity a particle shows its neighbours (Vector): v for fluid, BOUNDARY_VELOCITY for wall
-/// and body particles.
+/// Per-particle inputs of the pair terms, prepared once per evaluation: the volume m / rho
+/// (Float, by PairInputs, terms/pair_inputs.hpp) and the velocity a particle shows its
+/// neighbours in the viscous terms and in shifting (Vector): v for fluid (by PairInputs), for a
+/// boundary particle the wall condition's 2 v_wall - v~ (no-slip) or v_wall (free-slip; Adami,
+/// Hu & Adams 2012, eq. 22-23). Id 100 was the boundary particles' velocity in an array of its
+/// own, now the boundary entries of PAIR_VELOCITY.
 inline constexpr QuantityId VOLUME = QuantityId(111);
 inline constexpr QuantityId PAIR_VELOCITY = QuantityId(112);
 }  // namespace FluidId

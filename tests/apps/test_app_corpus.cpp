@@ -23,8 +23,6 @@ struct Case {
     std::vector<std::string> parts;  ///< what the message must name
 };
 
-std::string none(json&) { return ""; }
-
 /// A scene text with `depth` nested arrays.
 std::string deeplyNested(int depth) {
     return "{\"dimension\": 2, \"name\": " + std::string(depth, '[') + std::string(depth, ']') +

@@ -91,9 +91,12 @@ std::string runFingerprint(const SceneDocument& doc, const SceneSetup<Dim>& setu
 inline void checkFingerprint(const std::string& stored, const std::string& current,
                              const std::string& checkpoint) {
     const auto a = detail::parseFingerprint(stored), b = detail::parseFingerprint(current);
+    const std::string quantitiesKey = "engine quantities (id:order)";
     std::string diff;
     int count = 0;
+    bool otherQuantities = false;
     auto report = [&](const std::string& key, const std::string& here, const std::string& there) {
+        otherQuantities |= key == quantitiesKey;
         if (++count <= 3)
             diff += std::string(diff.empty() ? "" : "; ") + key + " is " + here + " here, " +
                     there + " in the checkpoint";
@@ -109,11 +112,17 @@ inline void checkFingerprint(const std::string& stored, const std::string& curre
         if (!b.count(key)) report(key, "absent", value);
     if (count == 0) return;
     if (count > 3) diff += "; and " + std::to_string(count - 3) + " more";
-    throw AppError(ExitCode::CHECKPOINT,
-                   checkpoint +
-                       ": the checkpoint was written for another scene or set-up: " + diff +
-                       " (a restart may change only time.end, output.*, --end-time, --out, "
-                       "--threads and --backend)");
+    // The stored quantities also change with the version of numerics (or of a plugin).
+    const std::string version =
+        otherQuantities ? "; the particles hold other quantities: a checkpoint of another "
+                          "version of numerics or of a plugin restarts only with that version "
+                          "(with this one, run the scene from the start)"
+                        : "";
+    throw AppError(
+        ExitCode::CHECKPOINT,
+        checkpoint + ": the checkpoint was written for another scene or set-up: " + diff + version +
+            " (a restart may change only time.end, output.*, --end-time, --out, "
+            "--threads and --backend)");
 }
 
 }  // namespace num::io

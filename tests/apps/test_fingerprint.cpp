@@ -1,0 +1,48 @@
+// A restart whose fingerprint differs from its checkpoint's is refused (exit code 8), naming
+// what differs; when the particles' quantities differ, as with a checkpoint of another version
+// of numerics, the message says so and what to do.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fingerprint.hpp"
+
+using namespace num::io;
+
+namespace {
+
+const std::string kQuantities = "engine quantities (id:order) = 0:2 1:0 11:0 112:0 \n";
+const std::string kScene = "gravity[1] = -9.81\n";
+
+/// The message of checkFingerprint, or "" when it accepts.
+std::string refusal(const std::string& stored, const std::string& current) {
+    try {
+        checkFingerprint(stored, current, "run/checkpoint_0001.chk");
+    } catch (const AppError& e) {
+        EXPECT_EQ(int(e.code()), int(ExitCode::CHECKPOINT));
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(Fingerprint, TheSameRunRestarts) {
+    EXPECT_EQ(refusal(kQuantities + kScene, kQuantities + kScene), "");
+}
+
+TEST(Fingerprint, AnotherSceneIsRefusedNamingWhatDiffers) {
+    const std::string message = refusal(kQuantities + "gravity[1] = -1\n", kQuantities + kScene);
+    EXPECT_NE(message.find("run/checkpoint_0001.chk"), std::string::npos) << message;
+    EXPECT_NE(message.find("gravity[1] is -9.81 here, -1 in the checkpoint"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("version"), std::string::npos) << message;
+}
+
+TEST(Fingerprint, OtherQuantitiesNameAnotherVersion) {
+    const std::string older = "engine quantities (id:order) = 0:2 1:0 10:0 11:0 100:0 112:0 \n";
+    const std::string message = refusal(older + kScene, kQuantities + kScene);
+    EXPECT_NE(message.find("engine quantities (id:order)"), std::string::npos) << message;
+    EXPECT_NE(message.find("another version of numerics"), std::string::npos) << message;
+    EXPECT_NE(message.find("run the scene from the start"), std::string::npos) << message;
+}

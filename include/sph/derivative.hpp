@@ -74,8 +74,7 @@ class Accumulated {
                                            " requested twice with different types or targets");
                 return;
             }
-        buffers_.push_back(
-            {id, target, std::vector<T>(inStorage_ ? 0 : size_), ArrayView<T>(), false, owner_});
+        buffers_.push_back({id, target, std::vector<T>(inStorage_ ? 0 : size_), owner_});
     }
 
     /// Targets inserted from now on are summed in the storage (see above). Call before insert.
@@ -110,15 +109,15 @@ class Accumulated {
     void reset(Storage<Dim>& storage) {
         reset(storage.size());
         storage_ = &storage;
-        for (auto& b : buffers_) b.bound = false;
     }
 
     /// Zeroes the value targets summed in the storage: call after the derivatives' initialize,
     /// before the pair loop. forRanges as for addInto.
     template <class ForRanges>
     void startSums(ForRanges&& forRanges) {
+        if (!inStorage_) return;
         for (auto& b : buffers_)
-            if (inStorage_ && b.target == OrderEnum::ZERO)
+            if (b.target == OrderEnum::ZERO)
                 std::visit(
                     [&](const auto& v) {
                         using T = typename std::decay_t<decltype(v)>::value_type;
@@ -185,16 +184,13 @@ class Accumulated {
         QuantityId id;
         OrderEnum target;
         std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;  ///< empty in storage
-        std::variant<ArrayView<Float>, ArrayView<Vector<Dim>>> view;      ///< the storage's array
-        bool bound = false;  ///< view is the array of the storage of the last reset
-        std::string owner;   ///< the derivative that made the buffer
+        std::string owner;  ///< the derivative that made the buffer
     };
     /// The storage's array of a target summed in the storage (MissingQuantity if it has none).
     template <class T>
-    ArrayView<T> bind(Buffer& b) {
+    ArrayView<T> bind(const Buffer& b) {
         if (!storage_) throw std::logic_error("Accumulated: reset(storage) before the sums");
-        if (!b.bound) b.view = target<T>(*storage_, b), b.bound = true;
-        return std::get<ArrayView<T>>(b.view);
+        return target<T>(*storage_, b);
     }
     template <class T>
     static ArrayView<T> target(Storage<Dim>& s, const Buffer& b) {

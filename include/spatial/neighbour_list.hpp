@@ -12,7 +12,9 @@
 // its first one and the gaps to the next in 16 bits (a larger gap takes three slots: 0, then its
 // high and low halves): half the memory of 32-bit indices, as neighbours are near in index once
 // the particles are ordered by cell. The cell grid they are found with is held during the build
-// only.
+// only. The positions of the build, for the displacement test, are kept in single precision
+// (half the memory; the test allows for their rounding): the lists' content never depends on
+// them.
 #pragma once
 
 #include <algorithm>
@@ -127,6 +129,12 @@ class VerletList {
     static constexpr std::size_t kChunk = 512;  // particles per task of the build and the check
     using Slot = std::uint16_t;  // a gap between candidates, or a third of a long one
     static constexpr Index kLongGaps = Index(1) << 31;  // in self_: a gap takes three slots
+    using Stored = Vec<float, Dim>;
+    static Vector toDouble(const Stored& p) {
+        Vector out;
+        for (int k = 0; k < Dim; ++k) out[k] = p[k];
+        return out;
+    }
 
     const Slot* slots(Index i) const { return parts_[i / kChunk].data() + start_[i]; }
     /// The number of slots of particle i: up to the next particle's, or to its chunk's end.
@@ -227,7 +235,7 @@ class VerletList {
             for (std::size_t c = c0; c < std::size_t(c1); ++c) {
                 bool far = false;
                 for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
-                    far |= !(normSqr(pairVector(x_[i], built_[i])) <= allowed2_);
+                    far |= !(normSqr(pairVector(x_[i], toDouble(built_[i]))) <= allowed2_);
                 moved_[c] = far;
             }
         });
@@ -239,7 +247,7 @@ class VerletList {
         // The positions of the last build are not needed while building: released first, so
         // that they and the cell grid are never held at once (the peak memory of a build).
         valid_ = false;  // until the build completes (the grid throws on a non-finite position)
-        std::vector<Vector>().swap(built_);
+        std::vector<Stored>().swap(built_);
         const std::size_t n = x_.size(), chunks = (n + kChunk - 1) / kChunk;
         parts_.resize(chunks);
         start_.resize(n);
@@ -284,13 +292,19 @@ class VerletList {
                 }
             });
         }
-        built_.assign(x_.begin(), x_.end());
-        // Half the skin, less a margin for the rounding of distances at the particles'
-        // coordinates (no margin is needed in exact arithmetic).
+        built_.resize(n);
         double extent = 0;
-        for (const Vector& p : built_)
-            for (int k = 0; k < Dim; ++k) extent = std::max(extent, std::abs(p[k]));
-        const double allowed = 0.5 * (listRadius_ - radius_) - 1e-10 * (listRadius_ + extent);
+        for (std::size_t i = 0; i < n; ++i)
+            for (int k = 0; k < Dim; ++k) {
+                built_[i][k] = float(x_[i][k]);
+                extent = std::max(extent, std::abs(x_[i][k]));
+            }
+        // Half the skin, less the rounding of the stored positions (half a unit in the last
+        // place of a float, 2^-24 of a coordinate, in each of Dim components) and a margin for
+        // the rounding of distances in double.
+        const double stored = std::sqrt(double(Dim)) * 0x1p-24 * extent;
+        const double allowed =
+            0.5 * (listRadius_ - radius_) - stored - 1e-10 * (listRadius_ + extent);
         allowed2_ = allowed > 0 ? allowed * allowed : 0;
         valid_ = true;
         ++builds_;
@@ -301,7 +315,7 @@ class VerletList {
     bool periodic_ = false, valid_ = false;
     std::size_t builds_ = 0;
     std::span<const Vector> x_;
-    std::vector<Vector> built_;             // positions at the last build
+    std::vector<Stored> built_;             // positions at the last build, in float
     std::vector<std::vector<Slot>> parts_;  // the candidates' gaps, chunk by chunk
     // Candidates of i: first_[i], then the gaps from slot start_[i] of parts_[i / kChunk] to the
     // next particle's; those after i from slot start_[i] + selfSlot(i) on, decoded from i.

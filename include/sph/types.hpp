@@ -32,9 +32,9 @@ enum class QuantityId : int {
     MATERIAL,      ///< index into the storage's material table (int)
     KIND,          ///< ParticleKind as int: fluid, wall, body
     SOUND_SPEED,   ///< local sound speed [m/s]
-    SHIFT,         ///< particle shifting displacement per unit time [m/s]
-    // 10 was the boundary particles' normal, which no term read; checkpoints hold the ids, so
-    // an id is never given another meaning.
+    // 9 was particle shifting's displacement per unit time and 10 the boundary particles'
+    // normal, which no term read; checkpoints hold the ids, so an id is never given another
+    // meaning.
     WALL_VELOCITY = 11,  ///< prescribed velocity of boundary particles
     NEIGHBOUR_COUNT,     ///< number of neighbours found in the last evaluation (int)
     OWNER,               ///< the process that owns the particle (int; -1: not yet assigned)

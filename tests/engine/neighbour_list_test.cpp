@@ -79,6 +79,19 @@ void expectOracle(const num::VerletList<Dim>& list, const std::vector<V<Dim>>& x
     EXPECT_GT(pairs, 8 * x.size()) << "a meaningful number of neighbours";
 }
 
+/// forEachNeighbourOf gives the oracle's neighbours, for a handful of particles.
+template <int Dim>
+void expectOracleOfFew(const num::VerletList<Dim>& list, const std::vector<V<Dim>>& x,
+                       double radius, const num::Domain<Dim>& d) {
+    for (std::uint32_t i = 0; i < x.size(); ++i) {
+        std::vector<Pair> found;
+        list.forEachNeighbourOf(i, [&](std::uint32_t j, const V<Dim>& dx, double) {
+            found.push_back({j, pad<Dim>(dx)});
+        });
+        EXPECT_EQ(found, oracle(x, i, radius, d)) << "particle " << i;
+    }
+}
+
 template <int Dim>
 num::Domain<Dim> unitDomain(unsigned periodicMask) {
     num::Domain<Dim> d;
@@ -162,6 +175,52 @@ TEST(VerletList, MatchesTheOracle2D) {
 }
 TEST(VerletList, MatchesTheOracle3D) {
     for (unsigned mask : {0u, 1u, 6u, 7u}) checkAgainstOracle<3>(mask);
+}
+
+/// The positions of a build are kept in float: far from the origin their rounding (2^-24 of a
+/// coordinate) takes a share of the skin, so the lists are rebuilt sooner, never missing a
+/// neighbour.
+TEST(VerletList, FloatPositionsOfTheBuildFarFromTheOrigin) {
+    const double radius = 0.06, skin = 0.25;  // half the skin: 0.0075
+    {
+        // At 1e5 a float's spacing is u = 2^-7. Two particles 6 u + 0.0076 apart in x and y
+        // (0.0770 > 0.075, the candidates' radius), each 0.0038 from a float: moved 0.0076
+        // towards each other in x and y (0.0107 each, more than half the skin), each is
+        // 0.0038 from its stored float in x and y (0.0054, less than half the skin), and they
+        // are 0.0555 < radius apart. A test on the floats alone would keep the lists and miss
+        // the pair.
+        const double u = 0x1p-7, q = 1e5, off = 0.0038;
+        num::Domain<2> d = unitDomain<2>(0);
+        d.min = V<2>::filled(q - 1), d.max = V<2>::filled(q + 1);
+        std::vector<V<2>> x = {V<2>::filled(q - off), V<2>::filled(q + 6 * u + off)};
+        num::VerletList<2> list;
+        list.configure(radius, skin, d);
+        ASSERT_TRUE(list.update(x));
+        ASSERT_TRUE(list.candidates(0) == std::vector<std::uint32_t>{0});
+        x = {V<2>::filled(q + off), V<2>::filled(q + 6 * u - off)};
+        ASSERT_LT(norm(x[1] - x[0]), radius);
+        EXPECT_TRUE(list.update(x)) << "rebuilt: the particles moved more than half the skin";
+        expectOracleOfFew(list, x, radius, d);
+    }
+    {
+        // At 1e4 the rounding is up to 6e-4 per coordinate: small moves keep the lists.
+        const double offset = 1e4;
+        num::Domain<2> d = unitDomain<2>(0);
+        d.min = V<2>::filled(offset), d.max = V<2>::filled(offset + 1);
+        std::mt19937_64 rng(5);
+        std::vector<V<2>> x = randomPositions<2>(1500, rng);
+        for (auto& p : x) p += V<2>::filled(offset);
+        num::VerletList<2> list;
+        list.configure(radius, skin, d);
+        ASSERT_TRUE(list.update(x));
+        int kept = 0;
+        for (int round = 0; round < 8; ++round) {
+            displace(x, 0.05 * skin * radius, d, rng);
+            kept += !list.update(x);
+            expectOracle(list, x, radius, d);
+        }
+        EXPECT_GT(kept, 0) << "small moves keep the lists";
+    }
 }
 
 /// The candidates' radius is capped at half a short period, which narrows the skin there.

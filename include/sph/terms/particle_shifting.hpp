@@ -33,7 +33,7 @@
 // 0.102, not near walls 0.056, along walls only 0.040, no shifting 0.051 (before the lid's mass
 // source left the continuity equation; with that fix, along walls only: 0.026); natural
 // convection, Ra = 1e4, u_max, v_max, Nu against de Vahl Davis: 6.1, 7.1, 1.7 % with shifting
-// along n, 3.2, 4.1, 0.6 % along walls only. The displacement per unit time is in SHIFT.
+// along n, 3.2, 4.1, 0.6 % along walls only.
 // Phases: the pair sums (grad C, grad rho, grad v, the wall and surface flags) are made in
 // every evaluation; particles are moved once per step, in postStep, after the integrator, with
 // the step's dt and the sums of the step's last evaluation (at the end of the step).
@@ -181,7 +181,6 @@ class ParticleShifting : public IEquationTerm<Dim> {
         auto x = s.template getValue<Vec>(QuantityId::POSITION);
         auto v = s.template getDt<Vec>(QuantityId::POSITION);
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);
-        auto shift = s.template getValue<Vec>(QuantityId::SHIFT);
         const auto c = s.template getValue<Float>(FluidId::KERNEL_SUM);
         const auto nearSurface = s.template getValue<Float>(FluidId::SURFACE_NEIGHBOURS);
         const auto wallDirection = s.template getValue<Vec>(FluidId::WALL_DIRECTION);
@@ -197,7 +196,6 @@ class ParticleShifting : public IEquationTerm<Dim> {
         const bool continuity = s.order(QuantityId::DENSITY) >= OrderEnum::FIRST;
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                shift[i] = Vec{};
                 if (!isFluid(kind[i]) || atFreeSurface(c[i], volume[i], w0) || nearSurface[i] > 0 ||
                     !(dt > 0))
                     continue;
@@ -210,7 +208,6 @@ class ParticleShifting : public IEquationTerm<Dim> {
                 x[i] += dr;
                 for (int k = 0; k < Dim; ++k) v[i] += gradV[k][i] * dr[k];
                 if (continuity) rho[i] += dot(gradRho[i], dr);
-                shift[i] = dr / dt;
             }
         });
     }
@@ -221,7 +218,6 @@ class ParticleShifting : public IEquationTerm<Dim> {
                              FluidId::WALL_DIRECTION}};
     }
     void create(Storage<Dim>& s, IMaterial&) const override {
-        s.template insert<Vec>(QuantityId::SHIFT, OrderEnum::ZERO, Vec{});
         s.template insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, 1.0);
         s.template insert<Float>(FluidId::SURFACE_NEIGHBOURS, OrderEnum::ZERO, 0.0);
         s.template insert<Vec>(FluidId::KERNEL_SUM_GRADIENT, OrderEnum::ZERO, Vec{});

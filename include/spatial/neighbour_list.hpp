@@ -9,12 +9,13 @@
 // would catch a renumbering too, as it compares positions index by index).
 // The candidates of each block of kChunk particles are one flat array of the exact size, filled
 // by one task of the build (no copy into a global array). A particle's candidates are stored as
-// its first one and the gaps to the next in 16 bits (a larger gap takes three slots: 0, then its
-// high and low halves): half the memory of 32-bit indices, as neighbours are near in index once
-// the particles are ordered by cell. The cell grid they are found with is held during the build
-// only. The positions of the build, for the displacement test, are kept in single precision
-// (half the memory; the test allows for their rounding): the lists' content never depends on
-// them.
+// its first one and the gaps to the next, each gap in bytes of 7 bits, the high ones first, every
+// byte but the last with its top bit set (a gap below 128 takes one byte, below 16384 two): once
+// the particles are ordered by cell, neighbours are near in index, so most gaps take one byte and
+// only the jumps between rows of cells two or three (about a quarter of the memory of 32-bit
+// indices). The cell grid they are found with is held during the build only. The positions of
+// the build, for the displacement test, are kept in single precision (half the memory; the test
+// allows for their rounding): the lists' content never depends on them.
 #pragma once
 
 #include <algorithm>
@@ -127,8 +128,8 @@ class VerletList {
 
   private:
     static constexpr std::size_t kChunk = 512;  // particles per task of the build and the check
-    using Slot = std::uint16_t;  // a gap between candidates, or a third of a long one
-    static constexpr Index kLongGaps = Index(1) << 31;  // in self_: a gap takes three slots
+    using Slot = std::uint8_t;                  // 7 bits of a gap, and whether more follow
+    static constexpr Index kMore = 0x80, kBits = 0x7f;  // the flag, the bits of the gap
     using Stored = Vec<float, Dim>;
     static Vector toDouble(const Stored& p) {
         Vector out;
@@ -146,18 +147,15 @@ class VerletList {
         return end - start_[i];
     }
     /// The first slot after i itself: the candidates after i are decoded from there.
-    Index selfSlot(Index i) const { return self_[i] & ~kLongGaps; }
+    Index selfSlot(Index i) const { return self_[i]; }
 
     /// Calls g(j) for each candidate decoded from the slots [b, e), which follow candidate j.
     template <class G>
     static void decode(Index j, const Slot* b, const Slot* e, G&& g) {
+        Index gap = 0;
         for (const Slot* s = b; s < e; ++s) {
-            Index gap = *s;
-            if (gap == 0) [[unlikely]] {  // a gap of 2^16 or more: its high and low halves follow
-                gap = Index(s[1]) << 16 | Index(s[2]);
-                s += 2;
-            }
-            g(j += gap);  // one call site: g is inlined once
+            gap = gap << 7 | (*s & kBits);
+            if (!(*s & kMore)) g(j += gap), gap = 0;
         }
     }
 
@@ -168,18 +166,14 @@ class VerletList {
         decode(first_[i], s, s + slotCount(i), g);
     }
 
-    /// Appends the gap from candidate `from` to `to` (to > from) to `out`; returns whether it
-    /// is a long one.
-    static bool encodeGap(Index from, Index to, std::vector<Slot>& out) {
+    /// Appends the gap from candidate `from` to `to` (to > from) to `out`, 7 bits per byte,
+    /// the high ones first.
+    static void encodeGap(Index from, Index to, std::vector<Slot>& out) {
         const Index gap = to - from;
-        if (gap <= 0xffff) {
-            out.push_back(Slot(gap));
-            return false;
-        }
-        out.push_back(0);
-        out.push_back(Slot(gap >> 16));
-        out.push_back(Slot(gap & 0xffff));
-        return true;
+        int shift = 0;
+        while (shift + 7 < 32 && gap >> (shift + 7)) shift += 7;
+        for (; shift > 0; shift -= 7) out.push_back(Slot(kMore | (gap >> shift & kBits)));
+        out.push_back(Slot(gap & kBits));
     }
 
     Vector pairVector(const Vector& xi, const Vector& xj) const {
@@ -216,11 +210,18 @@ class VerletList {
             return Index(r2 < r2max);
         };
         if (withFirst) count += put(j, count);
-        if (!(self_[i] & kLongGaps)) {
-            for (const Slot* s = b; s < e; ++s) count += put(j += *s, count);
-            return count;
+        // decode() without a branch per slot: every slot is put, at j plus the gap read so far
+        // (no further than the candidate it ends in, so a valid index), and kept only where its
+        // gap ends.
+        Index gap = 0;
+        for (const Slot* s = b; s < e; ++s) {
+            gap = gap << 7 | (*s & kBits);
+            const Index ends = Index(!(*s & kMore)), keep = Index(0) - ends;
+            const Index k = j + gap;
+            count += put(k, count) & ends;
+            j = (k & keep) | (j & ~keep);
+            gap &= ~keep;
         }
-        decode(j, b, e, [&](Index k) { count += put(k, count); });
         return count;
     }
 
@@ -274,12 +275,11 @@ class VerletList {
                         start_[i] = Index(begin);
                         first_[i] = found.j[0];  // i itself is a candidate: m >= 1
                         Index self = 0;
-                        bool longGaps = false;
                         for (Index k = 1; k < m; ++k) {
-                            longGaps |= encodeGap(found.j[k - 1], found.j[k], chunk);
+                            encodeGap(found.j[k - 1], found.j[k], chunk);
                             if (found.j[k] == Index(i)) self = Index(chunk.size() - begin);
                         }
-                        self_[i] = self | (longGaps ? kLongGaps : 0);
+                        self_[i] = self;
                     }
                     std::vector<Slot>& part = parts_[c];
                     // Kept when it is at most 1/16 too large (the counts change little between

@@ -210,17 +210,17 @@ class VerletList {
             return Index(r2 < r2max);
         };
         if (withFirst) count += put(j, count);
-        // decode() without a branch per slot: every slot is put, at j plus the gap read so far
-        // (no further than the candidate it ends in, so a valid index), and kept only where its
-        // gap ends.
-        Index gap = 0;
+        // decode() with the one-byte gaps first: in 2D a particle has two or three longer ones
+        // (the jumps between rows of cells), so the branch is seldom taken (a decoder without a
+        // branch, each byte put and kept only where its gap ends, took 5 % more time).
         for (const Slot* s = b; s < e; ++s) {
-            gap = gap << 7 | (*s & kBits);
-            const Index ends = Index(!(*s & kMore)), keep = Index(0) - ends;
-            const Index k = j + gap;
-            count += put(k, count) & ends;
-            j = (k & keep) | (j & ~keep);
-            gap &= ~keep;
+            Index gap = *s;
+            if (gap & kMore) [[unlikely]] {  // a gap of 128 or more: its lower bits follow
+                gap &= kBits;
+                do gap = gap << 7 | (*++s & kBits);
+                while (*s & kMore);
+            }
+            count += put(j += gap, count);
         }
         return count;
     }

@@ -144,7 +144,7 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
         Bytes mine(sizeof dt + name.size());
         std::memcpy(mine.data(), &dt, sizeof dt);
         std::copy(name.begin(), name.end(), mine.begin() + sizeof dt);
-        sph::TimeStepLimits all;
+        sph::TimeStepLimits all(limits.scheduler());
         for (const Bytes& b : comm_.allGather(mine)) {
             double v;
             std::memcpy(&v, b.data(), sizeof v);

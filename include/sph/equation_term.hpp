@@ -46,6 +46,9 @@ namespace num::sph {
 /// The time-step limits offered by terms; the step is their minimum.
 class TimeStepLimits {
   public:
+    /// scheduler: the threads a term's limitTimeStep may use for its reductions (reduceChunks).
+    explicit TimeStepLimits(IScheduler& scheduler) : scheduler_(&scheduler) {}
+    IScheduler& scheduler() const { return *scheduler_; }
     /// Offers dt for the named criterion (ignored unless positive and finite).
     void offer(const std::string& criterion, Float dt) {
         if (!(dt > 0) || dt == std::numeric_limits<Float>::infinity()) return;
@@ -55,6 +58,7 @@ class TimeStepLimits {
     const std::string& criterion() const { return criterion_; }
 
   private:
+    IScheduler* scheduler_;
     Float dt_ = std::numeric_limits<Float>::infinity();
     std::string criterion_ = "none";
 };

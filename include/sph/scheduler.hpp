@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sph/types.hpp"
 
@@ -22,6 +23,25 @@ class IScheduler {
     virtual void parallelFor(Size n, Size granularity,
                              const std::function<void(Size begin, Size end)>& task) = 0;
 };
+
+/// A reduction over [0, n) in chunks of `granularity` items: chunk(begin, end, partial) fills one
+/// partial per chunk (each starts as `init`; chunks may run concurrently), then
+/// combine(result, partial) folds the partials in the order of the chunks. The result is the
+/// same whatever the number of threads, bitwise, as the chunks are fixed by n and granularity.
+template <class T, class Chunk, class Combine>
+T reduceChunks(IScheduler& scheduler, Size n, Size granularity, const T& init, Chunk&& chunk,
+               Combine&& combine) {
+    if (granularity == 0) granularity = 1;
+    std::vector<T> partial((std::uint64_t(n) + granularity - 1) / granularity, init);
+    scheduler.parallelFor(Size(partial.size()), 1, [&](Size c0, Size c1) {
+        for (Size c = c0; c < c1; ++c)
+            chunk(c * granularity,
+                  Size(std::min<std::uint64_t>(n, std::uint64_t(c + 1) * granularity)), partial[c]);
+    });
+    T result = init;
+    for (const T& p : partial) combine(result, p);
+    return result;
+}
 
 /// Runs every chunk in order on the calling thread.
 class SequentialScheduler final : public IScheduler {

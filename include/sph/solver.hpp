@@ -181,22 +181,19 @@ class Solver {
 
     /// The time-step limits at the current state (after an evaluation).
     TimeStepLimits timeStepLimits(const Storage<Dim>& storage) const {
-        TimeStepLimits limits;
+        TimeStepLimits limits(scheduler_);
         if (const double fixed = settings_.get<double>("dt_fixed"); fixed > 0) {
             limits.offer("fixed", fixed);
             return limits;
         }
         limits.offer("dt_max", settings_.get<double>("dt_max"));
         const auto acc = storage.template getD2t<Vec>(QuantityId::POSITION);
-        const Size chunk = 8192;
-        std::vector<Float> chunkMax((acc.size() + chunk - 1) / chunk, 0.0);
-        scheduler_.parallelFor(Size(acc.size()), chunk, [&](Size b, Size e) {
-            Float m = 0;
-            for (Size i = b; i < e; ++i) m = std::max(m, normSqr(acc[i]));
-            chunkMax[b / chunk] = m;
-        });
-        Float a2max = 0;
-        for (Float m : chunkMax) a2max = std::max(a2max, m);
+        const Float a2max = reduceChunks(
+            scheduler_, Size(acc.size()), 8192, Float(0),
+            [&](Size b, Size e, Float& m) {
+                for (Size i = b; i < e; ++i) m = std::max(m, normSqr(acc[i]));
+            },
+            [](Float& m, Float partial) { m = std::max(m, partial); });
         if (a2max > 0)
             limits.offer("acceleration", settings_.get<double>("acceleration_factor") *
                                              std::sqrt(kernel_.h / std::sqrt(a2max)));

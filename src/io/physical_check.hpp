@@ -18,6 +18,7 @@
 #include "io/errors.hpp"
 #include "io/formatted.hpp"
 #include "parallel/communicator.hpp"
+#include "sph/scheduler.hpp"
 #include "sph/storage.hpp"
 #include "sph/types.hpp"
 
@@ -30,21 +31,34 @@ class PhysicalCheck {
 
     /// Checks the fluid particles at time t; returns a new warning (empty if none) and throws
     /// AppError(UNSTABLE) where the run is lost. With several processes, the extremes are those
-    /// of every process (each checks its particles; halo copies equal their owners).
+    /// of every process (each checks its particles; halo copies equal their owners). The
+    /// particles are scanned in chunks on the scheduler's threads; each extreme names the
+    /// first particle in storage order that reaches it, as a serial scan would.
     template <int Dim>
-    std::string check(const sph::Storage<Dim>& s, double t, const parallel::Communicator& comm) {
+    std::string check(const sph::Storage<Dim>& s, double t, const parallel::Communicator& comm,
+                      sph::IScheduler& scheduler) {
         const auto r = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
         const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
         const auto rho = s.template getValue<double>(sph::QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
-        double vmax = 0, rhoMin = rho0_, rhoMax = rho0_;
-        sph::Size fastest = s.size(), densest = s.size(), thinnest = s.size();
-        for (sph::Size i = 0; i < s.size(); ++i) {
-            if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
-            if (norm(v[i]) > vmax) vmax = norm(v[i]), fastest = i;
-            if (rho[i] < rhoMin) rhoMin = rho[i], thinnest = i;
-            if (rho[i] > rhoMax) rhoMax = rho[i], densest = i;
-        }
+        const Extremes none{0, rho0_, rho0_, s.size(), s.size(), s.size()};
+        const Extremes e = sph::reduceChunks(
+            scheduler, s.size(), 8192, none,
+            [&](sph::Size b, sph::Size end, Extremes& x) {
+                for (sph::Size i = b; i < end; ++i) {
+                    if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+                    if (norm(v[i]) > x.vmax) x.vmax = norm(v[i]), x.fastest = i;
+                    if (rho[i] < x.rhoMin) x.rhoMin = rho[i], x.thinnest = i;
+                    if (rho[i] > x.rhoMax) x.rhoMax = rho[i], x.densest = i;
+                }
+            },
+            [](Extremes& x, const Extremes& p) {
+                if (p.vmax > x.vmax) x.vmax = p.vmax, x.fastest = p.fastest;
+                if (p.rhoMin < x.rhoMin) x.rhoMin = p.rhoMin, x.thinnest = p.thinnest;
+                if (p.rhoMax > x.rhoMax) x.rhoMax = p.rhoMax, x.densest = p.densest;
+            });
+        double vmax = e.vmax, rhoMin = e.rhoMin, rhoMax = e.rhoMax;
+        const sph::Size fastest = e.fastest, densest = e.densest, thinnest = e.thinnest;
         const double localVmax = vmax, localRhoMin = rhoMin, localRhoMax = rhoMax;
         vmax = comm.maximum(vmax), rhoMin = comm.minimum(rhoMin), rhoMax = comm.maximum(rhoMax);
         // Where the extreme particle is (the processes agree on whether to ask, so all take
@@ -108,16 +122,22 @@ class PhysicalCheck {
         return warning;
     }
 
-    /// The same for a run of one process.
+    /// The same for a run of one process, on one thread.
     template <int Dim>
     std::string check(const sph::Storage<Dim>& s, double t) {
         const parallel::Communicator one;
-        return check(s, t, one);
+        sph::SequentialScheduler serial;
+        return check(s, t, one, serial);
     }
 
     const std::vector<std::string>& warnings() const { return warnings_; }
 
   private:
+    /// The fastest, thinnest and densest fluid particles.
+    struct Extremes {
+        double vmax, rhoMin, rhoMax;
+        sph::Size fastest, thinnest, densest;
+    };
     static constexpr double WARN_SPEED = 3, WARN_DENSITY = 0.2;
 
     double U_, c0_, rho0_;

@@ -59,32 +59,39 @@ std::vector<double> conservationVector(const sph::Storage<Dim>& s, const sph::Ve
     return v;
 }
 
-/// The first particle whose field is not finite, or -1: position and every written field
-/// (velocity, density, pressure, temperature and user quantities).
+/// Whether particle i's value of field f is finite (integer fields always are).
 template <int Dim>
-long firstNonFinite(const sph::Storage<Dim>& s, const OutputField& f) {
-    using Type = OutputField::Type;
-    if (f.type == Type::INT) return -1;
-    if (f.type == Type::FLOAT) {
-        const auto a = s.template getValue<double>(f.id);
-        for (sph::Size i = 0; i < a.size(); ++i)
-            if (!std::isfinite(a[i])) return long(i);
-        return -1;
+class FiniteCheck {
+  public:
+    FiniteCheck(const sph::Storage<Dim>& s, const OutputField& f) : type_(f.type) {
+        if (type_ == OutputField::Type::FLOAT) scalar_ = s.template getValue<double>(f.id);
+        if (type_ == OutputField::Type::VECTOR)
+            vector_ = f.derivative ? s.template getDt<sph::Vector<Dim>>(f.id)
+                                   : s.template getValue<sph::Vector<Dim>>(f.id);
     }
-    const auto a = f.derivative ? s.template getDt<sph::Vector<Dim>>(f.id)
-                                : s.template getValue<sph::Vector<Dim>>(f.id);
-    for (sph::Size i = 0; i < a.size(); ++i)
-        for (int k = 0; k < Dim; ++k)
-            if (!std::isfinite(a[i][k])) return long(i);
-    return -1;
-}
+    bool operator()(sph::Size i) const {
+        if (type_ == OutputField::Type::FLOAT) return std::isfinite(scalar_[i]);
+        if (type_ == OutputField::Type::INT) return true;
+        bool finite = true;
+        for (int k = 0; k < Dim; ++k) finite &= std::isfinite(vector_[i][k]);
+        return finite;
+    }
+
+  private:
+    OutputField::Type type_;
+    sph::ArrayView<const double> scalar_;
+    sph::ArrayView<const sph::Vector<Dim>> vector_;
+};
 
 /// Stops the run (AppError UNSTABLE) on a non-finite value in any written field, a density that
 /// is not positive, fluid beyond a wall, or a collapsed time step, naming the time, the step,
-/// the field and the likely cause.
+/// the field and the likely cause. The first problem is reported: the fields in the order
+/// position, then the written fields, then density and walls, each at its first particle in
+/// storage order. One scan over the particles, in chunks on the scheduler's threads.
 template <int Dim>
-void checkHealth(const sph::Storage<Dim>& s, const Scene<Dim>& scene, double t, std::uint64_t step,
-                 double dt, const std::string& criterion, const FieldNames& names = {}) {
+void checkHealth(sph::IScheduler& scheduler, const sph::Storage<Dim>& s, const Scene<Dim>& scene,
+                 double t, std::uint64_t step, double dt, const std::string& criterion,
+                 const FieldNames& names = {}) {
     using sph::QuantityId;
     const std::string where =
         formatted("the run went unstable at t = %.6g s (step %llu, dt = %.3g s limited by %s): ", t,
@@ -101,28 +108,50 @@ void checkHealth(const sph::Storage<Dim>& s, const Scene<Dim>& scene, double t, 
     };
     std::vector<OutputField> fields = outputFields(s, names);
     fields.insert(fields.begin(), {"position", QuantityId::POSITION, OutputField::Type::VECTOR});
-    for (const OutputField& f : fields)
-        if (const long i = firstNonFinite(s, f); i >= 0)
-            throw AppError(ExitCode::UNSTABLE,
-                           where + particle(i) + " has a non-finite " + f.name + cause);
+    std::vector<FiniteCheck<Dim>> finite;
+    for (const OutputField& f : fields) finite.emplace_back(s, f);
     const auto x = s.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
     const auto rho = s.template getValue<double>(QuantityId::DENSITY);
-    for (sph::Size i = 0; i < s.size(); ++i) {
-        if (!(rho[i] > 0))
-            throw AppError(ExitCode::UNSTABLE,
-                           where + particle(long(i)) + " has a density <= 0" + cause);
-        if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+    // The wall a fluid particle left the domain through, as (axis, side), or (-1, 0).
+    const auto leftThrough = [&](sph::Size i) -> std::pair<int, int> {
+        if (kind[i] != int(sph::ParticleKind::FLUID)) return {-1, 0};
         for (int k = 0; k < Dim; ++k)
             for (int hi = 0; hi < 2; ++hi) {
                 if (scene.sides[k][hi].type != SideType::WALL) continue;
                 const double beyond =
                     hi ? x[i][k] - scene.domainMax[k] : scene.domainMin[k] - x[i][k];
-                if (beyond > scene.spacing)
-                    throw AppError(
-                        ExitCode::UNSTABLE,
-                        where + std::string("a fluid particle left the domain through the ") +
-                            sideName(k, hi) + " wall" + cause);
+                if (beyond > scene.spacing) return {k, hi};
             }
+        return {-1, 0};
+    };
+    // The first particle of each check (every field's finiteness, then density and walls), -1
+    // where none fails.
+    const std::size_t checks = finite.size() + 1;
+    const std::vector<long> first = sph::reduceChunks(
+        scheduler, s.size(), 8192, std::vector<long>(checks, -1),
+        [&](sph::Size b, sph::Size e, std::vector<long>& firstOf) {
+            for (sph::Size i = b; i < e; ++i) {
+                for (std::size_t c = 0; c < finite.size(); ++c)
+                    if (firstOf[c] < 0 && !finite[c](i)) firstOf[c] = long(i);
+                if (firstOf.back() < 0 && (!(rho[i] > 0) || leftThrough(i).first >= 0))
+                    firstOf.back() = long(i);
+            }
+        },
+        [](std::vector<long>& firstOf, const std::vector<long>& partial) {
+            for (std::size_t c = 0; c < firstOf.size(); ++c)
+                if (firstOf[c] < 0) firstOf[c] = partial[c];
+        });
+    for (std::size_t c = 0; c < finite.size(); ++c)
+        if (const long i = first[c]; i >= 0)
+            throw AppError(ExitCode::UNSTABLE,
+                           where + particle(i) + " has a non-finite " + fields[c].name + cause);
+    if (const long i = first.back(); i >= 0) {
+        if (!(rho[i] > 0))
+            throw AppError(ExitCode::UNSTABLE, where + particle(i) + " has a density <= 0" + cause);
+        const auto [k, hi] = leftThrough(sph::Size(i));
+        throw AppError(ExitCode::UNSTABLE,
+                       where + std::string("a fluid particle left the domain through the ") +
+                           sideName(k, hi) + " wall" + cause);
     }
     if (criterion != "end time" && dt < 1e-9 * scene.endTime)
         throw AppError(ExitCode::UNSTABLE, where + std::string("the time step collapsed") + cause);

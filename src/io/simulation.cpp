@@ -268,10 +268,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             const std::int64_t particles = comm.sum(owned);
             particleSteps += double(particles);
             agreed(comm, [&] {
-                checkHealth(storage, scene, run.time(), run.steps(), dt, run.limitingCriterion(),
-                            fieldNames);
+                checkHealth(*scheduler, storage, scene, run.time(), run.steps(), dt,
+                            run.limitingCriterion(), fieldNames);
             });
-            if (const std::string w = physical.check(storage, run.time(), comm);
+            if (const std::string w = physical.check(storage, run.time(), comm, *scheduler);
                 !w.empty() && !opt.quiet && root) {
                 progress.clearLine();
                 std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());

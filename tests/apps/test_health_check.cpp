@@ -14,19 +14,29 @@ using num::sph::QuantityId;
 
 namespace {
 
+SceneDocument tinyScene(const std::string& spacing) {
+    SceneDocument d = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    if (!spacing.empty()) d.set("particles.spacing=" + spacing);
+    return d;
+}
+
 struct Tiny {
     Scene<2> scene;
     SceneSetup<2> setup;
     num::sph::Storage<2> storage;
-    Tiny()
-        : scene(readScene<2>(
-              SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json"))),
+    /// spacing: the scene's unless given (a finer one gives more particles).
+    explicit Tiny(const std::string& spacing = "")
+        : scene(readScene<2>(tinyScene(spacing))),
           setup(makeSceneSetup(scene, 1)),
           storage(makeInitialStorage(scene, setup)) {}
-    /// The message of checkHealth, or "" when it passes.
+    /// The message of checkHealth on one thread, or on the given scheduler; "" when it passes.
     std::string check() const {
+        num::sph::SequentialScheduler serial;
+        return check(serial);
+    }
+    std::string check(num::sph::IScheduler& scheduler) const {
         try {
-            checkHealth(storage, scene, 0.01, 7, 1e-4, "courant");
+            checkHealth(scheduler, storage, scene, 0.01, 7, 1e-4, "courant");
         } catch (const AppError& e) {
             EXPECT_EQ(e.code(), ExitCode::UNSTABLE);
             return e.what();
@@ -56,6 +66,29 @@ TEST(HealthCheck, EveryWrittenFieldIsChecked) {
     Tiny t;
     t.storage.getDt<num::sph::Vector<2>>(QuantityId::POSITION)[5][1] = kNan;
     EXPECT_NE(t.check().find("non-finite velocity"), std::string::npos);
+}
+
+// With several problems, the report names the first check's first particle in storage order,
+// whatever the threads: the scan runs in chunks of 8192 particles, here more than two.
+TEST(HealthCheck, TheFirstProblemIsNamedWhateverTheThreads) {
+    Tiny t("0.0008");
+    ASSERT_GT(t.storage.size(), 3 * 8192u);
+    const auto id = t.storage.getValue<int>(QuantityId::PARTICLE_ID);
+    auto temperature = t.storage.getValue<double>(QuantityId::TEMPERATURE);
+    auto rho = t.storage.getValue<double>(QuantityId::DENSITY);
+    temperature[20000] = temperature[9000] = kNan;
+    rho[100] = -1;  // density is checked after every field's finiteness
+    const std::string named =
+        "particle " + std::to_string(id[9000]) + " has a non-finite temperature";
+    num::sph::ThreadPoolScheduler pool(2);
+    num::sph::ParallelScheduler omp(3);
+    for (const std::string& m : {t.check(), t.check(pool), t.check(omp)})
+        EXPECT_NE(m.find(named), std::string::npos) << m;
+    temperature[20000] = temperature[9000] = 20;
+    rho[17000] = 0;
+    const std::string density = "particle " + std::to_string(id[100]) + " has a density <= 0";
+    for (const std::string& m : {t.check(), t.check(pool), t.check(omp)})
+        EXPECT_NE(m.find(density), std::string::npos) << m;
 }
 
 // The check of unphysical but finite states (physical_check.hpp): warnings once per kind,

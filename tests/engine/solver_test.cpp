@@ -156,6 +156,39 @@ TEST(Scheduler, ThreadPoolRunsEveryChunkOnceAndPassesErrorsOn) {
                  std::runtime_error);
 }
 
+// The chunked reduction the time-step limits and the apps' checks use: on any scheduler the
+// result is the serial scan's, ties included (the first particle of the largest value wins, as
+// a scan with a strict comparison keeps it), and an empty range gives the initial value.
+TEST(Scheduler, ReduceChunksGivesTheSerialScanOnEveryBackend) {
+    struct Largest {
+        double value;
+        Size at;
+    };
+    const Size n = 100003;
+    std::vector<double> x(n);
+    for (Size i = 0; i < n; ++i) x[i] = double((i * 7919u) % 1009u);  // 1008 is hit 99 times
+    Largest serial{-1, n};
+    for (Size i = 0; i < n; ++i)
+        if (x[i] > serial.value) serial = {x[i], i};
+    const auto chunk = [&](Size b, Size e, Largest& l) {
+        for (Size i = b; i < e; ++i)
+            if (x[i] > l.value) l = {x[i], i};
+    };
+    const auto combine = [](Largest& l, const Largest& p) {
+        if (p.value > l.value) l = p;
+    };
+    SequentialScheduler sequential;
+    ParallelScheduler omp(3);
+    ThreadPoolScheduler pool(3);
+    for (IScheduler* s : std::initializer_list<IScheduler*>{&sequential, &omp, &pool})
+        for (Size grain : {1u, 97u, 8192u, 200000u}) {
+            const Largest l = reduceChunks(*s, n, grain, Largest{-1, n}, chunk, combine);
+            EXPECT_EQ(l.value, serial.value);
+            EXPECT_EQ(l.at, serial.at) << "grain " << grain;
+        }
+    EXPECT_EQ(reduceChunks(pool, 0, 8, Largest{-1, n}, chunk, combine).at, n);
+}
+
 /// A term that gathers over neighbours before the pair loop, as the wall condition does: it
 /// records the neighbour lists beginEvaluation gave it and, in initialize, every particle's
 /// neighbours as the shared gather finds them, in the order it finds them.

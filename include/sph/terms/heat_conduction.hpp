@@ -175,10 +175,18 @@ class HeatConduction : public IEquationTerm<Dim> {
         const auto [mat, cond] = materialAndCondition(s, zeros);
         // alpha = k / (rho c) is largest at a material's smallest density: one division per
         // material (rounding is monotonic, so this is bitwise the largest alpha of a particle).
-        std::vector<Float> rhoMin(table.size(), std::numeric_limits<Float>::infinity());
-        for (Size i = 0; i < s.size(); ++i)
-            if (cond[i] != int(ThermalCondition::ADIABATIC))
-                rhoMin[mat[i]] = std::min(rhoMin[mat[i]], rho[i]);
+        const std::vector<Float> rhoMin = reduceChunks(
+            limits.scheduler(), s.size(), 8192,
+            std::vector<Float>(table.size(), std::numeric_limits<Float>::infinity()),
+            [&](Size b, Size e, std::vector<Float>& least) {
+                for (Size i = b; i < e; ++i)
+                    if (cond[i] != int(ThermalCondition::ADIABATIC))
+                        least[mat[i]] = std::min(least[mat[i]], rho[i]);
+            },
+            [](std::vector<Float>& least, const std::vector<Float>& partial) {
+                for (std::size_t m = 0; m < least.size(); ++m)
+                    least[m] = std::min(least[m], partial[m]);
+            });
         Float alphaMax = 0;
         for (std::size_t m = 0; m < table.size(); ++m)
             if (rhoMin[m] < std::numeric_limits<Float>::infinity())

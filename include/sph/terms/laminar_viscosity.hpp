@@ -115,9 +115,13 @@ class LaminarViscosity : public IEquationTerm<Dim> {
     }
     void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,
                        TimeStepLimits& limits) const override {
-        Float numax = 0;
-        for (Float nu : s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY))
-            numax = std::max(numax, nu);
+        const auto nu = s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY);
+        const Float numax = reduceChunks(
+            limits.scheduler(), s.size(), 8192, Float(0),
+            [&](Size b, Size e, Float& m) {
+                for (Size i = b; i < e; ++i) m = std::max(m, nu[i]);
+            },
+            [](Float& m, Float partial) { m = std::max(m, partial); });
         const Float h = settings.get<double>("smoothing_length");
         if (numax > 0)
             limits.offer("viscous", settings.get<double>("viscous_factor") * h * h / numax);

@@ -33,7 +33,8 @@
 // Quantities in the storage (types.hpp and terms/fluid_quantities.hpp):
 //   POSITION (2nd order: x, v, a), MASS, DENSITY (1st order with continuity), PRESSURE,
 //   TEMPERATURE, MATERIAL (int, index into storage.materials()), KIND (int ParticleKind:
-//   FLUID, WALL, BODY), WALL_VELOCITY (boundary particles: prescribed surface velocity),
+//   FLUID, WALL, BODY), WALL_VELOCITY (boundary particles: prescribed surface velocity; only
+//   where a boundary slides, absent means every boundary is held),
 //   FluidId::PAIR_VELOCITY, FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY,
 //   heat_ids::BOUNDARY_TEMPERATURE.
 // Boundary particles (walls and bodies) never move; fluid particles never cross them.
@@ -47,6 +48,7 @@
 //   containment (no particle inside a wall or body).
 #pragma once
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <numbers>
@@ -195,7 +197,10 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
     s.template insert<Float>(QuantityId::TEMPERATURE, OrderEnum::ZERO, std::move(temperature));
     s.template insert<int>(QuantityId::MATERIAL, OrderEnum::ZERO, std::move(material));
     s.template insert<int>(QuantityId::KIND, OrderEnum::ZERO, std::move(kind));
-    s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, wallVelocity);
+    // Only where a wall or body slides (a lid): held ones need no array (16 B a particle in 2D).
+    if (std::any_of(wallVelocity.begin(), wallVelocity.end(),
+                    [](const Vec& w) { return normSqr(w) != 0; }))
+        s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, wallVelocity);
     // Until the wall condition extrapolates it, a boundary particle shows its wall's velocity.
     s.template insert<Vec>(FluidId::PAIR_VELOCITY, OrderEnum::ZERO, std::move(wallVelocity));
     s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, std::move(slip));

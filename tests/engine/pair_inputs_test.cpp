@@ -3,6 +3,7 @@
 // without PairInputs is refused with a message that names it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -13,9 +14,9 @@ namespace {
 
 using namespace num::sph;
 
-/// Water filling a walled box with a moving lid, so that wall particles show a velocity
-/// of their own (2 v_wall - v~) and the volumes of wall particles come from the wall
-/// condition's densities.
+/// Water filling a walled box with a moving lid (unless lidSpeed is 0), so that wall particles
+/// show a velocity of their own (2 v_wall - v~) and the volumes of wall particles come from the
+/// wall condition's densities.
 struct LidTank {
     static constexpr double dx = 0.05;
     FluidModel<2> model;
@@ -23,14 +24,14 @@ struct LidTank {
     RunSettings settings;
     Storage<2> storage;
 
-    LidTank() {
+    explicit LidTank(double lidSpeed = 1.0) {
         model.maxVelocity = 1;
         model.viscosity = 1e-2;
         model.bodyForce = [](Float) { return Vector<2>{{0, -9.81}}; };
         geometry.spacing = dx;
         geometry.domain.max = {{1.0, 1.0}};
         for (int k = 0; k < 2; ++k) geometry.walls[k][0] = geometry.walls[k][1] = WallSide<2>{};
-        geometry.walls[1][1].velocity = Vector<2>{{1.0, 0.0}};
+        geometry.walls[1][1].velocity = Vector<2>{{lidSpeed, 0.0}};
         geometry.fluid.push_back(
             FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, 1.0}})));
         settings.set("smoothing_length", 1.5 * dx);
@@ -92,6 +93,30 @@ TEST(PairInputs, VolumesAndPairVelocitiesAreThoseOfTheWallCondition) {
     }
     EXPECT_GT(walls, 0u);
     EXPECT_GT(lid, 0u) << "no wall particle shows the lid's velocity";
+}
+
+// With every wall held, the storage keeps no wall velocities (WALL_VELOCITY is absent) and the
+// wall particles' pair velocities are -v~, bitwise 2 * 0 - v~ as with an array of zeros.
+TEST(PairInputs, HeldWallsNeedNoWallVelocities) {
+    LidTank held(0.0), sliding;
+    EXPECT_FALSE(held.storage.has(QuantityId::WALL_VELOCITY));
+    EXPECT_TRUE(sliding.storage.has(QuantityId::WALL_VELOCITY));
+    LidTank zeros(0.0);  // the same tank with an explicit array of zero wall velocities
+    zeros.storage.insert<Vector<2>>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vector<2>{});
+    SequentialScheduler scheduler;
+    for (LidTank* t : {&held, &zeros}) {
+        Solver<2> solver(scheduler, t->settings, makeFluidEquations(t->model, t->geometry),
+                         t->geometry.domain);
+        solver.evaluate(t->storage, 0.0);
+    }
+    const auto a = held.storage.getValue<Vector<2>>(FluidId::PAIR_VELOCITY);
+    const auto b = zeros.storage.getValue<Vector<2>>(FluidId::PAIR_VELOCITY);
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof a[0]), 0);
+    const auto kind = held.storage.getValue<int>(QuantityId::KIND);
+    Size moving = 0;
+    for (Size i = 0; i < a.size(); ++i) moving += !isFluid(kind[i]) && normSqr(a[i]) > 0;
+    EXPECT_GT(moving, 0u) << "no wall particle mirrors the fluid's velocity";
 }
 
 TEST(PairInputs, TermsThatReadThemWithoutItAreRefusedByName) {

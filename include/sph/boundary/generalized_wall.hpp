@@ -16,7 +16,8 @@
 // instead puts the effective wall about 0.3 dx outside the box: steady conduction between two
 // walls 25 dx apart then carried 2.3 % too little heat.
 // g is the body force at time t; boundaries here are held fixed or slide tangentially at a
-// prescribed surface velocity v_wall (WALL_VELOCITY), so a_w = 0. The pressure gradient then
+// prescribed surface velocity v_wall (WALL_VELOCITY; without that quantity every v_wall is
+// zero), so a_w = 0. The pressure gradient then
 // treats boundary particles as ordinary neighbours, which keeps fluid out of walls.
 #pragma once
 
@@ -44,7 +45,9 @@ class GeneralizedWall : public IEquationTerm<Dim> {
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float t) override {
         const auto v = s.template getDt<Vec>(QuantityId::POSITION);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
-        const auto wallVelocity = s.template getValue<Vec>(QuantityId::WALL_VELOCITY);
+        const bool sliding = s.has(QuantityId::WALL_VELOCITY);
+        const auto wallVelocity =
+            sliding ? s.template getValue<Vec>(QuantityId::WALL_VELOCITY) : ArrayView<const Vec>();
         const auto slip = s.template getValue<int>(FluidId::WALL_SLIP);
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         auto p = s.template getValue<Float>(QuantityId::PRESSURE);
@@ -71,13 +74,13 @@ class GeneralizedWall : public IEquationTerm<Dim> {
             });
             // Pressure, density and the pair velocity are written for boundary particles only,
             // which the gather never reads, so the pass is free of races.
+            const Vec wall = sliding ? wallVelocity[w] : Vec{};
             if (sumW > 0) {
                 p[w] = (sumP + dot(g, sumRhoR)) / sumW;
-                vb[w] = slip[w] == int(WallSlip::NO_SLIP) ? wallVelocity[w] * 2.0 - sumV / sumW
-                                                          : wallVelocity[w];
+                vb[w] = slip[w] == int(WallSlip::NO_SLIP) ? wall * 2.0 - sumV / sumW : wall;
             } else {
                 p[w] = eos_.backgroundPressure;
-                vb[w] = wallVelocity[w];
+                vb[w] = wall;
             }
             rho[w] = eos_.density(p[w]);
             if (heat)
@@ -94,7 +97,6 @@ class GeneralizedWall : public IEquationTerm<Dim> {
                              heat_ids::BOUNDARY_TEMPERATURE}};
     }
     void create(Storage<Dim>& s, IMaterial&) const override {
-        s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<Vec>(FluidId::PAIR_VELOCITY, OrderEnum::ZERO, Vec{});
         s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, int(WallSlip::NO_SLIP));
         if (s.has(QuantityId::TEMPERATURE)) {  // each particle starts showing its own temperature

@@ -17,8 +17,8 @@
 // walls 25 dx apart then carried 2.3 % too little heat.
 // g is the body force at time t; boundaries here are held fixed or slide tangentially at a
 // prescribed surface velocity v_wall (WALL_VELOCITY; without that quantity every v_wall is
-// zero), so a_w = 0. The pressure gradient then
-// treats boundary particles as ordinary neighbours, which keeps fluid out of walls.
+// zero), so a_w = 0. The pressure gradient then treats boundary particles as ordinary
+// neighbours, which keeps fluid out of walls.
 #pragma once
 
 #include <functional>

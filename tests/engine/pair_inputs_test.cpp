@@ -3,7 +3,6 @@
 // without PairInputs is refused with a message that names it.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstring>
 #include <string>
 

@@ -43,6 +43,18 @@ T reduceChunks(IScheduler& scheduler, Size n, Size granularity, const T& init, C
     return result;
 }
 
+/// The largest of 0 and value(i) over [0, n), by reduceChunks; a NaN value is passed over, as
+/// std::max passes it over in a serial scan.
+template <class Value>
+Float largestOf(IScheduler& scheduler, Size n, Value&& value) {
+    return reduceChunks(
+        scheduler, n, 8192, Float(0),
+        [&](Size b, Size e, Float& m) {
+            for (Size i = b; i < e; ++i) m = std::max(m, Float(value(i)));
+        },
+        [](Float& m, Float partial) { m = std::max(m, partial); });
+}
+
 /// Runs every chunk in order on the calling thread.
 class SequentialScheduler final : public IScheduler {
   public:

@@ -188,12 +188,8 @@ class Solver {
         }
         limits.offer("dt_max", settings_.get<double>("dt_max"));
         const auto acc = storage.template getD2t<Vec>(QuantityId::POSITION);
-        const Float a2max = reduceChunks(
-            scheduler_, Size(acc.size()), 8192, Float(0),
-            [&](Size b, Size e, Float& m) {
-                for (Size i = b; i < e; ++i) m = std::max(m, normSqr(acc[i]));
-            },
-            [](Float& m, Float partial) { m = std::max(m, partial); });
+        const Float a2max =
+            largestOf(scheduler_, Size(acc.size()), [&](Size i) { return normSqr(acc[i]); });
         if (a2max > 0)
             limits.offer("acceleration", settings_.get<double>("acceleration_factor") *
                                              std::sqrt(kernel_.h / std::sqrt(a2max)));

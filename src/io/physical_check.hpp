@@ -47,7 +47,8 @@ class PhysicalCheck {
             [&](sph::Size b, sph::Size end, Extremes& x) {
                 for (sph::Size i = b; i < end; ++i) {
                     if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
-                    if (norm(v[i]) > x.vmax) x.vmax = norm(v[i]), x.fastest = i;
+                    if (const double speed = norm(v[i]); speed > x.vmax)
+                        x.vmax = speed, x.fastest = i;
                     if (rho[i] < x.rhoMin) x.rhoMin = rho[i], x.thinnest = i;
                     if (rho[i] > x.rhoMax) x.rhoMax = rho[i], x.densest = i;
                 }

@@ -187,6 +187,9 @@ TEST(Scheduler, ReduceChunksGivesTheSerialScanOnEveryBackend) {
             EXPECT_EQ(l.at, serial.at) << "grain " << grain;
         }
     EXPECT_EQ(reduceChunks(pool, 0, 8, Largest{-1, n}, chunk, combine).at, n);
+    // largestOf, the usual reduction: a NaN is passed over, as a serial std::max scan does.
+    x[70000] = std::nan("");
+    EXPECT_EQ(largestOf(pool, n, [&](Size i) { return x[i]; }), serial.value);
 }
 
 /// A term that gathers over neighbours before the pair loop, as the wall condition does: it

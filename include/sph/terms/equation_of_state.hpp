@@ -84,13 +84,9 @@ class EquationOfStateTerm : public IEquationTerm<Dim> {
                        TimeStepLimits& limits) const override {
         const auto v = s.template getDt<Vector<Dim>>(QuantityId::POSITION);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
-        const Float v2 = reduceChunks(
-            limits.scheduler(), s.size(), 8192, Float(0),
-            [&](Size b, Size e, Float& m) {
-                for (Size i = b; i < e; ++i)
-                    if (isFluid(kind[i])) m = std::max(m, normSqr(v[i]));
-            },
-            [](Float& m, Float partial) { m = std::max(m, partial); });
+        const Float v2 = largestOf(limits.scheduler(), s.size(), [&](Size i) {
+            return isFluid(kind[i]) ? normSqr(v[i]) : Float(0);
+        });
         const Float h = settings.get<double>("smoothing_length");
         limits.offer("courant", settings.get<double>("cfl") * h / (eos_.c0 + std::sqrt(v2)));
     }

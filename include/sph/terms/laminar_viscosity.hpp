@@ -116,12 +116,7 @@ class LaminarViscosity : public IEquationTerm<Dim> {
     void limitTimeStep(const Storage<Dim>& s, const RunSettings& settings,
                        TimeStepLimits& limits) const override {
         const auto nu = s.template getValue<Float>(FluidId::KINEMATIC_VISCOSITY);
-        const Float numax = reduceChunks(
-            limits.scheduler(), s.size(), 8192, Float(0),
-            [&](Size b, Size e, Float& m) {
-                for (Size i = b; i < e; ++i) m = std::max(m, nu[i]);
-            },
-            [](Float& m, Float partial) { m = std::max(m, partial); });
+        const Float numax = largestOf(limits.scheduler(), s.size(), [&](Size i) { return nu[i]; });
         const Float h = settings.get<double>("smoothing_length");
         if (numax > 0)
             limits.offer("viscous", settings.get<double>("viscous_factor") * h * h / numax);

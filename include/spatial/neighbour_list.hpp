@@ -7,6 +7,13 @@
 // Rebuilt when a particle moved too far, when the number of particles changed, or after
 // invalidate() (the caller reordered, added or removed particles; the displacement test alone
 // would catch a renumbering too, as it compares positions index by index).
+// The skin of each build may adapt to the flow (configure's maxSkin): a thin skin costs a
+// rebuild as soon as the fastest particle has crossed half of it, a thick one more candidates
+// to filter at every query. Each displacement test also measures the fastest particle's mean
+// displacement per update since the build, u; the next build takes the skin with which the
+// lists would last kListUpdates updates at that speed, s = 2 u kListUpdates / radius, within
+// [skin, maxSkin] (the default 2D scene's fast second half: a build every 1.9 updates with a
+// skin of 0.1, every 5 with the skin adapting up to 0.3, 0.91x the time: docs/performance.md).
 // The candidates of each block of kChunk particles are one flat array of the exact size, filled
 // by one task of the build (no copy into a global array). A particle's candidates are stored as
 // its first one and the gaps to the next, each gap in bytes of 7 bits, the high ones first, every
@@ -43,19 +50,23 @@ class VerletList {
         }
     };
 
-    /// The support radius, the skin (a fraction of the radius; 0 rebuilds at every update) and
-    /// the domain. On a periodic axis the candidates' radius is capped at half the period (the
-    /// cell grid's limit), which narrows the skin there.
-    void configure(double radius, double skin, const Domain<Dim>& domain) {
+    /// How many updates the lists of an adaptive skin are meant to last (the file comment).
+    static constexpr double kListUpdates = 8;
+
+    /// The support radius, the skin (a fraction of the radius; 0 rebuilds at every update), the
+    /// largest skin it may grow to with the flow's speed (at most the skin: a fixed skin) and the
+    /// domain. On a periodic axis the candidates' radius is capped at half the period (the cell
+    /// grid's limit), which narrows the skin there.
+    void configure(double radius, double skin, const Domain<Dim>& domain, double maxSkin = 0) {
         if (!(radius > 0)) throw std::invalid_argument("neighbour list: radius must be positive");
         if (!(skin >= 0)) throw std::invalid_argument("neighbour list: skin must be >= 0");
+        if (!(maxSkin >= 0)) throw std::invalid_argument("neighbour list: maxSkin must be >= 0");
         radius_ = radius;
         domain_ = domain;
-        listRadius_ = radius * (1 + skin);
-        for (int k = 0; k < Dim; ++k)
-            if (domain.periodic[k])
-                listRadius_ = std::max(radius, std::min(listRadius_, domain.length(k) / 2));
+        minSkin_ = skin, maxSkin_ = std::max(skin, maxSkin);
+        speed_ = 0;
         periodic_ = domain.anyPeriodic();
+        setSkin(skin);
         valid_ = false;
     }
 
@@ -70,6 +81,7 @@ class VerletList {
     bool update(std::span<const Vector> x, ParallelFor&& parallelFor = {}) {
         x_ = x;
         if (valid_ && x.size() == built_.size() && !movedTooFar(parallelFor)) return false;
+        setSkin(std::clamp(2 * speed_ * kListUpdates / radius_, minSkin_, maxSkin_));
         build(parallelFor);
         return true;
     }
@@ -122,6 +134,7 @@ class VerletList {
         return out;
     }
     double radius() const { return radius_; }
+    /// The candidates' radius of the last build (the support radius and its skin).
     double listRadius() const { return listRadius_; }
     /// How often the lists were built.
     std::size_t builds() const { return builds_; }
@@ -221,21 +234,40 @@ class VerletList {
         return count;
     }
 
+    /// The candidates' radius for a skin (capped on periodic axes).
+    void setSkin(double skin) {
+        listRadius_ = radius_ * (1 + skin);
+        for (int k = 0; k < Dim; ++k)
+            if (domain_.periodic[k])
+                listRadius_ = std::max(radius_, std::min(listRadius_, domain_.length(k) / 2));
+    }
+
     /// Whether a particle moved more than half the skin since the build (a non-finite position
-    /// counts as moved, so that the rebuild reports it).
+    /// counts as moved, so that the rebuild reports it). With an adaptive skin it also updates
+    /// speed_, the largest displacement over the updates since the build.
     template <class ParallelFor>
     bool movedTooFar(ParallelFor& parallelFor) {
-        if (!(allowed2_ > 0)) return true;
+        ++updates_;
+        const bool adaptive = maxSkin_ > minSkin_;
+        if (!(allowed2_ > 0) && !adaptive) return true;
         const std::size_t n = x_.size(), chunks = (n + kChunk - 1) / kChunk;
         moved_.assign(chunks, 0);
+        moved2_.assign(chunks, 0.0);
         parallelFor(chunks, [&](auto c0, auto c1) {
             for (std::size_t c = c0; c < std::size_t(c1); ++c) {
                 bool far = false;
-                for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i)
-                    far |= !(normSqr(pairVector(x_[i], toDouble(built_[i]))) <= allowed2_);
-                moved_[c] = far;
+                double largest = 0;  // of the finite displacements
+                for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+                    const double d2 = normSqr(pairVector(x_[i], toDouble(built_[i])));
+                    far |= !(d2 <= allowed2_);
+                    largest = d2 > largest ? d2 : largest;
+                }
+                moved_[c] = far, moved2_[c] = largest;
             }
         });
+        const double largest =
+            moved2_.empty() ? 0.0 : *std::max_element(moved2_.begin(), moved2_.end());
+        speed_ = std::sqrt(largest) / double(updates_);
         return std::find(moved_.begin(), moved_.end(), char(1)) != moved_.end();
     }
 
@@ -303,10 +335,14 @@ class VerletList {
             0.5 * (listRadius_ - radius_) - stored - 1e-10 * (listRadius_ + extent);
         allowed2_ = allowed > 0 ? allowed * allowed : 0;
         valid_ = true;
+        updates_ = 0;
         ++builds_;
     }
 
     double radius_ = 0, listRadius_ = 0, allowed2_ = 0;
+    double minSkin_ = 0, maxSkin_ = 0;  // the adaptive skin's range (equal: a fixed skin)
+    double speed_ = 0;                  // the fastest displacement per update (adaptive skin)
+    std::size_t updates_ = 0;           // updates since the last build
     Domain<Dim> domain_{};
     bool periodic_ = false, valid_ = false;
     std::size_t builds_ = 0;
@@ -316,7 +352,8 @@ class VerletList {
     // Candidates of i: first_[i], then the gaps from slot start_[i] of parts_[i / kChunk] to the
     // next particle's; those after i from slot start_[i] + selfSlot(i) on, decoded from i.
     std::vector<Index> start_, first_, self_;
-    std::vector<char> moved_;
+    std::vector<char> moved_;     // per chunk of the displacement test: whether one moved too far
+    std::vector<double> moved2_;  // and its largest squared displacement
 };
 
 }  // namespace num

@@ -181,12 +181,21 @@ class RunSettings : public ParameterSet {
             {"dt_fixed", 0.0, "fixed time step [s]; 0 selects the adaptive step", 0.0, inf},
             {"reorder_every", std::int64_t(25), "steps between reorderings by cell (0: never)", 0,
              1e9},
-            // 0.1: fluid_sim on the 2D dam break ran 10 % faster than with the cell grid at 0.1
-            // and 0.2 alike, slower at 0.3; in 3D the candidates grow as (1 + skin)^3.
+            // 0.1: fluid_sim on the 2D dam break's first steps (slow flow) ran 10 % faster than
+            // with the cell grid at 0.1 and 0.2 alike, slower at 0.3; in 3D the candidates grow as
+            // (1 + skin)^3. In fast flow the lists then lasted 1.9 steps: the skin grows up to
+            // neighbour_skin_max (0.3: the default 2D scene's fast half 0.91x the time, 0.5 no
+            // faster than 0.3, and the lists' memory grows as (1 + skin)^Dim).
             {"neighbour_skin", 0.1,
              "skin of the neighbour lists, a fraction of the support radius: they are rebuilt when "
-             "a particle moved more than half of it (0: at every evaluation); results do not "
-             "depend on it",
+             "a particle moved more than half of it (0: at every evaluation); the smallest skin "
+             "when it adapts to the flow (neighbour_skin_max); results do not depend on it",
+             0.0, 10.0},
+            {"neighbour_skin_max", 0.3,
+             "largest skin of the neighbour lists: each build takes the skin with which they "
+             "would last 8 evaluations at the speed the fastest particle moved since the last "
+             "build, within [neighbour_skin, neighbour_skin_max] (at most neighbour_skin: a fixed "
+             "skin); results do not depend on it",
              0.0, 10.0},
         };
     }

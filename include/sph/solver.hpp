@@ -6,8 +6,9 @@
 //
 // One neighbour structure for every pass: Verlet lists (spatial/neighbour_list.hpp), updated
 // after the periodic wrap and before the terms' initialize, rebuilt only when a particle has
-// moved more than half the skin (setting "neighbour_skin") since the last build or when the
-// particles were renumbered (invalidateNeighbours). They serve the gathers terms run before the
+// moved more than half the skin since the last build (the skin adapts to the flow's speed
+// between the settings "neighbour_skin" and "neighbour_skin_max") or when the particles were
+// renumbered (invalidateNeighbours). They serve the gathers terms run before the
 // pair loop (the wall condition, density by summation: EvaluationContext, NeighbourGather) and
 // the pair loop itself. Neighbours are filtered by the current distance and come in increasing
 // index, so results do not depend on the skin or on when the lists were built.
@@ -116,7 +117,7 @@ class Solver {
             pass.needsW = pass.holders[0].needsKernelValues();
         }
         neighbours_.configure(kernel_.supportRadius(), settings_.get<double>("neighbour_skin"),
-                              domain_);
+                              domain_, settings_.get<double>("neighbour_skin_max"));
     }
 
     /// Creates the quantities every term needs (once, before the first evaluation).

@@ -1,7 +1,8 @@
 // The fingerprint of a run (internal to numerics_io): everything that shapes its particle set and
 // its equations, as "key = value" lines. A checkpoint stores it; a restart whose fingerprint
 // differs is refused, naming what differs. What may change on restart is left out: the end time,
-// the output settings, the threads and the backend.
+// the output settings, the threads and the backend, and the engine settings that change no
+// result (the neighbour lists' skin), also where a checkpoint of an older version lists them.
 #pragma once
 
 #include <map>
@@ -17,6 +18,13 @@
 namespace num::io {
 
 namespace detail {
+
+/// Engine settings no result depends on (sph/settings.hpp): a restart may change them.
+inline bool changesNoResult(const std::string& fingerprintKey) {
+    for (const char* key : {"threads", "neighbour_skin", "neighbour_skin_max"})
+        if (fingerprintKey == std::string("engine setting ") + key) return true;
+    return false;
+}
 
 inline bool mayChangeOnRestart(const std::string& path) {
     for (const char* p : {"time.end", "output", "name", "description"})
@@ -58,7 +66,7 @@ std::string runFingerprint(const SceneDocument& doc, const SceneSetup<Dim>& setu
     std::map<std::string, std::string> lines;
     detail::flattenScene(doc.json(), "", lines);
     for (const auto& [key, spec] : setup.settings.specs()) {
-        if (key == "threads") continue;
+        if (detail::changesNoResult("engine setting " + key)) continue;
         // Every setting is one of bool, integer, number, string: print whichever it holds.
         std::string value;
         std::visit(
@@ -102,6 +110,7 @@ inline void checkFingerprint(const std::string& stored, const std::string& curre
                     there + " in the checkpoint";
     };
     for (const auto& [key, value] : b) {
+        if (detail::changesNoResult(key)) continue;
         const auto it = a.find(key);
         if (it == a.end())
             report(key, value, "absent");
@@ -109,7 +118,7 @@ inline void checkFingerprint(const std::string& stored, const std::string& curre
             report(key, value, it->second);
     }
     for (const auto& [key, value] : a)
-        if (!b.count(key)) report(key, "absent", value);
+        if (!b.count(key) && !detail::changesNoResult(key)) report(key, "absent", value);
     if (count == 0) return;
     if (count > 3) diff += "; and " + std::to_string(count - 3) + " more";
     // The stored quantities also change with the version of numerics (or of a plugin).

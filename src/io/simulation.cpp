@@ -342,6 +342,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         });
     });
     summary["processes"] = comm.size();
+    summary["neighbour_list_builds"] = solver.neighbours().builds();
     summary["decomposition"] = {
         {"load_imbalance", decomposition.imbalance()},
         {"repartitions", decomposition.repartitions()},

@@ -1,6 +1,7 @@
 // A restart whose fingerprint differs from its checkpoint's is refused (exit code 8), naming
 // what differs; when the particles' quantities differ, as with a checkpoint of another version
-// of numerics, the message says so and what to do.
+// of numerics, the message says so and what to do. Settings no result depends on (the
+// neighbour lists' skin) may differ or be absent.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -45,4 +46,14 @@ TEST(Fingerprint, OtherQuantitiesNameAnotherVersion) {
     EXPECT_NE(message.find("engine quantities (id:order)"), std::string::npos) << message;
     EXPECT_NE(message.find("another version of numerics"), std::string::npos) << message;
     EXPECT_NE(message.find("run the scene from the start"), std::string::npos) << message;
+}
+
+TEST(Fingerprint, TheNeighbourSkinMayDifferOrBeAbsent) {
+    const std::string older = kQuantities + kScene + "engine setting neighbour_skin = 0.1\n";
+    const std::string current = kQuantities + kScene + "engine setting neighbour_skin = 0.2\n" +
+                                "engine setting neighbour_skin_max = 0.3\n";
+    EXPECT_EQ(refusal(older, current), "");
+    EXPECT_EQ(refusal(older, kQuantities + kScene), "");
+    EXPECT_NE(refusal(older + "engine setting cfl = 0.2\n", kQuantities + kScene), "")
+        << "a setting results depend on is still compared";
 }

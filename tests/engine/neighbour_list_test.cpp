@@ -1,8 +1,8 @@
 // The Verlet neighbour lists against a brute-force oracle (every particle's neighbours, in
 // increasing index, bit for bit), in 2D and 3D with periodic axes, after displacements below
 // half the skin (lists kept) and above (rebuilt), after a renumbering, with candidates far apart
-// in index; and a short fluid run that is bitwise the same for any skin and any number of
-// threads.
+// in index, with a skin that adapts to the fastest particle; and a short fluid run that is
+// bitwise the same for any skin (fixed or adapting) and any number of threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -223,6 +223,65 @@ TEST(VerletList, FloatPositionsOfTheBuildFarFromTheOrigin) {
     }
 }
 
+/// An adaptive skin: each build takes the skin with which the lists would last kListUpdates
+/// updates at the fastest particle's speed since the build before, within its range, and the
+/// lists still give the oracle's neighbours.
+template <int Dim>
+void checkAdaptiveSkin() {
+    SCOPED_TRACE(::testing::Message() << Dim << "D");
+    const num::Domain<Dim> d = unitDomain<Dim>(0);
+    const double radius = 0.1, minSkin = 0.1, maxSkin = 0.5;
+    const double updates = num::VerletList<Dim>::kListUpdates;
+    std::mt19937_64 rng(23);
+    std::vector<V<Dim>> x = randomPositions<Dim>(Dim == 2 ? 1500 : 2000, rng);
+    const std::size_t fast = x.size() / 3;
+    x[fast] = V<Dim>::filled(0.5);  // it moves by 0.05 in x below
+    num::VerletList<Dim> list;
+    list.configure(radius, minSkin, d, maxSkin);
+    ASSERT_TRUE(list.update(x));
+    EXPECT_DOUBLE_EQ(list.listRadius(), radius * (1 + minSkin)) << "no speed known: the least";
+
+    // One particle at u = 0.002 per update, the rest at rest: half the skin (0.005, less the
+    // margin for the build's float positions) is crossed at the third update, which rebuilds
+    // with the skin for that speed: 2 u updates / radius = 0.32.
+    const double u = 0.002;
+    V<Dim> step{};
+    step[0] = u;
+    const V<Dim> start = x[fast];
+    for (int k = 1; k <= 3; ++k) {
+        x[fast] = start + step * double(k);
+        EXPECT_EQ(list.update(x), k == 3) << "update " << k;
+        expectOracle(list, x, radius, d);
+    }
+    // The displacement is measured from the build's float positions (2^-24 of a coordinate
+    // off): the skin to 1e-5 of the radius.
+    const double expected = radius * (1 + 2 * u * updates / radius);
+    EXPECT_NEAR(list.listRadius(), expected, 1e-6) << "the skin for the speed";
+
+    // Faster than the largest skin allows: rebuilt at once, with the largest.
+    x[fast] = x[fast] + step * 20.0;
+    EXPECT_TRUE(list.update(x));
+    EXPECT_DOUBLE_EQ(list.listRadius(), radius * (1 + maxSkin));
+    expectOracle(list, x, radius, d);
+
+    // At rest, the next build (a renumbering) takes the least skin again.
+    EXPECT_FALSE(list.update(x));
+    list.invalidate();
+    EXPECT_TRUE(list.update(x));
+    EXPECT_DOUBLE_EQ(list.listRadius(), radius * (1 + minSkin));
+    expectOracle(list, x, radius, d);
+
+    // A range of one value is a fixed skin, whatever the speed.
+    list.configure(radius, minSkin, d, minSkin / 2);
+    ASSERT_TRUE(list.update(x));
+    x[fast] = x[fast] + step * 20.0;
+    EXPECT_TRUE(list.update(x));
+    EXPECT_DOUBLE_EQ(list.listRadius(), radius * (1 + minSkin));
+}
+
+TEST(VerletList, AdaptiveSkinFollowsTheFastestParticle2D) { checkAdaptiveSkin<2>(); }
+TEST(VerletList, AdaptiveSkinFollowsTheFastestParticle3D) { checkAdaptiveSkin<3>(); }
+
 /// The candidates' radius is capped at half a short period, which narrows the skin there.
 TEST(VerletList, ShortPeriodNarrowsTheSkin) {
     num::Domain<2> d = unitDomain<2>(1);
@@ -330,10 +389,10 @@ bool sameState(const Storage<2>& a, const Storage<2>& b) {
 }
 
 /// A dam break in a walled box (walls, free surface, shifting, reordering every 25 steps), run
-/// for `steps` steps with the given skin, threads and evaluation mode. Returns the final state
-/// and the number of list builds.
+/// for `steps` steps with the given skin (adapting up to maxSkin where larger), threads and
+/// evaluation mode. Returns the final state and the number of list builds.
 std::pair<Storage<2>, std::size_t> damBreak(double skin, Size threads, const std::string& mode,
-                                            int steps) {
+                                            int steps, double maxSkin = 0) {
     const double dx = 0.025;
     FluidModel<2> model;
     model.maxVelocity = 2;
@@ -345,6 +404,7 @@ std::pair<Storage<2>, std::size_t> damBreak(double skin, Size threads, const std
     RunSettings settings;
     settings.set("smoothing_length", 1.3 * dx)
         .set("neighbour_skin", skin)
+        .set("neighbour_skin_max", maxSkin)
         .set("threads", threads)
         .set("evaluation", mode)
         .set("reorder_every", 25);
@@ -370,6 +430,9 @@ TEST(VerletList, FluidRunIsBitwiseTheSameForAnySkinAndThreads) {
         EXPECT_TRUE(sameState(reference, thin)) << "skin 0.05 against skin 0";
         EXPECT_TRUE(sameState(reference, damBreak(0.2, 2, mode, steps).first)) << "skin 0.2";
         EXPECT_TRUE(sameState(reference, damBreak(0.5, 2, mode, steps).first)) << "skin 0.5";
+        const auto [adaptive, grown] = damBreak(0, 2, mode, steps, 0.5);
+        EXPECT_TRUE(sameState(reference, adaptive)) << "skin adapting from 0 to 0.5";
+        EXPECT_LT(grown, std::size_t(steps / 2)) << "the skin grew from 0: lists kept a while";
     }
 }
 

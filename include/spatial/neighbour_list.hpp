@@ -127,6 +127,15 @@ class VerletList {
         return out.count = collectRange(i, false, i, s + selfSlot(i), s + n, out, 0);
     }
 
+    /// Calls g(j) for every candidate of particle i at the last build (within listRadius(), i
+    /// included, increasing j): while the lists are kept, every neighbour of i is among them.
+    template <class G>
+    void forEachCandidate(Index i, G&& g) const {
+        const Slot* s = slots(i);
+        g(first_[i]);
+        decode(first_[i], s, s + slotCount(i), g);
+    }
+
     /// Candidates of particle i at the last build (within listRadius(), i included, increasing).
     std::vector<Index> candidates(Index i) const {
         std::vector<Index> out;
@@ -177,13 +186,6 @@ class VerletList {
             }
             g(j += gap);  // one call site: g is inlined once
         }
-    }
-
-    template <class G>
-    void forEachCandidate(Index i, G&& g) const {
-        const Slot* s = slots(i);
-        g(first_[i]);
-        decode(first_[i], s, s + slotCount(i), g);
     }
 
     /// Appends the gap from candidate `from` to `to` (to > from) to `out`, 7 bits per byte,

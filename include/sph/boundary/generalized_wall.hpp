@@ -19,6 +19,11 @@
 // prescribed surface velocity v_wall (WALL_VELOCITY; without that quantity every v_wall is
 // zero), so a_w = 0. The pressure gradient then treats boundary particles as ordinary
 // neighbours, which keeps fluid out of walls.
+// A boundary particle with no fluid particle among its neighbour-list candidates has no fluid
+// neighbour while the lists are kept (sum_f W_wf = 0): it takes the values of an empty sum,
+// background pressure and v_w = v_wall, without a gather. Most of a tank's wall particles are
+// such (the shipped 3D dam break: 13,116 of its 16,491 particles are walls); which are is found
+// again at each build of the lists.
 #pragma once
 
 #include <functional>
@@ -60,8 +65,8 @@ class GeneralizedWall : public IEquationTerm<Dim> {
         auto Tb =
             heat ? s.template getValue<Float>(heat_ids::BOUNDARY_TEMPERATURE) : ArrayView<Float>();
         const Vec g = bodyForce_ ? bodyForce_(t) : Vec{};
-        boundary_ = particlesWhere(s, [](int k) { return !isFluid(k); });
-        gather_->forEach(scheduler, boundary_, [&](Size w, auto&& visit) {
+        findBoundaryNearFluid(scheduler, s);
+        gather_->forEach(scheduler, nearFluid_, [&](Size w, auto&& visit) {
             Float sumW = 0, sumP = 0, sumT = 0;
             Vec sumRhoR{}, sumV{};
             visit([&](Size f, const Vec& dx, Float, Float W) {
@@ -88,6 +93,16 @@ class GeneralizedWall : public IEquationTerm<Dim> {
                             ? 2 * T[w] - sumT / sumW
                             : T[w];
         });
+        // No fluid neighbour: the values of sumW = 0 above.
+        scheduler.parallelFor(Size(farFromFluid_.size()), 1024, [&](Size b, Size e) {
+            for (Size k = b; k < e; ++k) {
+                const Size w = farFromFluid_[k];
+                p[w] = eos_.backgroundPressure;
+                vb[w] = sliding ? wallVelocity[w] : Vec{};
+                rho[w] = eos_.density(p[w]);
+                if (heat) Tb[w] = T[w];
+            }
+        });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
 
@@ -107,10 +122,37 @@ class GeneralizedWall : public IEquationTerm<Dim> {
     }
 
   private:
+    /// Splits the boundary particles by whether a fluid particle is among their candidates, once
+    /// per build of the lists (a reordering or a new particle count rebuilds them).
+    void findBoundaryNearFluid(IScheduler& scheduler, const Storage<Dim>& s) {
+        const VerletList<Dim>& lists = gather_->lists();
+        const ListBuild build{&lists, lists.builds(), s.size()};
+        if (build == sortedFor_) return;
+        sortedFor_ = build;
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const std::vector<Size> boundary = particlesWhere(s, [](int k) { return !isFluid(k); });
+        std::vector<char> near(boundary.size(), 0);
+        scheduler.parallelFor(Size(boundary.size()), 256, [&](Size b, Size e) {
+            for (Size k = b; k < e; ++k)
+                lists.forEachCandidate(boundary[k], [&](Size j) { near[k] |= isFluid(kind[j]); });
+        });
+        nearFluid_.clear(), farFromFluid_.clear();
+        for (std::size_t k = 0; k < boundary.size(); ++k)
+            (near[k] ? nearFluid_ : farFromFluid_).push_back(boundary[k]);
+    }
+
+    struct ListBuild {
+        const VerletList<Dim>* lists = nullptr;
+        std::size_t builds = 0;
+        Size particles = 0;
+        bool operator==(const ListBuild&) const = default;
+    };
+
     std::shared_ptr<const NeighbourGather<Dim>> gather_;
     EquationOfState eos_;
     std::function<Vec(Float)> bodyForce_;
-    std::vector<Size> boundary_;
+    ListBuild sortedFor_;                         // the build the split below was made for
+    std::vector<Size> nearFluid_, farFromFluid_;  // boundary particles with(out) fluid candidates
 };
 
 }  // namespace num::sph

@@ -31,14 +31,20 @@ class NeighbourGather {
     /// kernel's support radius); valid until the evaluation ends.
     void use(const VerletList<Dim>& neighbours) { neighbours_ = &neighbours; }
 
-    /// For every i in `targets`, in parallel: f(i, visit), where visit(g) calls
-    /// g(j, dx = x_i - x_j, r, W(r)) for every neighbour j, i itself included, in increasing j.
-    template <class F>
-    void forEach(IScheduler& scheduler, std::span<const Size> targets, F&& f) const {
+    /// The lists of the current evaluation.
+    const VerletList<Dim>& lists() const {
         if (!neighbours_)
             throw std::logic_error(
                 "NeighbourGather: no neighbour lists (NeighbourRefresh binds the solver's lists "
                 "at the start of each evaluation)");
+        return *neighbours_;
+    }
+
+    /// For every i in `targets`, in parallel: f(i, visit), where visit(g) calls
+    /// g(j, dx = x_i - x_j, r, W(r)) for every neighbour j, i itself included, in increasing j.
+    template <class F>
+    void forEach(IScheduler& scheduler, std::span<const Size> targets, F&& f) const {
+        const VerletList<Dim>& neighbours = lists();
         withKernel<Dim>(kernel_->type, [&](auto k) {
             using Kernel = decltype(k);
             const Float h = kernel_->h;
@@ -46,7 +52,7 @@ class NeighbourGather {
                 for (Size t = b; t < e; ++t) {
                     const Size i = targets[t];
                     auto visit = [&](auto&& g) {
-                        neighbours_->forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
+                        neighbours.forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
                             const Float r = std::sqrt(r2);
                             g(j, dx, r, Kernel::W(r, h));
                         });

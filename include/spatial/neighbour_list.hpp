@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -153,6 +154,7 @@ class VerletList {
     using Slot = std::uint8_t;                  // 7 bits of a gap, and whether more follow
     static constexpr Index kMore = 0x80, kBits = 0x7f;  // the flag, the bits of the gap
     using Stored = Vec<float, Dim>;
+    static constexpr double kInfinity = std::numeric_limits<double>::infinity();
     static Vector toDouble(const Stored& p) {
         Vector out;
         for (int k = 0; k < Dim; ++k) out[k] = p[k];
@@ -253,24 +255,21 @@ class VerletList {
         const bool adaptive = maxSkin_ > minSkin_;
         if (!(allowed2_ > 0) && !adaptive) return true;
         const std::size_t n = x_.size(), chunks = (n + kChunk - 1) / kChunk;
-        moved_.assign(chunks, 0);
         moved2_.assign(chunks, 0.0);
         parallelFor(chunks, [&](auto c0, auto c1) {
             for (std::size_t c = c0; c < std::size_t(c1); ++c) {
-                bool far = false;
-                double largest = 0;  // of the finite displacements
+                double largest = 0;
                 for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
                     const double d2 = normSqr(pairVector(x_[i], toDouble(built_[i])));
-                    far |= !(d2 <= allowed2_);
-                    largest = d2 > largest ? d2 : largest;
+                    largest = std::max(largest, std::isnan(d2) ? kInfinity : d2);
                 }
-                moved_[c] = far, moved2_[c] = largest;
+                moved2_[c] = largest;
             }
         });
         const double largest =
             moved2_.empty() ? 0.0 : *std::max_element(moved2_.begin(), moved2_.end());
         speed_ = std::sqrt(largest) / double(updates_);
-        return std::find(moved_.begin(), moved_.end(), char(1)) != moved_.end();
+        return !(largest <= allowed2_);
     }
 
     template <class ParallelFor>
@@ -354,8 +353,7 @@ class VerletList {
     // Candidates of i: first_[i], then the gaps from slot start_[i] of parts_[i / kChunk] to the
     // next particle's; those after i from slot start_[i] + selfSlot(i) on, decoded from i.
     std::vector<Index> start_, first_, self_;
-    std::vector<char> moved_;     // per chunk of the displacement test: whether one moved too far
-    std::vector<double> moved2_;  // and its largest squared displacement
+    std::vector<double> moved2_;  // per chunk of the displacement test: its largest, squared
 };
 
 }  // namespace num

@@ -66,6 +66,14 @@ class GeneralizedWall : public IEquationTerm<Dim> {
             heat ? s.template getValue<Float>(heat_ids::BOUNDARY_TEMPERATURE) : ArrayView<Float>();
         const Vec g = bodyForce_ ? bodyForce_(t) : Vec{};
         findBoundaryNearFluid(scheduler, s);
+        // Pressure, density and the pair velocity are written for boundary particles only,
+        // which the gather never reads, so the passes are free of races.
+        const auto emptySum = [&](Size w) {  // no fluid neighbour: sum_f W_wf = 0
+            p[w] = eos_.backgroundPressure;
+            vb[w] = sliding ? wallVelocity[w] : Vec{};
+            rho[w] = eos_.density(p[w]);
+            if (heat) Tb[w] = T[w];
+        };
         gather_->forEach(scheduler, nearFluid_, [&](Size w, auto&& visit) {
             Float sumW = 0, sumP = 0, sumT = 0;
             Vec sumRhoR{}, sumV{};
@@ -77,31 +85,17 @@ class GeneralizedWall : public IEquationTerm<Dim> {
                 sumV += v[f] * W;
                 if (heat) sumT += T[f] * W;
             });
-            // Pressure, density and the pair velocity are written for boundary particles only,
-            // which the gather never reads, so the pass is free of races.
+            if (!(sumW > 0)) return emptySum(w);
             const Vec wall = sliding ? wallVelocity[w] : Vec{};
-            if (sumW > 0) {
-                p[w] = (sumP + dot(g, sumRhoR)) / sumW;
-                vb[w] = slip[w] == int(WallSlip::NO_SLIP) ? wall * 2.0 - sumV / sumW : wall;
-            } else {
-                p[w] = eos_.backgroundPressure;
-                vb[w] = wall;
-            }
+            p[w] = (sumP + dot(g, sumRhoR)) / sumW;
+            vb[w] = slip[w] == int(WallSlip::NO_SLIP) ? wall * 2.0 - sumV / sumW : wall;
             rho[w] = eos_.density(p[w]);
             if (heat)
-                Tb[w] = cond[w] == int(ThermalCondition::FIXED_TEMPERATURE) && sumW > 0
-                            ? 2 * T[w] - sumT / sumW
-                            : T[w];
+                Tb[w] = cond[w] == int(ThermalCondition::FIXED_TEMPERATURE) ? 2 * T[w] - sumT / sumW
+                                                                            : T[w];
         });
-        // No fluid neighbour: the values of sumW = 0 above.
         scheduler.parallelFor(Size(farFromFluid_.size()), 1024, [&](Size b, Size e) {
-            for (Size k = b; k < e; ++k) {
-                const Size w = farFromFluid_[k];
-                p[w] = eos_.backgroundPressure;
-                vb[w] = sliding ? wallVelocity[w] : Vec{};
-                rho[w] = eos_.density(p[w]);
-                if (heat) Tb[w] = T[w];
-            }
+            for (Size k = b; k < e; ++k) emptySum(farFromFluid_[k]);
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}

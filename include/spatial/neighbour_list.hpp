@@ -200,6 +200,34 @@ class VerletList {
         out.push_back(Slot(gap & kBits));
     }
 
+    /// Sorts a[0, n) made of ascending runs, as the cell grid returns the candidates (cell by
+    /// cell, each in increasing index; 9 cells in 2D, 125 in 3D), by merging neighbouring runs
+    /// pairwise: log2(runs) passes over the candidates. std::sort took a third of a build (its
+    /// insertion sort moves each element past the interleaved runs one slot at a time).
+    static void sortRuns(Index* a, Index n, std::vector<Index>& runs, std::vector<Index>& scratch) {
+        runs.clear();
+        runs.push_back(0);
+        for (Index k = 1; k < n; ++k)
+            if (a[k] < a[k - 1]) runs.push_back(k);
+        runs.push_back(n);  // runs[r] is where run r starts; the last entry is the end
+        if (runs.size() <= 2) return;
+        if (scratch.size() < n) scratch.resize(2 * std::size_t(n));
+        Index *from = a, *to = scratch.data();
+        while (runs.size() > 2) {
+            std::size_t merged = 0;
+            for (std::size_t r = 0; r + 1 < runs.size(); r += 2) {
+                const Index begin = runs[r], middle = runs[r + 1];
+                const Index end = r + 2 < runs.size() ? runs[r + 2] : middle;
+                std::merge(from + begin, from + middle, from + middle, from + end, to + begin);
+                runs[merged++] = begin;
+            }
+            runs[merged++] = n;
+            runs.resize(merged);
+            std::swap(from, to);
+        }
+        if (from != a) std::copy(from, from + n, a);
+    }
+
     Vector pairVector(const Vector& xi, const Vector& xj) const {
         Vector dx;
         for (int k = 0; k < Dim; ++k) dx[k] = xi[k] - xj[k];
@@ -291,6 +319,7 @@ class VerletList {
                 // The grid's branch-free search (a branch per candidate would be mispredicted
                 // often).
                 typename CellGrid<Dim>::Neighbours found;
+                std::vector<Index> runs, scratch;  // sortRuns' bounds and its second buffer
                 // One chunk's slots, then copied into its array: sized exactly, not by the
                 // doubling of a growing vector.
                 std::vector<Slot> chunk;
@@ -299,7 +328,7 @@ class VerletList {
                     for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
                         const Index m = grid.collect(
                             Index(i), [](Index) { return true; }, found);
-                        std::sort(found.j.begin(), found.j.begin() + m);
+                        sortRuns(found.j.data(), m, runs, scratch);
                         const std::size_t begin = chunk.size();
                         start_[i] = Index(begin);
                         first_[i] = found.j[0];  // i itself is a candidate: m >= 1

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -200,10 +201,39 @@ class VerletList {
         out.push_back(Slot(gap & kBits));
     }
 
+    /// Buffers of sortCandidates, one set per task of the build.
+    struct SortBuffers {
+        std::vector<std::uint64_t> bits;  // one bit per index of the candidates' range
+        std::vector<Index> runs, merged;  // sortRuns' run bounds and its second buffer
+    };
+    /// A particle's candidates are sorted through a bitmap where their index range is at most
+    /// this many indices per candidate (the bitmap then has at most one word per candidate).
+    static constexpr std::size_t kBitmapSpan = 64;
+
+    /// Sorts the candidates a[0, n) (distinct indices) into increasing order. Once the
+    /// particles are ordered by cell, a particle's candidates lie within a few rows of cells in
+    /// index: where their range is at most kBitmapSpan indices per candidate they are marked in a
+    /// bitmap of that range and read back in order (at most four operations per candidate);
+    /// otherwise (particles added since the last reordering come last, far away in index)
+    /// sortRuns merges them.
+    static void sortCandidates(Index* a, Index n, SortBuffers& buffers) {
+        Index lo = a[0], hi = a[0];
+        for (Index k = 1; k < n; ++k) lo = std::min(lo, a[k]), hi = std::max(hi, a[k]);
+        const std::size_t span = std::size_t(hi - lo) + 1;
+        if (span > kBitmapSpan * n) return sortRuns(a, n, buffers.runs, buffers.merged);
+        std::vector<std::uint64_t>& bits = buffers.bits;
+        bits.assign((span + 63) / 64, 0);
+        for (Index k = 0; k < n; ++k)
+            bits[(a[k] - lo) >> 6] |= std::uint64_t(1) << ((a[k] - lo) & 63);
+        Index out = 0;
+        for (std::size_t w = 0; w < bits.size(); ++w)
+            for (std::uint64_t word = bits[w]; word != 0; word &= word - 1)
+                a[out++] = lo + Index(64 * w + std::size_t(std::countr_zero(word)));
+    }
+
     /// Sorts a[0, n) made of ascending runs, as the cell grid returns the candidates (cell by
     /// cell, each in increasing index; 9 cells in 2D, 125 in 3D), by merging neighbouring runs
-    /// pairwise: log2(runs) passes over the candidates. std::sort took a third of a build (its
-    /// insertion sort moves each element past the interleaved runs one slot at a time).
+    /// pairwise: log2(runs) passes over the candidates.
     static void sortRuns(Index* a, Index n, std::vector<Index>& runs, std::vector<Index>& scratch) {
         runs.clear();
         runs.push_back(0);
@@ -319,7 +349,7 @@ class VerletList {
                 // The grid's branch-free search (a branch per candidate would be mispredicted
                 // often).
                 typename CellGrid<Dim>::Neighbours found;
-                std::vector<Index> runs, scratch;  // sortRuns' bounds and its second buffer
+                SortBuffers sortBuffers;
                 // One chunk's slots, then copied into its array: sized exactly, not by the
                 // doubling of a growing vector.
                 std::vector<Slot> chunk;
@@ -328,7 +358,7 @@ class VerletList {
                     for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
                         const Index m = grid.collect(
                             Index(i), [](Index) { return true; }, found);
-                        sortRuns(found.j.data(), m, runs, scratch);
+                        sortCandidates(found.j.data(), m, sortBuffers);
                         const std::size_t begin = chunk.size();
                         start_[i] = Index(begin);
                         first_[i] = found.j[0];  // i itself is a candidate: m >= 1

@@ -202,6 +202,46 @@ TEST(VerletList, MatchesTheOracle3D) {
     for (unsigned mask : {0u, 1u, 6u, 7u}) checkAgainstOracle<3>(mask);
 }
 
+/// A build sorts each particle's candidates through a bitmap of their index range where that
+/// range is short (particles numbered by cell, as a reordering leaves them) and by merging the
+/// cell grid's runs where it is long (numbered at random; particles appended after a reordering,
+/// as emitters add them): both give every particle's candidates in strictly increasing index.
+template <int Dim>
+void checkCandidatesForAnyNumbering() {
+    SCOPED_TRACE(::testing::Message() << Dim << "D");
+    const num::Domain<Dim> d = unitDomain<Dim>(0);
+    const double radius = Dim == 2 ? 0.03 : 0.1;
+    std::mt19937_64 rng(29);
+    std::vector<V<Dim>> x = randomPositions<Dim>(6000, rng);
+    // Numbered by cells of the radius, x fastest: a particle's candidates span a few rows.
+    const auto cellKey = [&](const V<Dim>& p) {
+        long key = 0;
+        for (int k = Dim - 1; k >= 0; --k) key = key * 1000 + long(p[k] / radius);
+        return key;
+    };
+    std::sort(x.begin(), x.end(),
+              [&](const V<Dim>& a, const V<Dim>& b) { return cellKey(a) < cellKey(b); });
+    num::VerletList<Dim> list;
+    list.configure(radius, 0.25, d);
+    ASSERT_TRUE(list.update(x));
+    expectCandidates(list, x, d);
+    // 60 particles moved to the end, as if added since the reordering.
+    std::vector<V<Dim>> appended(x.begin() + 60, x.end());
+    appended.insert(appended.end(), x.begin(), x.begin() + 60);
+    ASSERT_TRUE(list.update(appended));
+    expectCandidates(list, appended, d);
+    expectOracleOfFew(list, appended, radius, d);
+    // Numbered at random: ranges of about the particle count, each of tens of candidates.
+    std::shuffle(x.begin(), x.end(), rng);
+    ASSERT_TRUE(list.update(x));
+    expectCandidates(list, x, d);
+}
+
+TEST(VerletList, CandidatesAreSortedForAnyNumbering) {
+    checkCandidatesForAnyNumbering<2>();
+    checkCandidatesForAnyNumbering<3>();
+}
+
 /// The positions of a build are kept in float: far from the origin their rounding (2^-24 of a
 /// coordinate) takes a share of the skin, so the lists are rebuilt sooner, never missing a
 /// neighbour.

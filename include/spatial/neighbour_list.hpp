@@ -93,9 +93,18 @@ class VerletList {
     /// for bit.
     template <class F>
     void forEachNeighbourOf(Index i, F&& f) const {
+        forEachNeighbourOf(
+            i, [](Index) { return true; }, std::forward<F>(f));
+    }
+
+    /// forEachNeighbourOf over the candidates j for which keep(j) holds only (checked before
+    /// their distance is computed).
+    template <class Keep, class F>
+    void forEachNeighbourOf(Index i, Keep&& keep, F&& f) const {
         const double r2max = radius_ * radius_;
         const Vector xi = x_[i];
         forEachCandidate(i, [&](Index j) {
+            if (!keep(j)) return;
             const Vector dx = pairVector(xi, x_[j]);
             const double r2 = normSqr(dx);
             if (r2 < r2max) f(j, dx, r2);

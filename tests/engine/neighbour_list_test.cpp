@@ -87,6 +87,15 @@ void expectOracle(const num::VerletList<Dim>& list, const std::vector<V<Dim>>& x
             found.push_back({j, pad<Dim>(dx)});
         });
         ASSERT_EQ(found, expected) << "particle " << i;
+        std::vector<Pair> even, expectedEven;  // with a predicate on j: the others are skipped
+        list.forEachNeighbourOf(
+            i, [](std::uint32_t j) { return j % 2 == 0; },
+            [&](std::uint32_t j, const V<Dim>& dx, double) {
+                even.push_back({j, pad<Dim>(dx)});
+            });
+        for (const Pair& p : expected)
+            if (p.j % 2 == 0) expectedEven.push_back(p);
+        ASSERT_EQ(even, expectedEven) << "particle " << i;
         for (std::uint32_t k = 0, n = list.collect(i, flat); k < n; ++k)
             others.push_back({flat.j[k], pad<Dim>(flat.dx[k])});
         for (std::uint32_t k = 0, n = list.collectAfter(i, flat); k < n; ++k)

@@ -74,11 +74,11 @@ class GeneralizedWall : public IEquationTerm<Dim> {
             rho[w] = eos_.density(p[w]);
             if (heat) Tb[w] = T[w];
         };
-        gather_->forEach(scheduler, nearFluid_, [&](Size w, auto&& visit) {
+        const auto fluid = [&](Size j) { return isFluid(kind[j]); };
+        gather_->forEachWhere(scheduler, nearFluid_, fluid, [&](Size w, auto&& visit) {
             Float sumW = 0, sumP = 0, sumT = 0;
             Vec sumRhoR{}, sumV{};
             visit([&](Size f, const Vec& dx, Float, Float W) {
-                if (!isFluid(kind[f])) return;
                 sumW += W;
                 sumP += p[f] * W;
                 sumRhoR += dx * (rho[f] * W);

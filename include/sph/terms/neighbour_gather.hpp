@@ -44,6 +44,15 @@ class NeighbourGather {
     /// g(j, dx = x_i - x_j, r, W(r)) for every neighbour j, i itself included, in increasing j.
     template <class F>
     void forEach(IScheduler& scheduler, std::span<const Size> targets, F&& f) const {
+        forEachWhere(
+            scheduler, targets, [](Size) { return true; }, std::forward<F>(f));
+    }
+
+    /// forEach over the neighbours j for which keep(j) holds only: the others' distance and
+    /// kernel value are never computed.
+    template <class Keep, class F>
+    void forEachWhere(IScheduler& scheduler, std::span<const Size> targets, Keep&& keep,
+                      F&& f) const {
         const VerletList<Dim>& neighbours = lists();
         withKernel<Dim>(kernel_->type, [&](auto k) {
             using Kernel = decltype(k);
@@ -52,10 +61,11 @@ class NeighbourGather {
                 for (Size t = b; t < e; ++t) {
                     const Size i = targets[t];
                     auto visit = [&](auto&& g) {
-                        neighbours.forEachNeighbourOf(i, [&](Size j, const Vec& dx, Float r2) {
-                            const Float r = std::sqrt(r2);
-                            g(j, dx, r, Kernel::W(r, h));
-                        });
+                        neighbours.forEachNeighbourOf(i, keep,
+                                                      [&](Size j, const Vec& dx, Float r2) {
+                                                          const Float r = std::sqrt(r2);
+                                                          g(j, dx, r, Kernel::W(r, h));
+                                                      });
                     };
                     f(i, visit);
                 }

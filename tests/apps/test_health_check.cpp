@@ -91,6 +91,27 @@ TEST(HealthCheck, TheFirstProblemIsNamedWhateverTheThreads) {
         EXPECT_NE(m.find(density), std::string::npos) << m;
 }
 
+// A fluid particle more than a spacing beyond a wall stops the run, naming the wall; wall
+// particles, which lie outside the domain, and fluid within a spacing of it do not.
+TEST(HealthCheck, FluidBeyondAWallIsNamed) {
+    Tiny t;
+    auto x = t.storage.getValue<num::sph::Vector<2>>(QuantityId::POSITION);
+    const auto kind = t.storage.getValue<int>(QuantityId::KIND);
+    std::size_t fluid = 0;
+    while (kind[fluid] != int(num::sph::ParticleKind::FLUID)) ++fluid;
+    ASSERT_TRUE(t.scene.sides[0][1].type == SideType::WALL);
+    x[fluid][0] = t.scene.domainMax[0] + 0.5 * t.scene.spacing;
+    EXPECT_EQ(t.check(), "");
+    x[fluid][0] = t.scene.domainMax[0] + 1.5 * t.scene.spacing;
+    const std::string m = t.check();
+    EXPECT_NE(m.find(std::string("a fluid particle left the domain through the ") + sideName(0, 1) +
+                     " wall"),
+              std::string::npos)
+        << m;
+    x[fluid][0] = t.scene.domainMin[0] + t.scene.spacing;  // back inside
+    EXPECT_EQ(t.check(), "");
+}
+
 // The check of unphysical but finite states (physical_check.hpp): warnings once per kind,
 // a stop (exit code 9) where the run is lost.
 namespace {

@@ -226,6 +226,7 @@ class VerletList {
     /// otherwise (particles added since the last reordering come last, far away in index)
     /// sortRuns merges them.
     static void sortCandidates(Index* a, Index n, SortBuffers& buffers) {
+        if (n < 2) return;
         Index lo = a[0], hi = a[0];
         for (Index k = 1; k < n; ++k) lo = std::min(lo, a[k]), hi = std::max(hi, a[k]);
         const std::size_t span = std::size_t(hi - lo) + 1;

@@ -1,8 +1,9 @@
 // The Verlet neighbour lists against a brute-force oracle (every particle's neighbours, in
 // increasing index, bit for bit), in 2D and 3D with periodic axes, after displacements below
 // half the skin (lists kept) and above (rebuilt), after a renumbering, with candidates far apart
-// in index, with a skin that adapts to the fastest particle; and a short fluid run that is
-// bitwise the same for any skin (fixed or adapting) and any number of threads.
+// in index, with a skin that adapts to the fastest particle; every particle's candidates after
+// a build, for particles numbered by cell or at random; and a short fluid run that is bitwise
+// the same for any skin (fixed or adapting) and any number of threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,9 +50,9 @@ std::vector<Pair> oracle(const std::vector<V<Dim>>& x, std::uint32_t i, double r
 }
 
 /// Right after a build, every particle's candidates are the oracle's particles within the
-/// lists' radius, in strictly increasing index (the build merges the cell grid's runs of
-/// candidates into one sorted list). Pairs within 1e-9 of that radius may go either way (the
-/// grid rounds its distances otherwise).
+/// lists' radius, in strictly increasing index (the build sorts the candidates the cell grid
+/// returns cell by cell). Pairs within 1e-9 of that radius may go either way (the grid rounds
+/// its distances otherwise).
 template <int Dim>
 void expectCandidates(const num::VerletList<Dim>& list, const std::vector<V<Dim>>& x,
                       const num::Domain<Dim>& d) {

@@ -47,7 +47,8 @@ MaterialSpec readMaterial(const At& a, const std::string& name) {
               "heat_capacity", "thermal_expansion", "reference_temperature"});
     MaterialSpec m;
     m.name = name;
-    m.density = a.number("density", m.density, 0, 1e7, true, "kg/m^3");
+    // Below 1e-6 kg/m^3 no continuum fluid exists, and rho^2 (in p / rho^2) underflows near 1e-154.
+    m.density = a.number("density", m.density, 1e-6, 1e7, false, "kg/m^3");
     if (a.has("sound_speed") &&
         !(a["sound_speed"].v.is_string() && a["sound_speed"].v.get<std::string>() == "auto")) {
         if (!a["sound_speed"].v.is_number())

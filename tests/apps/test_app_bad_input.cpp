@@ -100,6 +100,18 @@ TEST(BadInput, EmptyScene) {
     expectMessage(runScene("empty", j.dump()), kScene, {"fluids", "no fluid particles"});
 }
 
+// A density of 1e-300 kg/m^3 passed a check of "> 0" and ended in an internal error (its square
+// underflows, p / rho^2 is infinite and the first step moves particles to infinity).
+TEST(BadInput, DensityFarBelowAnyFluid) {
+    json j = tiny();
+    j["materials"]["water"]["density"] = 1e-300;
+    expectMessage(runScene("density", j.dump()), kScene,
+                  {"materials.water.density", "expected a number in [1e-06, 1e+07]", "1e-300"});
+    j["materials"]["water"]["density"] = 1e-6;
+    const Result r = runScene("density_low", j.dump(), "--end-time 1e-5");  // heat: dt ~ 3e-9 s
+    EXPECT_EQ(r.code, 0) << r.output;
+}
+
 TEST(BadInput, PeriodicOnOneSideOnly) {
     json j = tiny();
     j["boundaries"]["x_min"] = {{"type", "periodic"}};

@@ -115,8 +115,15 @@ void SceneDocument::set(const std::string& assignment) {
     while (std::getline(parts, part, '.')) {
         if (part.empty())
             throw AppError(ExitCode::USAGE, "--set " + assignment + ": empty key in '" + key + "'");
+        if (const auto bracket = part.find('['); bracket != std::string::npos)
+            throw AppError(ExitCode::USAGE,
+                           "--set " + assignment + ": '" + part +
+                               "': an index is a part of its own, after a dot (e.g. --set "
+                               "fluids.0.temperature=30 for fluids[0].temperature)");
         if (node->is_array()) {
-            const bool digits = part.find_first_not_of("0123456789") == std::string::npos;
+            // At most 9 digits: std::stoul would throw beyond its range; no array is that long.
+            const bool digits =
+                part.size() <= 9 && part.find_first_not_of("0123456789") == std::string::npos;
             const std::size_t i = digits ? std::stoul(part) : node->size();
             if (i >= node->size())
                 throw AppError(ExitCode::USAGE,

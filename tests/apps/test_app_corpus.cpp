@@ -121,6 +121,18 @@ const std::vector<Case>& corpus() {
          },
          kUsage,
          {"levels"}},
+        // An index beyond any integer (std::stoul threw: an internal error), and the bracket
+        // form of an index, which named an unknown top-level key "fluids[0]".
+        {"set_index_beyond_integers",
+         2,
+         [](json&) { return std::string("--set fluids.99999999999999999999999.temperature=1"); },
+         kUsage,
+         {"fluids is an array of 1 values", "not an index into it"}},
+        {"set_index_in_brackets",
+         2,
+         [](json&) { return std::string("--set fluids[0].temperature=30"); },
+         kUsage,
+         {"fluids[0]", "an index is a part of its own", "fluids.0.temperature"}},
         // Runs without end and set-ups beyond the machine.
         {"output_every_1e_minus_300",
          2,

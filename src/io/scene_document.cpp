@@ -115,7 +115,7 @@ void SceneDocument::set(const std::string& assignment) {
     while (std::getline(parts, part, '.')) {
         if (part.empty())
             throw AppError(ExitCode::USAGE, "--set " + assignment + ": empty key in '" + key + "'");
-        if (const auto bracket = part.find('['); bracket != std::string::npos)
+        if (part.find('[') != std::string::npos)
             throw AppError(ExitCode::USAGE,
                            "--set " + assignment + ": '" + part +
                                "': an index is a part of its own, after a dot (e.g. --set "

@@ -245,7 +245,9 @@ def hydrostatic(run):
         {"label": "rho g (H - y)", "x": zz.tolist(), "y": (rho * g * (H - zz)).tolist(), "style": "line"}]}
     checks = [{"metric": f"max interior |p - rho g (H - {up})| / (rho g H) at t = {t:g} s", "value": float(err[inside].max()), "gate": 0.01},
               {"metric": f"free-surface drift / H over {t:g} s", "value": drift, "gate": 0.01}]
-    notes = f"mean interior error {float(err[inside].mean()):.3g}; max speed {float(np.max(np.abs(p['vx'])) if len(p['vx']) else 0):.3g} m/s (x)"
+    k = int(np.argmax(np.abs(p["vx"])))
+    notes = (f"mean interior error {float(err[inside].mean()):.3g}; largest |vx| {abs(float(p['vx'][k])):.3g} m/s, "
+             f"at x = {float(p['x'][k]):.3g} m, {up} = {float(p[up][k]):.3g} m")
     return checks, notes, profile
 
 
@@ -545,11 +547,10 @@ case("taylor_green_re100", "taylor_green_re100.json", taylor_green, 0.01, [0.04,
 case("taylor_green_re1000", "taylor_green_re1000.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [0.056]))
 case("cavity_re100", "cavity_re100.json", lambda r: cavity(r, 100, 0.03), 0.02, [0.05, 0.04, 0.02], (0.04, [0.087]))
 case("cavity_re1000", "cavity_re1000.json", lambda r: cavity(r, 1000, 0.05), 0.01, [0.05, 0.04, 0.02, 0.01], (0.04, [0.21]))
-case("hydrostatic_tank_2d", "hydrostatic_tank_2d.json", hydrostatic, 0.05, [0.1, 0.0666666667, 0.05], (0.0666666667, None),
-     doc_note=_TIME + "was 0.025, now 0.05; the full 10 s")
-case("hydrostatic_tank_3d", "hydrostatic_tank_3d.json", hydrostatic, 0.1, [0.2, 0.125, 0.1], (0.125, [0.018, None]),
-     doc_note="documented at 0.1 (10 x 10 x 10) since 94eaf21: at 0.125 (8 x 8 x 8, every particle within a kernel "
-     "support of a wall) the pressure is 1.2 % off")
+case("hydrostatic_tank_2d", "hydrostatic_tank_2d.json", hydrostatic, 0.025, [0.1, 0.0666666667, 0.05, 0.025],
+     (0.0666666667, None))
+case("hydrostatic_tank_3d", "hydrostatic_tank_3d.json", hydrostatic, 0.0666666667, [0.2, 0.125, 0.1, 0.0666666667],
+     (0.125, [0.018, None]))
 # The study adds a / 80 (12,800 particles, 9 min on 2 cores); documented at a / 40.
 case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715 / 40,
      [0.05715 / 10, 0.05715 / 20, 0.05715 / 40, 0.05715 / 80], (0.05715 / 20, [0.34]),
@@ -561,7 +562,11 @@ case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715
      "a sound speed from the water's top (c0 29 % lower: 0.157) changes it. The same scheme, column and "
      "release (the dam removed at once) bring the front to the far wall of Lobovsky et al.'s tank, a "
      "similar experiment, at T = 2.478 against its measured 2.464 (H / 80; dam_break_pressure_lobovsky). "
-     "The model has no gate: how the experiment's column was released is not modelled")
+     "The lead is a constant offset in time: compared at T - 0.175 (the release-time correction that the "
+     "Martin & Moyce example of the Lethe CFD code applies to its results), the a / 80 front is within "
+     "0.077 of the experiment at every tabulated time; at a / 40, 0.166, its late "
+     "surge lagging (-0.17 at T = 9.24). That is not the gate (no offset is applied to pass): the "
+     "model has no gate or diaphragm, and how the experiment's column was released is not modelled")
 # Documented at H / 80 (4 min on 2 cores): the arrival misses its gate at H / 60 (0.024).
 case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_break_pressure, 0.3 / 80,
      [0.3 / 20, 0.3 / 40, 0.3 / 60, 0.3 / 80], (0.3 / 20, [0.16, 2.8, None]),
@@ -577,7 +582,12 @@ case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_brea
      "film left on the wall behind the column); with the limit on the pressure only (the density left free; a code change, not an option) the peak "
      "is 9.2 at H / 40 and that run is lost at t = 0.60 s. Also at H / 40, peak with: density diffusion "
      "0.3 instead of 0.1, 9.3; a sound speed of 20 U, 6.5; an artificial viscosity of 0.1, 8.8 (and a "
-     "late front); a surface threshold of 0.75 instead of 0.9 (a code change), 7.4. Meeting it needs a "
+     "late front); a surface threshold of 0.75 instead of 0.9 (a code change), 7.4. At H / 80 "
+     "(2026-12-02, a code change): the limit replaced by a relaxation of the density of free-surface "
+     "particles towards rho0 over 1 ms, with the pressure from the equation of state (so the sound "
+     "waves swing both ways), the peak is 3.27 but the front arrives at T = 2.524, missing that gate "
+     "(0.024 against 0.0106); over 5 ms, 5.04 and 2.547. Without the limit or with it relaxed, the peak "
+     "stays 1.6 to 1.8 times the experiment's. Meeting it needs a "
      "free-surface treatment that does not rectify the sound waves and still keeps thin sheets from "
      "thinning away; not built")
 # Ra = 1e5 is documented at 0.01 (100 x 100, 11 min): its thin boundary layers miss the gate

@@ -99,6 +99,8 @@ def main():
             metric = ch["metric"].replace("|", "\\|")
             out.append(f"| {metric} | {ch['value']:.4g} | {ch['gate']:g} | {'pass' if ch['passed'] else '**MISSED**'} |")
         out.append(f"\n{doc['notes']}\n")
+        if c.get("note"):
+            out.append(f"{c['note']}.\n")
         if not ok and c.get("miss_note"):
             out.append(f"Why it misses its gate: {c['miss_note']}.\n")
         if c.get("doc_note"):

@@ -551,11 +551,12 @@ case("cavity_re1000", "cavity_re1000.json", lambda r: cavity(r, 1000, 0.05), 0.0
 case("hydrostatic_tank_2d", "hydrostatic_tank_2d.json", hydrostatic, 0.025, [0.1, 0.0666666667, 0.05, 0.025],
      (0.0666666667, None),
      note="The fastest particles are those in the bottom corners (0.14 m/s at spacing 0.025, 0.037 at "
-     "0.0333), and they do not move off. Particle shifting drives them: with physics.shifting false the "
-     "fastest particle moves at 0.002 m/s, and without gravity nothing moves. Under gravity the water is "
-     "0.4 % denser at the floor while the walls keep their spacing, so the kernel sum has a gradient "
-     "along the side walls, along which shifting moves the particles; the floor stops them and the "
-     "pressure pushes each back every step. Measured 2026-12-02; not changed")
+     "0.0333); they vibrate in place. Particle shifting drives them: with physics.shifting false the "
+     "fastest particle moves at 0.002 m/s, and without gravity (which makes the water 0.4 % denser at "
+     "the floor while the walls keep their spacing) nothing moves. Measured 2026-12-02, with two code "
+     "changes not kept: shifting scaled down where the wall's gradient points two ways (a corner), 0.07 "
+     "m/s; the walls weighted by their rest volume in shifting's kernel-sum gradient, 0.09 m/s, with "
+     "particles on the floor then moving instead")
 case("hydrostatic_tank_3d", "hydrostatic_tank_3d.json", hydrostatic, 0.0666666667, [0.2, 0.125, 0.1, 0.0666666667],
      (0.125, [0.018, None]))
 # The study adds a / 80 (12,800 particles, 9 min on 2 cores); documented at a / 40.
@@ -606,7 +607,8 @@ _V_MAX_LOW = ("v_max, the peak of the upward flow along the hot wall, is low at 
               "not a converged one. Ra = 1e5 is 2.9 % low at 100 x 100 (66.58 against 68.59), within its "
               "gate. u_max and the Nusselt number stay within 1.3 % and 0.25 %. Particle shifting is not "
               "the cause: without it (physics.shifting false) the same run is 10 % low in v_max and 8.8 % in "
-              "u_max. Measured 2026-12-02; the cause is not found")
+              "u_max; nor is the time the flow is given: at 80 x 80, t = 56 to 60 s give the same v_max as t = 26 "
+              "to 30 s (19.35 and 19.34). Measured 2026-12-02; the cause is not found")
 for _ra, _ci, _bounds, _kw in (("1e3", 0.04, [0.053, 0.042, None], {}),
                                ("1e4", 0.04, [0.063, 0.062, None], {"miss_note": _V_MAX_LOW}),
                                ("1e5", 0.02, [0.067, 0.099, None], {})):

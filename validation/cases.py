@@ -509,9 +509,9 @@ def case(name, scene, compare, doc, study, ci, **kw):
 
 # ci = (spacing, bounds): the fast check of tests/validation at a coarse spacing. bounds None:
 # every check must meet the issue's gate. Otherwise one entry per check: None (the gate) or a
-# REGRESSION BOUND, NOT THE ISSUE'S GATE, for a check that misses its gate today: the error
-# measured at that spacing (REGRESSION_BUILD) times 1.5, rounded up to two digits; the 50 %
-# margin because the scheme is still being changed. A bound is tightened as the scheme improves
+# REGRESSION BOUND, NOT THE ISSUE'S GATE, for a check that misses its gate today or comes close to
+# it: the error measured at that spacing (at REGRESSION_BUILD, later where noted) times 1.5,
+# rounded up to two digits; the 50 % margin because the scheme is still being changed. A bound is tightened as the scheme improves
 # and never raised to pass. Measured at REGRESSION_BUILD (error at the CI spacing -> bound):
 #   poiseuille_3d 0.0206 -> 0.031; taylor_green_re100 l1 0.0231 -> 0.035 (max|v| 0.00069: gate);
 #   taylor_green_re1000 l1 0.0367 -> 0.056; cavity_re100 0.262 -> 0.40; cavity_re1000 0.534 ->
@@ -619,20 +619,31 @@ case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_brea
      "thinning away; not built")
 # Each is documented at the finest spacing of its study: Ra = 1e3 and 1e4 at 0.01 (100 x 100),
 # Ra = 1e5 at 0.008 (125 x 125, 25 min). Until 2026-12-02 Ra = 1e3 and 1e4 were documented at 0.02
-# and Ra = 1e5 at 0.01, where they passed by errors that do not hold as the spacing shrinks.
-_V_MAX_LOW = ("v_max, the peak of the upward flow along the hot wall, comes out low once the spacing is "
-              "fine: at Ra = 1e4 1.0 % at 50 x 50, 1.4 % at 80 x 80, 3.4 % at 100 x 100 (18.95 against "
-              "19.617); at Ra = 1e5 6.0 %, 4.1 %, 2.9 % and 4.5 % at 125 x 125 (65.47 against 68.59). "
-              "u_max stays within 1.3 % (Ra = 1e4) and 2.9 % (Ra = 1e5), the Nusselt number within 1 %. "
-              "Particle shifting is not the cause: without it (physics.shifting false) Ra = 1e4 at 100 x 100 "
-              "is 10 % low in v_max and 8.8 % in u_max; nor is the time the flow is given: at 80 x 80, "
-              "t = 56 to 60 s give the same v_max as t = 26 to 30 s (19.35 and 19.34). Measured 2026-12-02; "
-              "the cause is not found")
-for _ra, _doc, _study, _ci, _bounds in (("1e3", 0.01, [0.05, 0.04, 0.02, 0.0125, 0.01], 0.04, [0.053, 0.042, None]),
-                                        ("1e4", 0.01, [0.05, 0.04, 0.02, 0.0125, 0.01], 0.04, [0.063, 0.062, None]),
-                                        ("1e5", 0.008, [0.05, 0.04, 0.02, 0.0125, 0.01, 0.008], 0.02, [0.067, 0.099, None])):
+# and Ra = 1e5 at 0.01, where they passed by errors that do not hold as the spacing shrinks; and
+# until a73f4e9 the profiles were the mean of 5 outputs 1 s apart, whose noise (0.6 to 0.9 % in
+# v_max) made Ra = 1e4 read 3.4 % low at 100 x 100 (2.1 % now) and Ra = 1e5 pass at 100 x 100.
+_V_MAX_LOW = ("v_max, the peak of the upward flow along the hot wall, converges low. At Ra = 1e5 about "
+              "3.3 %: 65.92, 66.21, 66.16 and 66.40 at 50 x 50, 80 x 80, 100 x 100 and 125 x 125 against "
+              "68.59, while u_max comes within 1.6 to 3.1 % and the Nusselt number within 1.3 % from 80 x 80 "
+              "on. At Ra = 1e4 about 2 % (19.25, 19.24, 19.21 at 50 x 50, 80 x 80, 100 x 100 against 19.617), "
+              "within its gate. Not the measurement: each value is the mean of 41 outputs whose halves agree "
+              "within 0.6 %, and the parabola through the probes (1/42 apart) reads the peak within 0.2 % of a "
+              "spline through them. Measured, not the cause (2026-12-02): the smoothing length (h = 2 dx at "
+              "Ra = 1e5, 80 x 80: v_max 66.43, with u_max 35.11 and Nu 4.65, 2.9 % high); the hydrostatic "
+              "pressure the particles carry (gravity acting through the buoyancy only, a code change, Ra = 1e5 "
+              "at 50 x 50: v_max 65.40); the temperature that particle shifting leaves uncorrected (a Taylor "
+              "correction as for the velocity, a code change, Ra = 1e4 at 100 x 100: 19.27 against 19.24); "
+              "the time the flow is given. Without particle shifting Ra = 1e4 is 10 % low. The cause is not found")
+# CI bounds re-measured over the last 10 s (a73f4e9) for the default, the symmetric pair loop and
+# time.cfl 0.249 and 0.251: Ra 1e3 at 0.04 u_max 0.0015-0.017, v_max 0.0005-0.0099, Nu
+# 0.0027-0.0063 (all within the gate, so the gate: bounds 0.053, 0.042 dropped); Ra 1e4 at 0.04
+# u_max 0.018-0.028, v_max 0.0001-0.023, Nu 0.0021-0.014 -> 0.042, 0.034; Ra 1e5 at 0.02 u_max
+# 0.030-0.049 (bound 0.067 kept), v_max 0.039-0.062 -> 0.093, Nu 0.0095-0.018.
+for _ra, _doc, _study, _ci, _bounds in (("1e3", 0.01, [0.05, 0.04, 0.02, 0.0125, 0.01], 0.04, None),
+                                        ("1e4", 0.01, [0.05, 0.04, 0.02, 0.0125, 0.01], 0.04, [0.042, 0.034, None]),
+                                        ("1e5", 0.008, [0.05, 0.04, 0.02, 0.0125, 0.01, 0.008], 0.02, [0.067, 0.093, None])):
     case(f"natural_convection_ra{_ra}", f"natural_convection_ra{_ra}.json", (lambda ra: lambda r: natural_convection(r, ra))(_ra),
-         _doc, _study, (_ci, _bounds), miss_note=_V_MAX_LOW)
+         _doc, _study, (_ci, _bounds), **({"note": _V_MAX_LOW} if _ra == "1e4" else {"miss_note": _V_MAX_LOW} if _ra == "1e5" else {}))
 case("conduction_walls_2d", "conduction_walls_2d.json", conduction_walls, 0.04, [0.1, 0.05, 0.04], (0.05, None))
 case("heat_pulse_2d", "heat_pulse_2d.json", heat_pulse, 0.01, [0.02, 0.01, 0.005], (0.02, None))
 case("heat_pulse_3d", "heat_pulse_3d.json", heat_pulse, 0.02, [0.04, 0.03, 0.02], (0.04, [0.030, None]))
@@ -714,7 +725,7 @@ def main():
         bounds = c["ci"][1] or [None] * len(res["checks"])
         for ch, b in zip(res["checks"], bounds):
             ch["ci_bound"] = ch["gate"] if b is None else b
-            ch["ci_bound_kind"] = "gate" if b is None else f"regression bound, not the issue's gate (measured at {REGRESSION_BUILD} + 50 %)"
+            ch["ci_bound_kind"] = "gate" if b is None else "regression bound, not the issue's gate (an error measured at the CI spacing + 50 %; validation/cases.py gives when)"
     text = json.dumps(res, indent=1)
     if a.json:
         with open(a.json, "w") as f:

@@ -635,7 +635,8 @@ _V_MAX_LOW = ("v_max, the peak of the upward flow along the hot wall, converges 
               "at 50 x 50: v_max 65.40); the temperature that particle shifting leaves uncorrected (a Taylor "
               "correction as for the velocity, a code change, Ra = 1e4 at 100 x 100: 19.27 against 19.24); "
               "the density by continuity instead of summation (physics.density continuity, Ra = 1e5 at 80 x 80: "
-              "v_max 64.97, with a third of the noise); the time the flow is given. Without particle shifting "
+              "v_max 64.97, with a third of the noise); the kernel (Wendland C4 at 80 x 80: v_max 67.55, but u_max "
+              "8.9 % high and single outputs' v_max from 52 to 124); the time the flow is given. Without particle shifting "
               "Ra = 1e4 is 10 % low. The cause is not found")
 # CI bounds re-measured over the last 10 s (a73f4e9) for the default, the symmetric pair loop and
 # time.cfl 0.249 and 0.251: Ra 1e3 at 0.04 u_max 0.0015-0.017, v_max 0.0005-0.0099, Nu

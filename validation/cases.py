@@ -684,7 +684,7 @@ _V_MAX_LOW = ("v_max, the peak of the upward flow along the hot wall, converges 
               "Ra = 1e5 68.73, 67.59, 66.79 and 66.86 at 50 x 50, 80 x 80, 100 x 100 and 125 x 125 against "
               "68.59 (2.5 % low at the finest), at Ra = 1e4 19.59, 19.30 and 19.23 at 50 x 50, 80 x 80 and "
               "100 x 100 against 19.617 (2.0 %). The profiles are read from the particles by a least-squares "
-              "quadratic around each point (validation/cases.py, quadratic_reading); the app's probes average "
+              "quadratic around each point (validation/cases.py, quadratic_reading; the cavities are read the same way); the app's probes average "
               "over the kernel and read the peak lower: at Ra = 1e5 65.92, 66.21, 66.16 and 66.40. "
               "The flow depends on the sound speed, which at a Mach number of 0.03 it should not: at Ra = 1e5, "
               "50 x 50, v_max 69.95, 68.73 and 60.12 and u_max 35.68, 33.74 and 30.28 with c0 = 7, 10 (the "

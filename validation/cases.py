@@ -205,7 +205,7 @@ def cavity(run, re, gate):
     by quadratic_reading in each output of the last CAVITY_WINDOW seconds and averaged (as for
     natural convection: the flow is steady and the weakly compressible velocity carries noise of
     about 0.005 U_lid from one output to the next, so a single snapshot's error moves between
-    0.017 and 0.039 U_lid at Re = 100, spacing 0.02). Until 2026-12-02 the probes were compared:
+    0.019 and 0.030 U_lid at Re = 100, spacing 0.02). Until 2026-12-02 the probes were compared:
     their kernel average, cut by the lid, read u near it low (Re = 1000, 100 x 100: 0.0403 of
     U_lid at y = 0.9766 against 0.0308 read from the particles; Re = 100: 0.0089 against 0.0095)."""
     ref = read_table("ghia1982.csv")

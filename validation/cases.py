@@ -214,12 +214,13 @@ def cavity(run, re, gate):
     frames = steady_frames(run, CAVITY_WINDOW)
     pr = run.probes()
     rows = steady_rows(pr, CAVITY_WINDOW)
+    outputs = [run.particles(k) for k in frames]
     dev, series, snapshots, probe_dev = [], [], [], []
     for line, comp in (("u", "vx"), ("v", "vy")):
         on = ref["line"] == line
         coord, ghia = ref["coordinate"][on], ref[col][on]
         points = [(0.5, c) for c in coord] if line == "u" else [(c, 0.5) for c in coord]
-        values = np.array([quadratic_reading(run.particles(k), comp, points, h) for k in frames]).T
+        values = np.array([quadratic_reading(p, comp, points, h) for p in outputs]).T
         num = values.mean(axis=1)
         dev.append(np.abs(num - ghia))
         snapshots.append(np.abs(values - ghia[:, None]).max(axis=0))
@@ -684,8 +685,9 @@ _V_MAX_LOW = ("v_max, the peak of the upward flow along the hot wall, converges 
               "Ra = 1e5 68.73, 67.59, 66.79 and 66.86 at 50 x 50, 80 x 80, 100 x 100 and 125 x 125 against "
               "68.59 (2.5 % low at the finest), at Ra = 1e4 19.59, 19.30 and 19.23 at 50 x 50, 80 x 80 and "
               "100 x 100 against 19.617 (2.0 %). The profiles are read from the particles by a least-squares "
-              "quadratic around each point (validation/cases.py, quadratic_reading; the cavities are read the same way); the app's probes average "
-              "over the kernel and read the peak lower: at Ra = 1e5 65.92, 66.21, 66.16 and 66.40. "
+              "quadratic around each point (validation/cases.py, quadratic_reading; the cavities are read "
+              "the same way); the app's probes average over the kernel and read the peak lower: at Ra = 1e5 "
+              "65.92, 66.21, 66.16 and 66.40. "
               "The flow depends on the sound speed, which at a Mach number of 0.03 it should not: at Ra = 1e5, "
               "50 x 50, v_max 69.95, 68.73 and 60.12 and u_max 35.68, 33.74 and 30.28 with c0 = 7, 10 (the "
               "default, 10 sqrt(g beta dT L)) and 20 m/s (materials.fluid.sound_speed; at 20 with the shifting "

@@ -100,7 +100,8 @@ struct PhysicsSpec {
     double densityDiffusion = sph::defaults::densityDiffusion;  ///< delta-SPH's delta
     bool shifting = sph::defaults::shifting;
     bool shiftingNormalToWalls = sph::defaults::shiftingNormalToWalls;
-    bool freeSurfaceNoTension = sph::defaults::freeSurfaceNoTension;
+    bool freeSurfaceTensionLimit = sph::defaults::freeSurfaceTensionLimit;
+    double freeSurfaceDensityFloor = sph::defaults::freeSurfaceDensityFloor;  ///< over rho0
     double gravityRamp = 0;                ///< seconds over which gravity rises from 0
     std::string eos = sph::defaults::eos;  ///< tait or linear
     double backgroundPressure = 0;         ///< [Pa]

@@ -126,8 +126,10 @@ struct FluidModel {
     Float shiftingCoefficient = defaults::shiftingCoefficient;     ///< A in dr = -A h c0 dt grad C
     bool shiftingNormalToWalls = defaults::shiftingNormalToWalls;  ///< shift towards walls too
 
-    /// No tension at free surfaces (terms/free_surface.hpp).
-    bool freeSurfaceNoTension = defaults::freeSurfaceNoTension;
+    /// A tension limit at free surfaces: the density of a particle whose kernel support is cut
+    /// held at or above freeSurfaceDensityFloor rho0 (terms/free_surface.hpp).
+    bool freeSurfaceTensionLimit = defaults::freeSurfaceTensionLimit;
+    Float freeSurfaceDensityFloor = defaults::freeSurfaceDensityFloor;
 
     // Forces.
     BodyForce<Dim> bodyForce;  ///< acceleration of time (gravity, a ramp); empty: none
@@ -235,7 +237,8 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     if (summation || boundaries) eq += makeTerm<NeighbourRefresh<Dim>>(gather);
     if (summation) eq += makeTerm<SummationDensity<Dim>>(gather);
     eq += makeTerm<EquationOfStateTerm<Dim>>(eos);
-    if (model.freeSurfaceNoTension) eq += makeTerm<FreeSurfaceNoTension<Dim>>(eos);
+    if (model.freeSurfaceTensionLimit)
+        eq += makeTerm<FreeSurfaceTensionLimit<Dim>>(eos, model.freeSurfaceDensityFloor);
     if (boundaries) eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce);
     eq += makeTerm<PairInputs<Dim>>();  // volumes and velocities the pair terms read
     if (!summation) {

@@ -388,8 +388,8 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     if (root.has("physics")) {
         const At ph = root["physics"];
         ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting",
-                   "shifting_normal_to_walls", "free_surface_clamp", "gravity_ramp", "max_speed",
-                   "eos", "background_pressure"});
+                   "shifting_normal_to_walls", "free_surface_clamp", "free_surface_density_floor",
+                   "gravity_ramp", "max_speed", "eos", "background_pressure"});
         s.physics.heat = ph.boolean("heat", s.physics.heat);
         s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
         if (ph.has("density"))
@@ -399,8 +399,10 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
         s.physics.shiftingNormalToWalls =
             ph.boolean("shifting_normal_to_walls", s.physics.shiftingNormalToWalls);
-        s.physics.freeSurfaceNoTension =
-            ph.boolean("free_surface_clamp", s.physics.freeSurfaceNoTension);
+        s.physics.freeSurfaceTensionLimit =
+            ph.boolean("free_surface_clamp", s.physics.freeSurfaceTensionLimit);
+        s.physics.freeSurfaceDensityFloor =
+            ph.number("free_surface_density_floor", s.physics.freeSurfaceDensityFloor, 0, 1, true);
         s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
         s.maxSpeed = ph.number("max_speed", 0, 0, 1e6, false, "m/s");
         if (ph.has("eos")) s.physics.eos = ph["eos"].choice({"tait", "linear"});

@@ -241,7 +241,8 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
             fluid.viscosity, scene.hOverSpacing * dx, m.c0(), Dim));
     m.shifting = scene.physics.shifting;
     m.shiftingNormalToWalls = scene.physics.shiftingNormalToWalls;
-    m.freeSurfaceNoTension = scene.physics.freeSurfaceNoTension;
+    m.freeSurfaceTensionLimit = scene.physics.freeSurfaceTensionLimit;
+    m.freeSurfaceDensityFloor = scene.physics.freeSurfaceDensityFloor;
     bool gravityOn = false;
     for (int k = 0; k < Dim; ++k)
         gravityOn |= !scene.gravity[k].isConstant() || scene.gravity[k](0, 0, 0, 0) != 0;

@@ -58,8 +58,11 @@ TEST(Docs, ScenesStateTheDefaults) {
     EXPECT_NE(docRow(doc, "shifting").find(cell(d::shifting == yes ? "true" : "false")),
               std::string::npos);
     EXPECT_NE(docRow(doc, "free_surface_clamp")
-                  .find(cell(d::freeSurfaceNoTension == yes ? "true" : "false")),
+                  .find(cell(d::freeSurfaceTensionLimit == yes ? "true" : "false")),
               std::string::npos);
+    EXPECT_NE(
+        docRow(doc, "free_surface_density_floor").find(cell(number(d::freeSurfaceDensityFloor))),
+        std::string::npos);
     EXPECT_NE(docRow(doc, "eos").find(cell(std::string("`\"") + d::eos + "\"`")),
               std::string::npos);
     // The scene reader starts from the same values.
@@ -69,6 +72,8 @@ TEST(Docs, ScenesStateTheDefaults) {
     EXPECT_EQ(scene.cfl, d::cfl);
     EXPECT_EQ(scene.physics.shifting, d::shifting);
     EXPECT_EQ(scene.physics.densityDiffusion, d::densityDiffusion);
+    EXPECT_EQ(scene.physics.freeSurfaceTensionLimit, d::freeSurfaceTensionLimit);
+    EXPECT_EQ(scene.physics.freeSurfaceDensityFloor, d::freeSurfaceDensityFloor);
 }
 
 }  // namespace

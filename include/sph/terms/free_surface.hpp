@@ -1,5 +1,5 @@
 // Free surfaces: the kernel sum C_i = sum_j V_j W_ij (1 inside the fluid, about 1/2 on a free
-// surface, where the kernel support is cut), and no tension at a free surface.
+// surface, where the kernel support is cut), and a limit on the tension at a free surface.
 //
 // A weakly-compressible equation of state gives negative pressure wherever the density falls
 // below rho0. Inside the fluid that is physical (a pressure below ambient), but at a free
@@ -7,9 +7,13 @@
 // whose density drops pulls its neighbours with a tension the liquid does not have (the
 // tensile instability at free surfaces, Monaghan 2000, J. Comput. Phys. 159, 290; Colagrossi,
 // Antuono & Le Touze 2009, Phys. Rev. E 79, 056701, on the surface condition p = p_ambient).
-// So at particles whose support is cut, C_i < 0.9, the pressure is limited from below by the
-// background (ambient) pressure and the density by rho0:
-//   p_i = max(p_i, p_b),   rho_i = max(rho_i, rho0)   where C_i < 0.9.
+// So at particles whose support is cut, C_i < 0.9, the density is limited from below by a floor
+// f rho0 and the pressure by the equation of state's pressure there:
+//   rho_i = max(rho_i, f rho0),   p_i = max(p_i, p(f rho0))   where C_i < 0.9,
+// p(f rho0) = p_b - (1 - f) rho0 c0^2 to first order (p_b the background, ambient, pressure).
+// f = 1 allows no tension at all; then an impact on a wall rebounds, since the compression of
+// the impacting water is released with nothing to hold it: the default f = 0.99 allows a tension
+// of about rho0 U^2 with c0 = 10 U, which holds the water at the wall (sph/defaults.hpp).
 // Inside the fluid (C_i >= 0.9) nothing changes, so closed flows (Taylor-Green, cavities) keep
 // their negative gauge pressures. C_i is the sum of the previous evaluation (one step old: a
 // particle moves less than 0.25 h per step); before the first it is taken as 1.
@@ -111,9 +115,11 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
 /// Limits pressure and density at free-surface particles (see the top of this file). Place it
 /// after the equation of state and before the wall condition.
 template <int Dim>
-class FreeSurfaceNoTension : public IEquationTerm<Dim> {
+class FreeSurfaceTensionLimit : public IEquationTerm<Dim> {
   public:
-    explicit FreeSurfaceNoTension(EquationOfState eos) : eos_(eos) {}
+    /// densityFloor: f, the lowest density of a free-surface particle over rho0, in (0, 1].
+    FreeSurfaceTensionLimit(EquationOfState eos, Float densityFloor)
+        : rhoMin_(densityFloor * eos.rho0), pMin_(eos.pressure(rhoMin_)) {}
 
     void setDerivatives(DerivativeHolder<Dim>& d, const RunSettings& settings) override {
         w0_ = RunKernel<Dim>(settings).W(0);
@@ -125,12 +131,11 @@ class FreeSurfaceNoTension : public IEquationTerm<Dim> {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         auto p = s.template getValue<Float>(QuantityId::PRESSURE);
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);
-        const Float pb = eos_.backgroundPressure, rho0 = eos_.rho0;
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 if (!isFluid(kind[i]) || !atFreeSurface(c[i], m[i] / rho[i], w0_)) continue;
-                p[i] = std::max(p[i], pb);
-                rho[i] = std::max(rho[i], rho0);
+                p[i] = std::max(p[i], pMin_);
+                rho[i] = std::max(rho[i], rhoMin_);
             }
         });
     }
@@ -146,7 +151,7 @@ class FreeSurfaceNoTension : public IEquationTerm<Dim> {
     }
 
   private:
-    EquationOfState eos_;
+    Float rhoMin_, pMin_;  ///< f rho0 and p(f rho0)
     Float w0_ = 0;
 };
 

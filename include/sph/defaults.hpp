@@ -46,14 +46,12 @@ inline constexpr bool shiftingNormalToWalls = false;
 
 // A tension limit at free surfaces (terms/free_surface.hpp): where a particle's kernel support is
 // cut its density is held at or above 0.99 rho0, so its pressure at or above p(0.99 rho0), about
-// -0.01 rho0 c0^2 (-rho0 U^2 with c0 = 10 U). With the floor at rho0 (no tension) an impact on a
-// wall rebounds: the compression of the impacting water (rho0 c0 U_impact) is released with no
-// tension to hold it, the sound waves' negative half is cut and the wall pressure, averaged, is
-// several times the momentum flux. Measured through the app, H / 80 (Lobovsky et al.'s impact,
-// docs/validation.md): impact peak 12.3 rho g H with the floor at rho0, 3.98 with 0.99 (the
-// experiment: 1.86); the default scene warned of a particle leaving the wall at 17 m/s (3 U)
-// with the floor at rho0, with 0.99 of none. Without a limit thin sheets thin away until the run
-// is lost.
+// -0.01 rho0 c0^2 (-rho0 U^2 with c0 = 10 U). With the floor at rho0 (no tension) water that hits
+// a wall rebounds: its compression (rho0 c0 U_impact) is released with no tension to hold it, the
+// negative half of the sound waves is cut and the wall pressure, averaged, is several times the
+// momentum flux. Lobovsky et al.'s impact, H / 80 (docs/validation.md): peak 12.3 rho g H with
+// the floor at rho0, 3.98 with 0.99, 3.01 with 0.98 (the experiment: 1.86). Without a limit
+// thin sheets thin away until the run is lost.
 inline constexpr bool freeSurfaceTensionLimit = true;
 inline constexpr double freeSurfaceDensityFloor = 0.99;
 

@@ -42,10 +42,10 @@
 // Order of the terms (each term's initialize, finalize and postStep run in this order; particle
 // shifting, containment and the heat books act in postStep, once per step after the integrator):
 //   neighbour refresh (for the passes below) -> summation density -> equation of state ->
-//   tension limit at free surfaces -> wall condition (Adami et al. 2012) -> continuity (+ delta-SPH)
-//   -> pressure gradient -> laminar viscosity -> artificial viscosity -> body force -> particle
-//   shifting -> model.extraTerms (e.g. heat) -> boundary hold (zeroes boundary accelerations) ->
-//   containment (no particle inside a wall or body).
+//   tension limit at free surfaces -> wall condition (Adami et al. 2012) -> continuity
+//   (+ delta-SPH) -> pressure gradient -> laminar viscosity -> artificial viscosity -> body force
+//   -> particle shifting -> model.extraTerms (e.g. heat) -> boundary hold (zeroes boundary
+//   accelerations) -> containment (no particle inside a wall or body).
 #pragma once
 
 #include <algorithm>

@@ -681,8 +681,8 @@ case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_brea
      "H / 40 (2026-12-01): density diffusion 0.3 instead of 0.1, peak 9.3; a sound speed of 20 U, "
      "6.5; an artificial viscosity of 0.1, 8.8 (and a late front); a surface threshold of 0.75 "
      "instead of 0.9 (a code change), 7.4; a relaxation of the free-surface density towards rho0 over "
-     "1 ms instead of the floor (a code change, H / 80), 3.27 and T = 2.524. The peak stays 1.6 to 2.1 "
-     "times the experiment's with any tension allowed; what would bring it into the band is not "
+     "1 ms instead of the floor (a code change, H / 80), 3.27 and T = 2.524. The peak stays 1.3 to 2.1 "
+     "times the experiment's with any tension allowed (1.3 at H / 100); what would bring it into the band is not "
      "found")
 # Each is documented at the finest spacing of its study: Ra = 1e3 and 1e4 at 0.01 (100 x 100),
 # Ra = 1e5 at 0.008 (125 x 125, 25 min). Until 2026-12-02 Ra = 1e3 and 1e4 were documented at 0.02

@@ -102,9 +102,10 @@ struct PhysicsSpec {
     bool shiftingNormalToWalls = sph::defaults::shiftingNormalToWalls;
     bool freeSurfaceTensionLimit = sph::defaults::freeSurfaceTensionLimit;
     double freeSurfaceDensityFloor = sph::defaults::freeSurfaceDensityFloor;  ///< over rho0
-    double gravityRamp = 0;                ///< seconds over which gravity rises from 0
-    std::string eos = sph::defaults::eos;  ///< tait or linear
-    double backgroundPressure = 0;         ///< [Pa]
+    double gravityRamp = 0;                         ///< seconds over which gravity rises from 0
+    std::string eos = sph::defaults::eos;           ///< tait or linear
+    double backgroundPressure = 0;                  ///< [Pa]
+    double maxTension = sph::defaults::maxTension;  ///< [Pa], before the liquid cavitates
 };
 
 template <int Dim>

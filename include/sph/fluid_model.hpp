@@ -110,7 +110,8 @@ struct FluidModel {
     Float soundSpeedFactor = defaults::soundSpeedFactor;  ///< c0 = 10 U: density varies ~1 %
     EosType eos = EosType::TAIT;
     Float taitExponent = defaults::taitExponent;
-    Float backgroundPressure = 0;  ///< p_b [Pa], added to the equation of state
+    Float backgroundPressure = 0;             ///< p_b [Pa], added to the equation of state
+    Float maxTension = defaults::maxTension;  ///< [Pa]: p >= p_b - maxTension (cavitation)
 
     // Density.
     DensityMode density = DensityMode::CONTINUITY;
@@ -236,7 +237,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     auto gather = std::make_shared<NeighbourGather<Dim>>();
     if (summation || boundaries) eq += makeTerm<NeighbourRefresh<Dim>>(gather);
     if (summation) eq += makeTerm<SummationDensity<Dim>>(gather);
-    eq += makeTerm<EquationOfStateTerm<Dim>>(eos);
+    eq += makeTerm<EquationOfStateTerm<Dim>>(eos, model.maxTension);
     if (model.freeSurfaceTensionLimit)
         eq += makeTerm<FreeSurfaceTensionLimit<Dim>>(eos, model.freeSurfaceDensityFloor);
     if (boundaries) eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce);

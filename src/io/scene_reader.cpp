@@ -389,7 +389,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         const At ph = root["physics"];
         ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting",
                    "shifting_normal_to_walls", "free_surface_clamp", "free_surface_density_floor",
-                   "gravity_ramp", "max_speed", "eos", "background_pressure"});
+                   "gravity_ramp", "max_speed", "eos", "background_pressure", "max_tension"});
         s.physics.heat = ph.boolean("heat", s.physics.heat);
         s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
         if (ph.has("density"))
@@ -407,6 +407,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.maxSpeed = ph.number("max_speed", 0, 0, 1e6, false, "m/s");
         if (ph.has("eos")) s.physics.eos = ph["eos"].choice({"tait", "linear"});
         s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
+        s.physics.maxTension = ph.number("max_tension", s.physics.maxTension, 0, 1e12, true, "Pa");
     }
     checkSceneGeometry(s);
     warnSidewaysOpenSides(s);

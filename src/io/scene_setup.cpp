@@ -234,6 +234,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
     m.soundSpeed = fluid.soundSpeed ? *fluid.soundSpeed : 0.0;
     m.eos = scene.physics.eos == "linear" ? sph::EosType::LINEAR : sph::EosType::TAIT;
     m.backgroundPressure = scene.physics.backgroundPressure;
+    m.maxTension = scene.physics.maxTension;
     m.deltaSph = scene.physics.densityDiffusion;
     m.viscosity = fluid.viscosity;
     m.artificialViscosity =

@@ -112,6 +112,13 @@ TEST(BadInput, DensityFarBelowAnyFluid) {
     EXPECT_EQ(r.code, 0) << r.output;
 }
 
+TEST(BadInput, TensionLimitMustBePositive) {
+    json j = tiny();
+    j["physics"]["max_tension"] = 0;
+    expectMessage(runScene("max_tension", j.dump()), kScene,
+                  {"physics.max_tension", "expected a number in (0, 1e+12] [Pa]", "found 0"});
+}
+
 TEST(BadInput, PeriodicOnOneSideOnly) {
     json j = tiny();
     j["boundaries"]["x_min"] = {{"type", "periodic"}};

@@ -63,6 +63,7 @@ TEST(Docs, ScenesStateTheDefaults) {
     EXPECT_NE(
         docRow(doc, "free_surface_density_floor").find(cell(number(d::freeSurfaceDensityFloor))),
         std::string::npos);
+    EXPECT_NE(docRow(doc, "max_tension").find(cell(number(d::maxTension))), std::string::npos);
     EXPECT_NE(docRow(doc, "eos").find(cell(std::string("`\"") + d::eos + "\"`")),
               std::string::npos);
     // The scene reader starts from the same values.
@@ -74,6 +75,7 @@ TEST(Docs, ScenesStateTheDefaults) {
     EXPECT_EQ(scene.physics.densityDiffusion, d::densityDiffusion);
     EXPECT_EQ(scene.physics.freeSurfaceTensionLimit, d::freeSurfaceTensionLimit);
     EXPECT_EQ(scene.physics.freeSurfaceDensityFloor, d::freeSurfaceDensityFloor);
+    EXPECT_EQ(scene.physics.maxTension, d::maxTension);
 }
 
 }  // namespace

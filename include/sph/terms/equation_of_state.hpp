@@ -4,11 +4,15 @@
 //                                                  B = rho0 c0^2 / gamma, gamma = 7.
 // Linear (Morris, Fox & Zhu 1997, eq. 10):        p = c0^2 (rho - rho0) + p_b.
 // p_b is an optional background pressure. Both have the sound speed c0 at rho = rho0.
+// The term holds each fluid particle's pressure at or above p_b - T_max: liquid stretched
+// beyond the tension T_max cavitates (sph/defaults.hpp, maxTension); its density is left as it
+// is, the particle's larger volume standing for the cavity.
 // The term also offers the Courant limit dt <= C h / (c0 + max|v|) (Monaghan 1992, sec. 10).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sph/equation_term.hpp"
 #include "sph/terms/fluid_quantities.hpp"
@@ -49,12 +53,15 @@ struct EquationOfState {
     }
 };
 
-/// Sets the pressure of every fluid particle from its density (boundary particles get theirs
-/// from the wall condition).
+/// Sets the pressure of every fluid particle from its density, p_i = max(p(rho_i), p_b - T_max)
+/// (boundary particles get theirs from the wall condition).
 template <int Dim>
 class EquationOfStateTerm : public IEquationTerm<Dim> {
   public:
-    explicit EquationOfStateTerm(EquationOfState eos) : eos_(eos) {}
+    /// maxTension: T_max [Pa], the most tension the liquid holds; infinite: no limit.
+    explicit EquationOfStateTerm(EquationOfState eos,
+                                 Float maxTension = std::numeric_limits<Float>::infinity())
+        : eos_(eos), pMin_(eos.backgroundPressure - maxTension) {}
 
     const EquationOfState& eos() const { return eos_; }
 
@@ -66,7 +73,7 @@ class EquationOfStateTerm : public IEquationTerm<Dim> {
         auto kind = s.template getValue<int>(QuantityId::KIND);
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i)
-                if (isFluid(kind[i])) p[i] = eos_.pressure(rho[i]);
+                if (isFluid(kind[i])) p[i] = std::max(eos_.pressure(rho[i]), pMin_);
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
@@ -93,6 +100,7 @@ class EquationOfStateTerm : public IEquationTerm<Dim> {
 
   private:
     EquationOfState eos_;
+    Float pMin_;  ///< p_b - T_max
 };
 
 }  // namespace num::sph

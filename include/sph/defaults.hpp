@@ -57,7 +57,7 @@ inline constexpr double freeSurfaceDensityFloor = 0.99;
 
 // Cavitation: the most tension [Pa] liquid water holds anywhere, the atmosphere's pressure less
 // the vapour pressure at 20 degC, 101325 - 2339 Pa (Brennen 1995, Cavitation and Bubble Dynamics,
-// sec. 1.2: a liquid at ambient pressure cavitates when it falls to its vapour pressure).
+// ch. 1: water, with the nuclei it holds in practice, cavitates near its vapour pressure).
 // p_i = max(p(rho_i), p_b - maxTension) for every fluid particle (terms/equation_of_state.hpp).
 // It acts only where rho0 c0^2 / 7 > maxTension, c0 > 26 m/s with water, and there only on
 // water stretched by more than 3.5 % (c0 = 56 m/s, as in the default 2D scene). The default 2D
@@ -81,9 +81,8 @@ inline constexpr double inverseR2Eta2 = 0.01;
 // dissipation and alpha would only add to it (in the Taylor-Green vortex at Re = 100, 50 x 50,
 // alpha = 0.02 would add 7.5 % to nu). Measured on the default 2D dam break of 90c88f1 (spacing
 // 0.02 m): with 0, spray reaches 17 m/s (3 times the free-fall speed) and densities 20 % above
-// rest; with 0.02, neither. The default of today (spacing 0.008 m, 21,000 fluid particles) still
-// reaches both once with 0.02, at the surge's impact on the right wall (t = 0.58 s: 17 m/s and
-// 1.2e3 kg/m^3; docs/scenes.md).
+// rest; with 0.02, neither. The default of today (spacing 0.008 m, 21,000 fluid particles), with
+// the tension limits above, reaches neither (docs/scenes.md).
 inline constexpr double artificialViscosity = 0.02;
 inline double artificialViscosityFor(double nu, double h, double c0, int dim) {
     return nu < artificialViscosity * h * c0 / (2 * (dim + 2)) ? artificialViscosity : 0.0;

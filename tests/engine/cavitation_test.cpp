@@ -9,6 +9,7 @@
 #include "sph/defaults.hpp"
 #include "sph/fluid_model.hpp"
 #include "sph/terms/equation_of_state.hpp"
+#include "test_physics.hpp"
 
 namespace {
 
@@ -19,9 +20,9 @@ struct Particle {
     Float density;
 };
 
-/// (density, pressure) of each particle after the term; boundary particles start at pressure -1.
+/// (density, pressure) of each particle after `term`; boundary particles start at pressure -1.
 std::vector<std::pair<Float, Float>> applied(const std::vector<Particle>& particles,
-                                             const EquationOfState& eos, Float maxTension) {
+                                             EquationOfStateTerm<2> term) {
     Storage<2> s;
     std::vector<Vector<2>> x(particles.size());
     std::vector<int> kind;
@@ -32,14 +33,9 @@ std::vector<std::pair<Float, Float>> applied(const std::vector<Particle>& partic
     s.insert<int>(QuantityId::KIND, OrderEnum::ZERO, kind);
     s.insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST, rho);
     s.insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO, p);
-    EquationOfStateTerm<2> term(eos, maxTension);
     SequentialScheduler scheduler;
     term.initialize(scheduler, s, 0.0);
-    std::vector<std::pair<Float, Float>> out;
-    const auto rhoOut = s.getValue<Float>(QuantityId::DENSITY);
-    const auto pOut = s.getValue<Float>(QuantityId::PRESSURE);
-    for (Size i = 0; i < s.size(); ++i) out.emplace_back(rhoOut[i], pOut[i]);
-    return out;
+    return enginetest::densityAndPressure(s);
 }
 
 // The default 2D scene's equation of state: c0 = 56 m/s, B = rho0 c0^2 / 7 = 448 kPa, so that
@@ -61,7 +57,7 @@ TEST(Cavitation, HoldsStretchedWaterAtTheTensionLimit) {
         {ParticleKind::WALL, 900},    // a boundary particle: its pressure is the wall's to set
     };
     ASSERT_LT(eos.pressure(900), eos.backgroundPressure - limit);
-    const auto out = applied(particles, eos, limit);
+    const auto out = applied(particles, EquationOfStateTerm<2>(eos, limit));
     EXPECT_DOUBLE_EQ(out[0].second, eos.backgroundPressure - limit);
     EXPECT_EQ(out[1].second, eos.pressure(990));
     EXPECT_EQ(out[2].second, eos.pressure(1010));
@@ -73,15 +69,8 @@ TEST(Cavitation, NoLimitByDefaultOfTheTerm) {
     // The term alone (as the engine examples build it) applies the equation of state unlimited;
     // FluidModel passes the default limit.
     const EquationOfState eos = fastWater();
-    Storage<2> s;
-    s.insert<Vector<2>>(QuantityId::POSITION, OrderEnum::SECOND, std::vector<Vector<2>>(1));
-    s.insert<int>(QuantityId::KIND, OrderEnum::ZERO, std::vector<int>{int(ParticleKind::FLUID)});
-    s.insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST, std::vector<Float>{900});
-    s.insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO, std::vector<Float>{0});
-    EquationOfStateTerm<2> term(eos);
-    SequentialScheduler scheduler;
-    term.initialize(scheduler, s, 0.0);
-    EXPECT_EQ(s.getValue<Float>(QuantityId::PRESSURE)[0], eos.pressure(900));
+    const auto out = applied({{ParticleKind::FLUID, 900}}, EquationOfStateTerm<2>(eos));
+    EXPECT_EQ(out[0].second, eos.pressure(900));
     EXPECT_EQ(FluidModel<2>().maxTension, defaults::maxTension);
 }
 

@@ -8,6 +8,7 @@
 
 #include "numerics.hpp"
 #include "sph/terms/free_surface.hpp"
+#include "test_physics.hpp"
 
 namespace {
 
@@ -43,11 +44,7 @@ std::vector<std::pair<Float, Float>> limited(const std::vector<Particle>& partic
     limit.setDerivatives(derivatives, settings);
     SequentialScheduler scheduler;
     limit.initialize(scheduler, s, 0.0);
-    std::vector<std::pair<Float, Float>> out;
-    const auto rhoOut = s.getValue<Float>(QuantityId::DENSITY);
-    const auto pOut = s.getValue<Float>(QuantityId::PRESSURE);
-    for (Size i = 0; i < s.size(); ++i) out.emplace_back(rhoOut[i], pOut[i]);
-    return out;
+    return enginetest::densityAndPressure(s);
 }
 
 TEST(FreeSurfaceTensionLimit, RaisesOnlyThinnedSurfaceParticlesToTheFloor) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "numerics.hpp"
@@ -73,6 +74,16 @@ Storage<Dim> randomParticles(Size n, unsigned seed) {
     s.template insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO, p);
     s.template insert<Float>(QuantityId::ENERGY, OrderEnum::FIRST, u);
     return s;
+}
+
+/// (density, pressure) of each particle, for terms that set them.
+template <int Dim>
+std::vector<std::pair<Float, Float>> densityAndPressure(const Storage<Dim>& s) {
+    const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+    const auto p = s.template getValue<Float>(QuantityId::PRESSURE);
+    std::vector<std::pair<Float, Float>> out;
+    for (Size i = 0; i < s.size(); ++i) out.emplace_back(rho[i], p[i]);
+    return out;
 }
 
 }  // namespace enginetest

@@ -662,7 +662,7 @@ case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715
      "Free-slip walls (boundaries.*.slip: true, 2026-12-03, a / 40) leave the early lead as it is "
      "(+0.123, +0.156 at T = 0.83, 1.22) and bring the late front closer (-0.101 at T = 9.24 against "
      "-0.147): 0.156 in all")
-# Documented at H / 80 (4 min on 2 cores); H / 100 is in the miss_note.
+# Documented at H / 80 (4 to 5 min on 2 cores); H / 100 is in the miss_note.
 case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_break_pressure, 0.3 / 80,
      [0.3 / 20, 0.3 / 40, 0.3 / 60, 0.3 / 80], (0.3 / 20, [0.16, 1.9, None]),
      miss_note="the impact peak, and now the arrival. The impact compresses the thin front by about "

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace apptest {
 
@@ -56,6 +58,27 @@ inline void writeFile(const std::string& path, const std::string& text) {
 
 inline bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
+}
+
+/// A CSV file with a header line (particles_*.csv, probes.csv): column name -> values.
+using Table = std::map<std::string, std::vector<double>>;
+
+inline Table readCsv(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    Table table;
+    std::vector<std::string> names;
+    if (std::getline(in, line)) {
+        std::stringstream s(line);
+        for (std::string n; std::getline(s, n, ',');) names.push_back(n);
+    }
+    while (std::getline(in, line)) {
+        std::stringstream s(line);
+        std::string cell;
+        for (std::size_t k = 0; k < names.size() && std::getline(s, cell, ','); ++k)
+            table[names[k]].push_back(std::stod(cell));
+    }
+    return table;
 }
 
 }  // namespace apptest

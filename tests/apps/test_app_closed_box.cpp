@@ -8,42 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "app_runner.hpp"
 
 using namespace apptest;
-
-namespace {
-
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream s(line);
-    for (std::string cell; std::getline(s, cell, ',');) out.push_back(cell);
-    return out;
-}
-
-/// Column `name` of a CSV file with a header line.
-std::vector<double> column(const std::string& path, const std::string& name) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    const std::vector<std::string> header = split(line);
-    std::size_t k = 0;
-    while (k < header.size() && header[k] != name) ++k;
-    EXPECT_LT(k, header.size()) << name << " in " << path;
-    std::vector<double> out;
-    while (std::getline(in, line))
-        if (!line.empty()) out.push_back(std::stod(split(line).at(k)));
-    return out;
-}
-
-}  // namespace
 
 TEST(ClosedBox, HeatedCavityStaysFullUnderTheTopWall) {
     const double dx = 0.05;
@@ -59,8 +31,9 @@ TEST(ClosedBox, HeatedCavityStaysFullUnderTheTopWall) {
     const std::string out = dir + "/out/";
 
     // Fluid within one spacing of the top wall (y = 1) across the whole width.
-    const std::vector<double> x = column(out + "particles_0001.csv", "x");
-    const std::vector<double> y = column(out + "particles_0001.csv", "y");
+    const Table particles = readCsv(out + "particles_0001.csv");
+    const std::vector<double>& x = particles.at("x");
+    const std::vector<double>& y = particles.at("y");
     ASSERT_EQ(x.size(), std::size_t(perRow * perRow));
     int top = 0;
     std::set<int> columns;
@@ -76,7 +49,7 @@ TEST(ClosedBox, HeatedCavityStaysFullUnderTheTopWall) {
     EXPECT_NEAR(pe1 / pe0, 1.0, 0.01);
 
     // The probe just under the top wall sees fluid.
-    const std::vector<double> u40 = column(out + "probes.csv", "u40.vx");
+    const std::vector<double> u40 = readCsv(out + "probes.csv").at("u40.vx");
     ASSERT_FALSE(u40.empty());
     for (double u : u40) EXPECT_TRUE(std::isfinite(u));
 }

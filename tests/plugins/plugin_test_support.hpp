@@ -6,7 +6,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -30,26 +29,8 @@ inline apptest::Result runScene(const std::string& app, const json& scene, const
     return apptest::run(app, "scene.json --out out --threads 1 -q " + args, dir);
 }
 
-/// One CSV output: column name -> values, one per fluid particle.
-using Table = std::map<std::string, std::vector<double>>;
-
-inline Table readCsv(const std::string& path) {
-    std::ifstream in(path);
-    std::string line;
-    Table table;
-    std::vector<std::string> names;
-    if (std::getline(in, line)) {
-        std::stringstream s(line);
-        for (std::string n; std::getline(s, n, ',');) names.push_back(n);
-    }
-    while (std::getline(in, line)) {
-        std::stringstream s(line);
-        std::string cell;
-        for (std::size_t k = 0; k < names.size() && std::getline(s, cell, ','); ++k)
-            table[names[k]].push_back(std::stod(cell));
-    }
-    return table;
-}
+using apptest::readCsv;
+using apptest::Table;
 
 /// The CSV output number k of the run in dir/out ("particles_0004.csv").
 inline Table output(const std::string& dir, int k) {

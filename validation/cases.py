@@ -622,8 +622,19 @@ case("poiseuille_3d", "poiseuille_3d.json", poiseuille, 5e-5, [1e-4, 1e-3 / 15, 
 case("couette_2d", "couette_2d.json", couette, 2.5e-5, [1e-4, 5e-5, 2.5e-5], (5e-5, None))
 case("couette_3d", "couette_3d.json", couette, 5e-5, [1e-4, 1e-3 / 15, 5e-5], (1e-4, None),
      doc_note=_TIME + "was 1e-3 / 30 (30 particles across the channel), now 5e-5 (20 across)")
-case("taylor_green_re100", "taylor_green_re100.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [None, 0.035]))
-case("taylor_green_re1000", "taylor_green_re1000.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [0.056]))
+_PYSPH_TG = ("PySPH's EDAC scheme on the same vortex, at the same Reynolds number and resolution "
+             "(Debian's python3-pysph 1.0b1, python3 -m pysph.examples.taylor_green --scheme edac "
+             "--re {re} --nx NX --tf 2; 2026-12-03): {pysph}. This app: {app}")
+case("taylor_green_re100", "taylor_green_re100.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [None, 0.035]),
+     note=_PYSPH_TG.format(re=100, pysph="l1 0.0216 and max|v| error 0.0185 at 50 x 50, 0.0179 and "
+                           "0.0145 at 100 x 100", app="0.0213 and 0.0044 at 50 x 50 (spacing 0.02), "
+                           "0.0127 and 0.0007 at 100 x 100: no worse at either resolution"))
+case("taylor_green_re1000", "taylor_green_re1000.json", taylor_green, 0.01, [0.04, 0.02, 0.01], (0.02, [0.056]),
+     note=_PYSPH_TG.format(re=1000, pysph="l1 0.0630 and max|v| error 0.0654 at 50 x 50, 0.0223 and "
+                           "0.0117 at 100 x 100", app="0.0360 and 0.0019 at 50 x 50 (spacing 0.02), "
+                           "0.0201 and 0.0050 at 100 x 100: a lower l1 error at either resolution. The "
+                           "issue's anchor, 0.022, is PySPH at Re = 100 and 50 x 50; at Re = 1000 and "
+                           "50 x 50 PySPH's own l1 error is 0.063"))
 # Cavities read from the particles (quadratic_reading, 2026-12-02), four runs at 0.04 (the
 # default, the symmetric pair loop, time.cfl 0.249 and 0.251): Re 100 0.011-0.046 -> 0.07; Re 1000
 # 0.131-0.165, bound 0.21 kept. With the free-surface tension limit (2026-12-03): Re 100

@@ -271,21 +271,25 @@ def hydrostatic(run):
     return checks, notes, profile
 
 
+def surge_front(x, support, dx):
+    """The surge front of particles at x, the column standing from x = 0: the farthest particle
+    still connected to the bulk, connected meaning closer than the kernel support to the next
+    particle along x (spray ahead is not the front), plus half a spacing (a particle stands
+    for the water around it)."""
+    x = np.sort(np.asarray(x))
+    gaps = np.nonzero(np.diff(x) > support)[0]
+    return (x[gaps[0]] if len(gaps) else x[-1]) + dx / 2
+
+
 def dam_break(run):
     ref = read_table("martin_moyce1952.csv")
     a = run.scene["fluids"][0]["max"][0]
     g = abs(run.scene["gravity"][1])
-    dx = run.spacing
-    # The front: the farthest particle still connected to the bulk, connected meaning closer
-    # than the kernel support 2h to the next particle along x (spray ahead is not the front).
     support = 2 * run.summary["smoothing_length"]
     ts, zs = [], []
     for k in range(len(run.frames)):
-        x = np.sort(run.particles(k)["x"])
-        gaps = np.nonzero(np.diff(x) > support)[0]
-        front = x[gaps[0]] if len(gaps) else x[-1]
         ts.append(run.time(k) * math.sqrt(2 * g / a))
-        zs.append((front + dx / 2) / a)
+        zs.append(surge_front(run.particles(k)["x"], support, run.spacing) / a)
     ts, zs = np.array(ts), np.array(zs)
     sel = ref["T"] <= ts[-1]
     zsim = np.interp(ref["T"][sel], ts, zs)
@@ -681,7 +685,14 @@ case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715
      "makes the artificial viscosity stronger with c0: leads +0.128 and +0.101 at T = 1.22, late "
      "fronts -0.228 and -0.340; with the free-surface density floor raised so that the tension it "
      "allows stays the same in pascals (0.9975, 0.999375), the same (late -0.238, -0.293), so that "
-     "tension is not what holds the front back")
+     "tension is not what holds the front back. Another code shows the same lead: PySPH's "
+     "weakly-compressible scheme (WCSPHScheme: Tait, c0 = 10 sqrt(2 g 2a), alpha = 0.1, delta-SPH, "
+     "Debian's python3-pysph 1.0b1) on the same column released at once (a = 1 m, the particles "
+     "of bench/pysph_dam_break_2d.py), its front read as this case reads the app's "
+     "(validation/pysph_martin_moyce.py, 2026-12-03), runs ahead by +0.107, +0.148, +0.125 and "
+     "+0.108 at T = 0.832, 1.219, 1.997 and 2.547 at a / 40 (this app +0.119, +0.149, +0.102, "
+     "+0.080) and by +0.128, +0.169, +0.145 and +0.128 at a / 80 (this app +0.130, +0.160, "
+     "+0.123, +0.104); its tank, 4a long, ends the comparison there")
 # Documented at H / 80 (4 to 5 min on 2 cores); H / 100 is in the miss_note.
 case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_break_pressure, 0.3 / 80,
      [0.3 / 20, 0.3 / 40, 0.3 / 60, 0.3 / 80], (0.3 / 20, [0.16, 1.9, None]),

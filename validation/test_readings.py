@@ -59,5 +59,17 @@ class Peak(unittest.TestCase):
         self.assertAlmostEqual(at, 0.437, places=12)
 
 
+class SurgeFront(unittest.TestCase):
+    def test_is_the_last_connected_particle_not_the_spray_ahead(self):
+        dx, support = 0.01, 0.03
+        bulk = (np.arange(50) + 0.5) * dx  # 0.005 to 0.495, spaced dx
+        spray = np.array([0.53, 0.9])  # 0.035 and then 0.37 beyond the bulk: both detached
+        x = np.concatenate([spray, bulk[::-1]])  # in no particular order
+        self.assertAlmostEqual(cases.surge_front(x, support, dx), 0.495 + dx / 2, places=12)
+
+    def test_without_a_gap_is_the_farthest_particle(self):
+        self.assertAlmostEqual(cases.surge_front([0.3, 0.1, 0.2], 0.15, 0.1), 0.35, places=12)
+
+
 if __name__ == "__main__":
     unittest.main()

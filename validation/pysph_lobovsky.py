@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""PySPH beside the app on Lobovsky et al.'s wall pressure: PySPH's weakly-compressible scheme
+(WCSPHScheme: Tait with the app's sound speed for this scene, 34.3 m/s; artificial viscosity
+alpha = 0.1; delta-SPH) on the tank of scenes/validation/dam_break_pressure_lobovsky.json, its
+pressure read at sensor 2 every step as the app's probe reads it (a Shepard sum over the fluid
+particles within the kernel support) and measured as validation/cases.py measures the app's.
+
+    /usr/bin/python3 validation/pysph_lobovsky.py [--dx 0.0075] [--openmp]
+
+Needs Debian's python3-pysph. The particles stand on the app's lattice (cell centres), with three
+layers of wall particles around the tank; the tank is a whole number of spacings long, 1.6125 m
+at the default H / 40 instead of 1.61."""
+import argparse
+import os
+import sys
+
+import numpy as np
+from pysph.base.kernels import WendlandQuintic
+from pysph.base.utils import get_particle_array
+from pysph.solver.application import Application
+from pysph.sph.scheme import WCSPHScheme
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cases  # noqa: E402
+
+G, RHO0, H, C0, HDX = 9.81, 1000.0, 0.3, 34.31, 1.5  # the app's c0 and h / dx for this scene
+TANK, TOP, COLUMN, SENSOR2 = 1.61, 0.6, 0.6, 0.015
+
+
+class WallPressure(Application):
+    def __init__(self, dx, end, **kw):
+        self.dx, self.h, self.end = dx, HDX * dx, end
+        self.nx = int(round(TANK / dx))
+        self.probe = np.array([self.nx * dx, SENSOR2])  # on the far wall's face
+        self.samples = []
+        super().__init__(**kw)
+
+    def create_scheme(self):
+        return WCSPHScheme(["fluid"], ["wall"], dim=2, rho0=RHO0, c0=C0, h0=self.h, hdx=HDX,
+                           gy=-G, alpha=0.1, beta=0.0, gamma=7.0, delta_sph=True, delta=0.1)
+
+    def configure_scheme(self):
+        self.scheme.configure_solver(kernel=WendlandQuintic(dim=2), dt=0.125 * self.h / C0,
+                                     tf=self.end, adaptive_timestep=False, pfreq=10**9)
+
+    def create_particles(self):
+        dx, layers = self.dx, 3
+        ix, iy = np.meshgrid(np.arange(-layers, self.nx + layers),
+                             np.arange(-layers, int(round(TOP / dx)) + layers))
+        ix, iy = ix.ravel(), iy.ravel()
+        wall = (ix < 0) | (ix >= self.nx) | (iy < 0) | (iy >= int(round(TOP / dx)))
+        jx, jy = np.meshgrid(np.arange(int(round(COLUMN / dx))), np.arange(int(round(H / dx))))
+        m = RHO0 * dx * dx
+        fluid = get_particle_array(name="fluid", x=(jx.ravel() + 0.5) * dx,
+                                   y=(jy.ravel() + 0.5) * dx, h=self.h, m=m, rho=RHO0)
+        walls = get_particle_array(name="wall", x=(ix[wall] + 0.5) * dx, y=(iy[wall] + 0.5) * dx,
+                                   h=self.h, m=m, rho=RHO0)
+        self.scheme.setup_properties([fluid, walls])
+        return [fluid, walls]
+
+    def post_step(self, solver):
+        f = self.particles[0]
+        q = np.hypot(f.x - self.probe[0], f.y - self.probe[1]) / self.h
+        near = q < 2
+        w = f.m[near] / f.rho[near] * (1 - q[near] / 2) ** 4 * (2 * q[near] + 1)
+        p = float(np.sum(w * f.p[near]) / np.sum(w)) if near.any() else float("nan")
+        self.samples.append((solver.t, p))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--dx", type=float, default=H / 40, help="spacing [m] (H / 40 by default)")
+    ap.add_argument("--openmp", action="store_true")
+    args = ap.parse_args()
+    app = WallPressure(args.dx, 5.7 / np.sqrt(G / H), fname="lobovsky")
+    app.setup(["--disable-output", "-q"] + (["--openmp"] if args.openmp else []))
+    app.solver.solve(show_progress=False)
+    t, p = np.array(app.samples).T
+    checks, notes, _ = cases.sensor2_figures(t * np.sqrt(G / H), p / (RHO0 * G * H))
+    print(f"PySPH WCSPH, dx = {args.dx:g} m (H / {H / args.dx:g}), "
+          f"{app.particles[0].get_number_of_particles()} fluid particles, {len(t)} steps")
+    for c in checks:
+        print(f"{c['metric']}: {c['value']:.4g} (gate {c['gate']:g})")
+    print(notes)
+
+
+if __name__ == "__main__":
+    main()

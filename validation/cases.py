@@ -747,8 +747,8 @@ case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_brea
      "python3-pysph 1.0b1) in the same tank, its pressure at sensor 2 read every step as the app's "
      "probe reads it and measured as here (validation/pysph_lobovsky.py, 2026-12-03): arrival "
      "T = 2.790, 2.563 and 2.449 at H / 20, 40 and 80 (this app 2.794, 2.623, 2.523), within the "
-     "gate at H / 80 (0.0058), as this app's front was without tension and with walls at rest "
-     "(above); peak 11.19, 4.41 and 3.37 (this app 3.92, 4.01, 3.02); mean P 0.819, 0.457 and "
+     "gate at H / 80 (0.0058), as this app's front was with no tension (2.478) and with walls at "
+     "rest (2.490; both with the probes at 1 kHz, above); peak 11.19, 4.41 and 3.37 (this app 3.92, 4.01, 3.02); mean P 0.819, 0.457 and "
      "0.017 (this app 0.540, 0.613, 0.610; the cause of PySPH's 0.017 was not looked into). Its "
      "peak misses by more than this app's")
 # Each is documented at the finest spacing of its study: Ra = 1e3 and 1e4 at 0.01 (100 x 100),

@@ -56,9 +56,8 @@ def main():
             ts.append(data["solver_data"]["t"] * scale)
             zs.append(cases.surge_front(data["arrays"]["fluid"].x, 2 * bench.HDX * args.dx, args.dx) / A)
     ts, zs = np.array(ts), np.array(zs)
-    # Only where the front has not reached the far wall.
-    free = ts[zs < TANK / A - 0.1]
-    sel = (ref["T"] <= free[-1]) & (ref["T"] <= ts[-1])
+    # Only while the front has not reached the far wall.
+    sel = ref["T"] <= ts[zs < TANK / A - 0.1][-1]
     zsim = np.interp(ref["T"][sel], ts, zs)
     print(f"PySPH WCSPH, dx = {args.dx:g} m (a / {A / args.dx:g}), {app.particles[0].get_number_of_particles()} "
           f"fluid particles; Z = z / a against T = t sqrt(2 g / a)")

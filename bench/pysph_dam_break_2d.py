@@ -26,11 +26,12 @@ HDX = 1.3
 
 
 class DamBreakBench(Application):
-    def __init__(self, dx, steps, end_time=None, **kw):
+    def __init__(self, dx, steps, end_time=None, pfreq=10**9, **kw):
         self.dx = dx
         self.h = HDX * dx
         self.steps = steps
         self.end_time = end_time
+        self.pfreq = pfreq  # particle files every pfreq steps (by default none but the first)
         super().__init__(**kw)
 
     def create_scheme(self):
@@ -43,26 +44,34 @@ class DamBreakBench(Application):
         self.scheme.configure_solver(kernel=WendlandQuintic(dim=2), dt=dt,
                                      tf=self.end_time or dt * self.steps,
                                      adaptive_timestep=False,
-                                     pfreq=10**9)
+                                     pfreq=self.pfreq)
 
     def create_particles(self):
-        # The same lattice as numerics' fluid model (cell centres, x = (i + 1/2) dx): a 1 m x 2 m
-        # column of fluid and three wall layers outside the left, right and bottom sides of the
-        # 4 m x 4 m tank, so both codes step exactly the same particles.
-        dx = self.dx
-        layers = 3
-        n_tank = int(round(4.0 / dx))
-        ix, iy = np.meshgrid(np.arange(-layers, n_tank + layers), np.arange(-layers, n_tank))
-        ix, iy = ix.ravel(), iy.ravel()
-        wall = (ix < 0) | (ix >= n_tank) | (iy < 0)
-        xt, yt = (ix[wall] + 0.5) * dx, (iy[wall] + 0.5) * dx
-        jx, jy = np.meshgrid(np.arange(int(round(1.0 / dx))), np.arange(int(round(H_COLUMN / dx))))
-        xf, yf = (jx.ravel() + 0.5) * dx, (jy.ravel() + 0.5) * dx
-        m = RHO0 * dx * dx
-        fluid = get_particle_array(name='fluid', x=xf, y=yf, h=self.h, m=m, rho=RHO0)
-        boundary = get_particle_array(name='boundary', x=xt, y=yt, h=self.h, m=m, rho=RHO0)
-        self.scheme.setup_properties([fluid, boundary])
-        return [fluid, boundary]
+        # A 1 m x 2 m column in a 4 m x 4 m tank, open at the top, so both codes step exactly
+        # the same particles.
+        arrays = lattice_tank(self.dx, self.h, (4.0, 4.0), (1.0, H_COLUMN), top=False)
+        self.scheme.setup_properties(arrays)
+        return arrays
+
+
+def lattice_tank(dx, h, tank, column, top, wall_name='boundary', layers=3):
+    """numerics' lattice (cell centres, x = (i + 1/2) dx) as PySPH particle arrays [fluid,
+    walls]: a column [0, column[0]] x [0, column[1]] of fluid, and `layers` layers of wall
+    particles outside the left, right and bottom sides of the tank [0, tank[0]] x [0, tank[1]]
+    (and above it when top)."""
+    nx, ny = int(round(tank[0] / dx)), int(round(tank[1] / dx))
+    ix, iy = np.meshgrid(np.arange(-layers, nx + layers),
+                         np.arange(-layers, ny + (layers if top else 0)))
+    ix, iy = ix.ravel(), iy.ravel()
+    wall = (ix < 0) | (ix >= nx) | (iy < 0) | (iy >= ny)
+    jx, jy = np.meshgrid(np.arange(int(round(column[0] / dx))),
+                         np.arange(int(round(column[1] / dx))))
+    m = RHO0 * dx * dx
+    fluid = get_particle_array(name='fluid', x=(jx.ravel() + 0.5) * dx, y=(jy.ravel() + 0.5) * dx,
+                               h=h, m=m, rho=RHO0)
+    walls = get_particle_array(name=wall_name, x=(ix[wall] + 0.5) * dx, y=(iy[wall] + 0.5) * dx,
+                               h=h, m=m, rho=RHO0)
+    return [fluid, walls]
 
 
 def main():

@@ -716,7 +716,8 @@ case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_brea
      "arrived at T = 2.478, within the arrival gate. With the default tension limit (free-surface "
      "density floor 0.99 rho0, docs/physics.md) the front, a few particles thick, is held back by the "
      "tension it now has. The arrival with the spacing: T = 2.794, 2.623, 2.578 and 2.523 at H / 20 to "
-     "H / 80 and 2.538 at H / 100 (2.554 and peak 2.44 there at 1 kHz); with no tension 2.752, 2.588, 2.524 and 2.478 to H / 80 (1 kHz). Measured through "
+     "H / 80 and 2.538 at H / 100 (2.554 and peak 2.44 there at 1 kHz); with no tension 2.752, "
+     "2.588, 2.524 and 2.478 to H / 80 (1 kHz). Measured through "
      "the app (1 kHz): floor 0.98, peak 3.01 and arrival 2.528 at H / 80; no limit at all "
      "(physics.free_surface_clamp: false), peak 3.0 but the run at H / 80 is lost at t = 0.567 s (a "
      "density of 481 kg/m^3 in the film left on the wall behind the column); a sound speed twice and "
@@ -748,8 +749,8 @@ case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_brea
      "probe reads it and measured as here (validation/pysph_lobovsky.py, 2026-12-03): arrival "
      "T = 2.790, 2.563 and 2.449 at H / 20, 40 and 80 (this app 2.794, 2.623, 2.523), within the "
      "gate at H / 80 (0.0058), as this app's front was with no tension (2.478) and with walls at "
-     "rest (2.490; both with the probes at 1 kHz, above); peak 11.19, 4.41 and 3.37 (this app 3.92, 4.01, 3.02); mean P 0.819, 0.457 and "
-     "0.017 (this app 0.540, 0.613, 0.610; the cause of PySPH's 0.017 was not looked into). Its "
+     "rest (2.490; both with the probes at 1 kHz, above); peak 11.19, 4.41 and 3.37 (this app "
+     "3.92, 4.01, 3.02); mean P 0.819, 0.457 and 0.017 (this app 0.540, 0.613, 0.610; the cause of PySPH's 0.017 was not looked into). Its "
      "peak misses by more than this app's")
 # Each is documented at the finest spacing of its study: Ra = 1e3 and 1e4 at 0.01 (100 x 100),
 # Ra = 1e5 at 0.008 (125 x 125, 25 min). Until 2026-12-02 Ra = 1e3 and 1e4 were documented at 0.02

@@ -17,22 +17,24 @@ import tempfile
 
 import numpy as np
 from pysph.base.kernels import WendlandQuintic
-from pysph.base.utils import get_particle_array
 from pysph.solver.application import Application
 from pysph.sph.scheme import WCSPHScheme
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.join(HERE, "..", "bench"))
 import cases  # noqa: E402
+import pysph_dam_break_2d as bench  # noqa: E402
 
-G, RHO0, H, C0, HDX = 9.81, 1000.0, 0.3, 34.31, 1.5  # the app's c0 and h / dx for this scene
+G, RHO0 = bench.G, bench.RHO0
+H, C0, HDX = 0.3, 34.31, 1.5  # the app's c0 and h / dx for this scene
 TANK, TOP, COLUMN, SENSOR2 = 1.61, 0.6, 0.6, 0.015
 
 
 class WallPressure(Application):
     def __init__(self, dx, end, **kw):
         self.dx, self.h, self.end = dx, HDX * dx, end
-        self.nx = int(round(TANK / dx))
-        self.probe = np.array([self.nx * dx, SENSOR2])  # on the far wall's face
+        self.probe = np.array([round(TANK / dx) * dx, SENSOR2])  # on the far wall's face
         self.samples = []
         super().__init__(**kw)
 
@@ -45,19 +47,10 @@ class WallPressure(Application):
                                      tf=self.end, adaptive_timestep=False, pfreq=10**9)
 
     def create_particles(self):
-        dx, layers = self.dx, 3
-        ix, iy = np.meshgrid(np.arange(-layers, self.nx + layers),
-                             np.arange(-layers, int(round(TOP / dx)) + layers))
-        ix, iy = ix.ravel(), iy.ravel()
-        wall = (ix < 0) | (ix >= self.nx) | (iy < 0) | (iy >= int(round(TOP / dx)))
-        jx, jy = np.meshgrid(np.arange(int(round(COLUMN / dx))), np.arange(int(round(H / dx))))
-        m = RHO0 * dx * dx
-        fluid = get_particle_array(name="fluid", x=(jx.ravel() + 0.5) * dx,
-                                   y=(jy.ravel() + 0.5) * dx, h=self.h, m=m, rho=RHO0)
-        walls = get_particle_array(name="wall", x=(ix[wall] + 0.5) * dx, y=(iy[wall] + 0.5) * dx,
-                                   h=self.h, m=m, rho=RHO0)
-        self.scheme.setup_properties([fluid, walls])
-        return [fluid, walls]
+        arrays = bench.lattice_tank(self.dx, self.h, (TANK, TOP), (COLUMN, H), top=True,
+                                    wall_name="wall")
+        self.scheme.setup_properties(arrays)
+        return arrays
 
     def post_step(self, solver):
         f = self.particles[0]

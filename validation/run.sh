@@ -3,10 +3,13 @@
 # convergence study, and rewrites docs/validation.md with its plots (docs/validation/*.png).
 #   validation/run.sh [build-dir]      (default build/release)
 # Each run is `validation/cases.py run CASE --spacing DX` (the scene of scenes/validation/, the
-# app, its defaults); its result is kept as docs/validation/results/CASE@DX.json, from which
-# validation/report.py writes the report (a run that fails leaves no result, never an older one). Environment:
-#   NUMERICS_VALIDATION_CASES="a b"   only these cases (the others keep their stored results)
-#   NUMERICS_VALIDATION_KEEP=1        skip runs whose result is already stored
+# app, its defaults); its full result goes to docs/validation/results/CASE@DX.json (not kept in
+# git: the profiles for the plots are most of it). validation/report.py then replaces the run's
+# entry in docs/validation/summary.json (every run's figures, without profiles; kept in git) and
+# writes the report from that summary (a run that fails is recorded as failed, never left with an
+# older result). Environment:
+#   NUMERICS_VALIDATION_CASES="a b"   only these cases (the others keep their figures and plots)
+#   NUMERICS_VALIDATION_KEEP=1        skip runs whose full result is already in docs/validation/results
 #   NUMERICS_THREADS=N                threads of each app run (default 2); one run at a time
 # Needs Debian's python3-numpy and python3-matplotlib (scripts/setup.sh).
 set -euo pipefail
@@ -33,11 +36,19 @@ for c in $cases; do
     out="$results/$c@$dx.json"
     if [ "${NUMERICS_VALIDATION_KEEP:-0}" = 1 ] && [ -f "$out" ]; then continue; fi
     echo "== $c, spacing $dx"
-    "$py" validation/cases.py run "$c" --spacing "$dx" --bin "$build/apps" --threads "$threads" \
-      --json "$out.tmp" && mv "$out.tmp" "$out" || { status=1; rm -f "$out.tmp" "$out"; }
+    if "$py" validation/cases.py run "$c" --spacing "$dx" --bin "$build/apps" --threads "$threads" \
+      --json "$out.tmp"; then
+      mv "$out.tmp" "$out"
+    else
+      status=1
+      # cases.py records why the run failed; if it could not, a record of the failure all the same
+      [ -s "$out.tmp" ] || printf '{"case": "%s", "spacing": %s, "failed": "validation/cases.py failed"}\n' \
+        "$c" "$dx" >"$out.tmp"
+      mv "$out.tmp" "$out"
+    fi
   done
 done
 
-"$py" validation/report.py "$results" docs/validation.md docs/validation
+"$py" validation/report.py "$results" docs/validation/summary.json docs/validation.md docs/validation
 echo "wrote docs/validation.md"
 exit $status

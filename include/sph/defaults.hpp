@@ -16,14 +16,14 @@ inline constexpr double hOverSpacing = 1.5;
 
 // The pair loop: "asymmetric" (each particle gathers from all its neighbours) or "symmetric"
 // (each pair once, both particles written; momentum conserved to round-off, other round-off).
-// In 2D the gather loops are now the faster (the default scene: the symmetric loop takes 1.17
-// times as long; the 2D engine 1.03 to 1.3 times, docs/performance.md); on the 3D dam break the
-// symmetric loop was 1.3 times as fast before they were optimised. The validation report
-// measures the asymmetric loop; the symmetric one is selectable from a scene
-// (particles.evaluation).
+// Asymmetric because it is the faster in 2D (the symmetric loop takes 1.17 times as long on the
+// default scene, the 2D engine 1.03 to 1.3 times: docs/performance.md), it needs no per-thread
+// sums (less memory), and it is the loop the validation report measures; the symmetric one is
+// selectable from a scene (particles.evaluation).
 inline constexpr const char* evaluation = "asymmetric";
 
-// Time step: dt <= cfl h / (c0 + max|v|).
+// Time step: dt <= cfl h / (c0 + max|v|), cfl = 0.25, the acoustic limit of Morris, Fox & Zhu
+// (1997, J. Comput. Phys. 136, 214).
 inline constexpr double cfl = 0.25;
 
 // Weakly-compressible equation of state: Tait, gamma = 7, c0 = 10 U for an "auto" sound speed
@@ -35,13 +35,15 @@ inline constexpr double soundSpeedFactor = 10;
 // Density by continuity with delta-SPH diffusion (Molteni & Colagrossi 2009), delta = 0.1.
 inline constexpr double densityDiffusion = 0.1;
 
-// Particle shifting dr = -A h c0 dt grad C with A = 0.5 (terms/particle_shifting.hpp).
+// Particle shifting dr = -A h c0 dt grad C with A = 0.5 (terms/particle_shifting.hpp: the law,
+// its sources and its tests); without shifting natural convection at Ra = 1e4 comes out 10 %
+// low (docs/validation.md).
 inline constexpr bool shifting = true;
 inline constexpr double shiftingCoefficient = 0.5;
 // Within a kernel support of a wall or body, particles are shifted along the wall only: the
 // component towards or away from it damps the boundary layer (lid-driven cavity, Re = 100,
-// 50 x 50: error on Ghia et al.'s profiles 0.026 of the lid speed along walls only, 0.102 with
-// it before the continuity fix and 0.040 without it then; terms/particle_shifting.hpp).
+// 50 x 50: error on Ghia et al.'s profiles 0.026 of the lid speed with shifting along walls
+// only; terms/particle_shifting.hpp).
 inline constexpr bool shiftingNormalToWalls = false;
 
 // A tension limit at free surfaces (terms/free_surface.hpp): where a particle's kernel support is
@@ -79,10 +81,9 @@ inline constexpr double inverseR2Eta2 = 0.01;
 // alpha h c0 / (2 (Dim + 2)) (Monaghan 2005, Rep. Prog. Phys. 68, 1703, eq. 4.10), as for water
 // in a dam break at any practical spacing; else 0, since there the laminar term resolves the
 // dissipation and alpha would only add to it (in the Taylor-Green vortex at Re = 100, 50 x 50,
-// alpha = 0.02 would add 7.5 % to nu). Measured on the default 2D dam break of 90c88f1 (spacing
-// 0.02 m): with 0, spray reaches 17 m/s (3 times the free-fall speed) and densities 20 % above
-// rest; with 0.02, neither. The default of today (spacing 0.008 m, 21,000 fluid particles), with
-// the tension limits above, reaches neither (docs/scenes.md).
+// alpha = 0.02 would add 7.5 % to nu). Why 0.02 in a dam break: without it, the 2D dam break at
+// a spacing of 0.02 m threw spray at 17 m/s (3 times the free-fall speed) and compressed water
+// 20 % above rest; with 0.02, neither (nor in the default 2D scene, docs/scenes.md).
 inline constexpr double artificialViscosity = 0.02;
 inline double artificialViscosityFor(double nu, double h, double c0, int dim) {
     return nu < artificialViscosity * h * c0 / (2 * (dim + 2)) ? artificialViscosity : 0.0;

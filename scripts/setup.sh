@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages numerics needs, only those that are missing. Idempotent and quiet
 # when nothing is missing. Runs as root, or through sudo when available.
+#   scripts/setup.sh           what building, running and testing need
+#   scripts/setup.sh --tests   and the test-only tools (scripts/test.sh): ParaView, meshio, Xvfb
 set -euo pipefail
 
 packages=(
@@ -17,6 +19,20 @@ packages=(
   python3-matplotlib             # validation: plots of docs/validation.md (validation/run.sh)
   libopenmpi-dev openmpi-bin     # several processes (mpirun): MPI domain decomposition
 )
+
+# Test-only: the outputs opened by the tools users open them with (tests/tools, label tools).
+# ParaView is about 550 MB installed, so scripts/run.sh does not install these.
+test_packages=(
+  paraview python3-paraview      # tests/tools: pvbatch runs <prefix>_paraview.py, renders a picture
+  xvfb xauth                     # tests/tools: a virtual display for pvbatch (xvfb-run)
+  python3-meshio                 # tests/tools: meshio reads the VTU files
+  python3-pil                    # tests/tools: reads the pixels of ParaView's picture
+)
+case "${1:-}" in
+  "") ;;
+  --tests) packages+=("${test_packages[@]}") ;;
+  *) echo "usage: $0 [--tests]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

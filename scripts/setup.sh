@@ -24,7 +24,7 @@ packages=(
 # ParaView is about 550 MB installed, so scripts/run.sh does not install these.
 test_packages=(
   paraview python3-paraview      # tests/tools: pvbatch runs <prefix>_paraview.py, renders a picture
-  xvfb xauth                     # tests/tools: a virtual display for pvbatch (xvfb-run)
+  xvfb                           # tests/tools: a virtual X display for pvbatch (Xvfb)
   python3-meshio                 # tests/tools: meshio reads the VTU files
   python3-pil                    # tests/tools: reads the pixels of ParaView's picture
 )

@@ -21,7 +21,7 @@ packages=(
 )
 
 # Test-only: the outputs opened by the tools users open them with (tests/tools, label tools).
-# ParaView is about 550 MB installed, so scripts/run.sh does not install these.
+# ParaView with its libraries is about 700 MB installed, so scripts/run.sh does not install these.
 test_packages=(
   paraview python3-paraview      # tests/tools: pvbatch runs <prefix>_paraview.py, renders a picture
   xvfb                           # tests/tools: a virtual X display for pvbatch (Xvfb)

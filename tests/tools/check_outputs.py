@@ -7,12 +7,14 @@ with (label tools in ctest):
   check_outputs.py paraview OUT        ParaView (pvbatch) runs particles_paraview.py --screenshot;
                                        the picture's pixels show the particles, coloured by
                                        temperature
-  check_outputs.py movie OUT           ffprobe decodes particles.mp4: one frame per picture
+  check_outputs.py movie OUT           ffprobe decodes particles.mp4: one frame per picture, and
+                                       each frame (decoded by ffmpeg) is its picture
 
 Each check exits 0 when it passes, 1 when it fails (with the reason), and 77 (ctest's
 SKIP_RETURN_CODE) with the reason when its tool is not installed (scripts/setup.sh --tests
 installs them). The scenes are those of tests/tools/scenes: hot water (70 C) at low x beside
-cold water (10 C) at high x, a few steps, so that nothing here depends on the flow.
+cold water (10 C) at high x, a few steps, so that nothing here depends on the flow; in 2D
+also a body at 40 C above the hot water.
 """
 
 import glob
@@ -294,7 +296,14 @@ def check_paraview(out):
     check(warm_x + 0.05 * w < cool_x,
           f"{picture}: hot water (mean column {warm_x:.0f}) is not left of the cold "
           f"({cool_x:.0f})")
-    if dim == 2:  # side by side: the left half hot, the right half cold
+    if dim == 2:
+        # The body at 40 C, the middle of the colour range: light grey, above the hot water.
+        neutral = particle & (np.abs(red - blue) < 40) & (img.min(axis=2) > 150)
+        upper_left = (xs < w // 2) & (np.arange(h)[:, None] < h // 2)
+        print(f"body (light grey, upper left): {frac(neutral & upper_left):.2%} of the picture")
+        check(frac(neutral & upper_left) >= 0.001,
+              f"{picture}: the body at 40 C covers {frac(neutral & upper_left):.2%}")
+        # Side by side: the left half hot, the right half cold.
         left, right = xs < w // 2, xs >= w // 2
         hot_left = np.count_nonzero(warm & region & left) / np.count_nonzero(warm & region)
         cold_right = np.count_nonzero(cool & region & right) / np.count_nonzero(cool & region)

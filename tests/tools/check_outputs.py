@@ -224,6 +224,16 @@ class VirtualDisplay:
         return False
 
 
+def run_pvbatch(out, cmd, env):
+    # A hang guard below ctest's TIMEOUT (600 s), so that Xvfb is stopped after a hung pvbatch:
+    # about 15 s on 2 busy cores.
+    try:
+        return subprocess.run(cmd, cwd=out, env=env, capture_output=True, text=True,
+                              check=False, timeout=400)
+    except subprocess.TimeoutExpired as e:
+        raise Failure(f"pvbatch hung (killed after {e.timeout} s)") from e
+
+
 def render(out, cmd):
     """Runs cmd on a display of its own (Xvfb), or, without Xvfb, on the session's display."""
     # pvbatch starts as a one-process MPI program: Open MPI wants a launcher agent (ssh or rsh)
@@ -231,11 +241,11 @@ def render(out, cmd):
     env = dict(os.environ)
     env.setdefault("OMPI_MCA_plm_rsh_agent", "false")
     if shutil.which("Xvfb") is None and env.get("DISPLAY"):
-        return subprocess.run(cmd, cwd=out, env=env, capture_output=True, text=True, check=False)
+        return run_pvbatch(out, cmd, env)
     with VirtualDisplay() as x:
         print(f"DISPLAY={x.display} (Xvfb)")
         env["DISPLAY"] = x.display
-        return subprocess.run(cmd, cwd=out, env=env, capture_output=True, text=True, check=False)
+        return run_pvbatch(out, cmd, env)
 
 
 def load_png(path):

@@ -45,6 +45,7 @@
 #include <optional>
 #include <vector>
 
+#include "sph/formulas/post_step.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/free_surface.hpp"
@@ -199,15 +200,12 @@ class ParticleShifting : public IEquationTerm<Dim> {
                 if (!isFluid(kind[i]) || atFreeSurface(c[i], volume[i], w0) || nearSurface[i] > 0 ||
                     !(dt > 0))
                     continue;
-                Vec dr = gradC[i] * (-diffusion);
-                const Vec& n = wallDirection[i];
-                if (const Float nn = normSqr(n); !normalToWalls_ && nn > 0)
-                    dr -= n * (dot(dr, n) / nn);
-                const Float len = norm(dr);
-                if (len > cap) dr *= cap / len;
-                x[i] += dr;
-                for (int k = 0; k < Dim; ++k) v[i] += gradV[k][i] * dr[k];
-                if (continuity) rho[i] += dot(gradRho[i], dr);
+                const Vec dr = formulas::shiftingDisplacement<Dim>(gradC[i], wallDirection[i],
+                                                                   diffusion, normalToWalls_, cap);
+                Vec columns[Dim];
+                for (int k = 0; k < Dim; ++k) columns[k] = gradV[k][i];
+                formulas::shiftParticle<Dim>(x[i], v[i], rho[i], continuity, dr, gradRho[i],
+                                             columns);
             }
         });
     }

@@ -21,20 +21,12 @@
 
 #include <memory>
 
+#include "sph/formulas/fluid_particles.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/terms/equation_of_state.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
-
-/// The kernel sum below which a particle's support is cut: the particle is at a free surface.
-inline constexpr Float surfaceKernelSum = 0.9;
-
-/// Whether a particle is at a free surface, from KERNEL_SUM (its neighbours' sum), its volume
-/// V_i and W(0): C_i = KERNEL_SUM_i + V_i W(0) < 0.9.
-inline bool atFreeSurface(Float neighbourSum, Float volume, Float w0) {
-    return neighbourSum + volume * w0 < surfaceKernelSum;
-}
 
 /// sum_{j != i} V_j W_ij into KERNEL_SUM, and the same sum over the neighbours that were
 /// free-surface particles in the previous evaluation into SURFACE_NEIGHBOURS.

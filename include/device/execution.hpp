@@ -21,16 +21,7 @@
 #include <utility>
 #include <vector>
 
-#if __has_include("sph/host_device.hpp")
 #include "sph/host_device.hpp"
-#endif
-#ifndef NUMERICS_HD  // until the shared header is there
-#ifdef __CUDACC__
-#define NUMERICS_HD __host__ __device__
-#else
-#define NUMERICS_HD
-#endif
-#endif
 
 namespace num::device {
 

@@ -52,8 +52,7 @@ class CudaExecution {
     }
     template <class T>
     void download(T* host, const T* device, std::size_t n) {
-        if (n)
-            check(cudaMemcpy(host, device, n * sizeof(T), cudaMemcpyDeviceToHost), "download");
+        if (n) check(cudaMemcpy(host, device, n * sizeof(T), cudaMemcpyDeviceToHost), "download");
     }
     template <class T>
     void copy(T* to, const T* from, std::size_t n) {
@@ -83,8 +82,8 @@ class CudaExecution {
         return fetchResult();
     }
 
-    void sortPairs(const CellKey* keysIn, CellKey* keysOut, const Index* valuesIn,
-                   Index* valuesOut, Index n, int keyBits) {
+    void sortPairs(const SortKey* keysIn, SortKey* keysOut, const Index* valuesIn, Index* valuesOut,
+                   Index n, int keyBits) {
         std::size_t bytes = 0;
         check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keysIn, keysOut, valuesIn, valuesOut,
                                               int(n), 0, keyBits),

@@ -27,8 +27,10 @@ namespace num::device {
 
 /// A particle's index on the device (up to 4e9 particles).
 using Index = std::uint32_t;
-/// A particle's cell key for the sort.
+/// A particle's cell.
 using CellKey = std::uint32_t;
+/// What the cell sort sorts by: the cell in the upper 32 bits, a tie-break in the lower.
+using SortKey = std::uint64_t;
 
 /// A failure of the device (allocation, launch, a call of the CUDA runtime).
 struct DeviceError : std::runtime_error {
@@ -79,8 +81,8 @@ class HostExecution {
 
     /// Sorts the pairs (keysIn[k], valuesIn[k]) by key, stably, into keysOut / valuesOut.
     /// keyBits: the keys are below 2^keyBits.
-    void sortPairs(const CellKey* keysIn, CellKey* keysOut, const Index* valuesIn,
-                   Index* valuesOut, Index n, int /*keyBits*/) {
+    void sortPairs(const SortKey* keysIn, SortKey* keysOut, const Index* valuesIn, Index* valuesOut,
+                   Index n, int /*keyBits*/) {
         pairs_.resize(n);
         for (Index k = 0; k < n; ++k) pairs_[k] = {keysIn[k], valuesIn[k]};
         std::stable_sort(pairs_.begin(), pairs_.end(),
@@ -91,7 +93,7 @@ class HostExecution {
     void synchronize() {}
 
   private:
-    std::vector<std::pair<CellKey, Index>> pairs_;
+    std::vector<std::pair<SortKey, Index>> pairs_;
 };
 
 /// An array in the memory of an execution (RAII): allocated by the execution, never copied.
@@ -123,6 +125,9 @@ class Buffer {
     void download(std::vector<T>& host) const {
         host.resize(size_);
         exec_->download(host.data(), data_, size_);
+    }
+    void swap(Buffer& o) noexcept {
+        std::swap(exec_, o.exec_), std::swap(data_, o.data_), std::swap(size_, o.size_);
     }
     T* data() { return data_; }
     const T* data() const { return data_; }

@@ -24,7 +24,7 @@ struct FluidStepConfig {
     // Kernel.
     sph::KernelType kernel = sph::KernelType::WENDLAND_C2;
     Float h = 0, supportRadius = 0;
-    Float w0 = 0;  ///< W(0), for the free-surface test
+    Float w0 = 0;                                ///< W(0), for the free-surface test
     Float laplacianEta2 = 0, inverseR2Eta2 = 0;  ///< eta^2 of the two pair factors [m^2]
     // Equation of state, tension limits.
     sph::EquationOfState eos;
@@ -40,8 +40,8 @@ struct FluidStepConfig {
     bool shifting = false;
     Float shiftingCoefficient = 0;
     bool shiftingNormalToWalls = false;
-    bool contain = false;               ///< containment in the box's walls
-    bool wallLow[Dim] = {}, wallHigh[Dim] = {};  ///< which box sides are walls
+    bool contain = false;                         ///< containment in the box's walls
+    bool wallLow[Dim] = {}, wallHigh[Dim] = {};   ///< which box sides are walls
     std::function<Vector<Dim>(Float)> bodyForce;  ///< empty: none
     // Domain.
     Vector<Dim> domainMin{}, domainMax{};
@@ -71,6 +71,34 @@ struct StepMaxima {
     Float acceleration2 = 0;  ///< max |a|^2 over every particle
     Float fluidSpeed2 = 0;    ///< max |v|^2 over the fluid
     Float viscosity = 0;      ///< max nu (laminar viscosity on)
+};
+
+}  // namespace num::device
+
+namespace num::device {
+
+/// The device step of one execution (device/fluid_step.hpp), behind an interface that needs no
+/// CUDA header: the apps drive the CUDA one, the tests the host one (device/fluid_run.hpp).
+template <int Dim>
+class IDeviceFluid {
+  public:
+    virtual ~IDeviceFluid() = default;
+    /// Copies the particles to the execution's memory (in the storage's order).
+    virtual void upload(const ParticleArrays<Dim>& particles) = 0;
+    /// Copies them back, in the storage's order.
+    virtual void download(ParticleArrays<Dim>& particles) = 0;
+    /// Evaluates every rate at time t.
+    virtual void evaluate(Float t) = 0;
+    /// The maxima of the time-step criteria at the current state.
+    virtual StepMaxima maxima() = 0;
+    /// The leapfrog from t to t + dt: kick-drift, evaluate at t + dt, kick.
+    virtual void advance(Float t, Float dt) = 0;
+    /// The post-step phase of a step of dt: shifting, containment.
+    virtual void postStep(Float dt) = 0;
+    virtual std::size_t size() const = 0;
+    /// Memory the step holds in its execution [bytes].
+    virtual std::size_t bytes() const = 0;
+    virtual const char* execution() const = 0;
 };
 
 }  // namespace num::device

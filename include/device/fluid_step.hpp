@@ -26,7 +26,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <type_traits>
 #include <utility>
+#include <vector>
 
 #include "device/execution.hpp"
 #include "device/fluid_state.hpp"
@@ -298,5 +301,231 @@ struct StepCriteria {
 };
 
 }  // namespace kernels_
+
+/// The device step in the memory of an execution (see the top of this file).
+template <int Dim, class Exec>
+class DeviceFluidStep final : public IDeviceFluid<Dim> {
+  public:
+    using Vec = Vector<Dim>;
+
+    explicit DeviceFluidStep(FluidStepConfig<Dim> config, Exec& exec)
+        : c_(std::move(config)),
+          exec_(exec),
+          grid_(exec, c_.supportRadius, c_.domainMin, c_.domainMax, c_.periodic),
+          x_(exec),
+          v_(exec),
+          a_(exec),
+          wallVelocity_(exec),
+          u_(exec),
+          gradC_(exec),
+          gradRho_(exec),
+          wallDirection_(exec),
+          m_(exec),
+          rho_(exec),
+          drho_(exec),
+          drhoOld_(exec),
+          p_(exec),
+          nu_(exec),
+          kernelSum_(exec),
+          surfaceNeighbours_(exec),
+          volume_(exec),
+          pOverRho2_(exec),
+          mu_(exec),
+          inverseWAtSpacing_(exec),
+          maxima_{Buffer<double, Exec>(exec), Buffer<double, Exec>(exec),
+                  Buffer<double, Exec>(exec)},
+          kind_(exec),
+          slip_(exec),
+          origin_(exec),
+          active_(exec),
+          atSurface_(exec),
+          tempVec_(exec),
+          tempFloat_(exec),
+          tempInt_(exec),
+          tempIndex_(exec) {
+        for (int b = 0; b < Dim; ++b) gradV_.emplace_back(exec);
+    }
+
+    void upload(const ParticleArrays<Dim>& s) override {
+        n_ = Index(s.size());
+        sliding_ = !s.wallVelocity.empty();
+        x_.upload(s.x), v_.upload(s.v), a_.upload(s.a), m_.upload(s.m), rho_.upload(s.rho);
+        drho_.upload(s.drho), p_.upload(s.p), nu_.upload(s.nu), kernelSum_.upload(s.kernelSum);
+        surfaceNeighbours_.upload(s.surfaceNeighbours), kind_.upload(s.kind), slip_.upload(s.slip);
+        if (sliding_) wallVelocity_.upload(s.wallVelocity);
+        u_.upload(s.pairVelocity);
+        std::vector<Index> origin(n_);
+        std::iota(origin.begin(), origin.end(), Index(0));
+        origin_.upload(origin);
+        for (auto* b : {&gradC_, &gradRho_, &wallDirection_}) b->resize(n_);
+        for (auto& b : gradV_) b.resize(n_);
+        for (auto* b : {&drhoOld_, &volume_, &pOverRho2_, &mu_, &inverseWAtSpacing_}) b->resize(n_);
+        for (auto& b : maxima_) b.resize(n_);
+        active_.resize(n_), atSurface_.resize(n_);
+    }
+
+    void download(ParticleArrays<Dim>& s) override {
+        s.x.resize(n_), s.v.resize(n_), s.a.resize(n_), s.rho.resize(n_), s.drho.resize(n_);
+        s.p.resize(n_), s.kernelSum.resize(n_), s.surfaceNeighbours.resize(n_);
+        s.volume.resize(n_), s.pairVelocity.resize(n_), s.kernelSumGradient.resize(n_);
+        s.densityGradient.resize(n_), s.wallDirection.resize(n_);
+        for (auto& g : s.velocityGradient) g.resize(n_);
+        fetch(x_, s.x), fetch(v_, s.v), fetch(a_, s.a), fetch(rho_, s.rho), fetch(drho_, s.drho);
+        fetch(p_, s.p), fetch(kernelSum_, s.kernelSum);
+        fetch(surfaceNeighbours_, s.surfaceNeighbours), fetch(volume_, s.volume);
+        fetch(u_, s.pairVelocity), fetch(gradC_, s.kernelSumGradient);
+        fetch(gradRho_, s.densityGradient), fetch(wallDirection_, s.wallDirection);
+        for (int b = 0; b < Dim; ++b) fetch(gradV_[b], s.velocityGradient[b]);
+    }
+
+    void evaluate(Float t) override {
+        kernels_::Arrays<Dim> d = arrays();
+        if (anyPeriodic()) {
+            kernels_::Wrap<Dim> wrap{d.x, c_.domainMin, c_.domainMax, {}};
+            for (int k = 0; k < Dim; ++k) wrap.periodic[k] = c_.periodic[k];
+            exec_.forEach(n_, wrap);
+        }
+        sortByCell();
+        d = arrays();
+        const Vec g = c_.bodyForce ? c_.bodyForce(t) : Vec{};
+        const Vec gravityTerm = c_.deltaHydrostatic && c_.bodyForce
+                                    ? g * (c_.eos.rho0 / (c_.eos.c0 * c_.eos.c0))
+                                    : Vec{};
+        exec_.forEach(n_, kernels_::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
+                                                   c_.surfaceRhoMin, c_.tensionLimit});
+        sph::withKernel<Dim>(c_.kernel, [&](auto kernel) {
+            using K = decltype(kernel);
+            const sph::KernelValue<K> value(c_.h);
+            if (c_.walls)
+                exec_.forEach(n_, kernels_::WallPass<Dim, K>{d, grid_.grid(), grid_.start(),
+                                                             grid_.end(), value, c_.eos, g});
+            exec_.forEach(n_, kernels_::InputsPass<Dim, K>{d, value, c_.w0});
+            exec_.forEach(n_, kernels_::PairPass<Dim, K>{d, grid_.grid(), grid_.start(),
+                                                         grid_.end(), sph::GradientFactor<K>(c_.h),
+                                                         value, c_.laplacianEta2, c_.inverseR2Eta2,
+                                                         c_.deltaCoefficient, c_.alphaC0h,
+                                                         c_.laminar, gravityTerm, g});
+        });
+    }
+
+    StepMaxima maxima() override {
+        exec_.forEach(n_, kernels_::StepCriteria<Dim>{arrays(), maxima_[0].data(),
+                                                      maxima_[1].data(), maxima_[2].data()});
+        StepMaxima m;
+        m.acceleration2 = std::max(0.0, exec_.maxOf(maxima_[0].data(), n_));
+        m.fluidSpeed2 = std::max(0.0, exec_.maxOf(maxima_[1].data(), n_));
+        m.viscosity = c_.laminar ? std::max(0.0, exec_.maxOf(maxima_[2].data(), n_)) : 0.0;
+        return m;
+    }
+
+    void advance(Float t, Float dt) override {
+        exec_.forEach(n_, kernels_::KickDrift<Dim>{arrays(), dt});
+        evaluate(t + dt);
+        exec_.forEach(n_, kernels_::Kick<Dim>{arrays(), dt});
+    }
+
+    void postStep(Float dt) override {
+        if (!c_.shifting && !c_.contain) return;
+        kernels_::PostStep<Dim> post{
+            arrays(),     c_.shifting, c_.shiftingNormalToWalls,
+            true,         c_.contain,  c_.shiftingCoefficient * c_.h * c_.eos.c0 * dt,
+            0.1 * c_.h,   c_.w0,       c_.domainMin,
+            c_.domainMax, {},          {}};
+        for (int k = 0; k < Dim; ++k)
+            post.wallLow[k] = c_.wallLow[k], post.wallHigh[k] = c_.wallHigh[k];
+        exec_.forEach(n_, post);
+    }
+
+    std::size_t size() const override { return n_; }
+    std::size_t bytes() const override {
+        std::size_t b = grid_.bytes();
+        for (const auto* v :
+             {&x_, &v_, &a_, &wallVelocity_, &u_, &gradC_, &gradRho_, &wallDirection_, &tempVec_})
+            b += v->bytes();
+        for (const auto& v : gradV_) b += v.bytes();
+        for (const auto* f :
+             {&m_, &rho_, &drho_, &drhoOld_, &p_, &nu_, &kernelSum_, &surfaceNeighbours_, &volume_,
+              &pOverRho2_, &mu_, &inverseWAtSpacing_, &tempFloat_})
+            b += f->bytes();
+        for (const auto& f : maxima_) b += f.bytes();
+        b += kind_.bytes() + slip_.bytes() + tempInt_.bytes() + origin_.bytes() +
+             tempIndex_.bytes() + active_.bytes() + atSurface_.bytes();
+        return b;
+    }
+    const char* execution() const override { return Exec::name(); }
+
+  private:
+    bool anyPeriodic() const {
+        for (int k = 0; k < Dim; ++k)
+            if (c_.periodic[k]) return true;
+        return false;
+    }
+
+    kernels_::Arrays<Dim> arrays() {
+        kernels_::Arrays<Dim> d;
+        d.x = x_.data(), d.v = v_.data(), d.a = a_.data();
+        d.wallVelocity = sliding_ ? wallVelocity_.data() : nullptr;
+        d.m = m_.data(), d.rho = rho_.data(), d.drho = drho_.data(), d.drhoOld = drhoOld_.data();
+        d.p = p_.data(), d.nu = nu_.data(), d.kernelSum = kernelSum_.data();
+        d.surfaceNeighbours = surfaceNeighbours_.data(), d.kind = kind_.data();
+        d.slip = slip_.data(), d.origin = origin_.data(), d.volume = volume_.data();
+        d.pOverRho2 = pOverRho2_.data(), d.mu = mu_.data();
+        d.inverseWAtSpacing = inverseWAtSpacing_.data(), d.active = active_.data();
+        d.atSurface = atSurface_.data(), d.u = u_.data(), d.gradC = gradC_.data();
+        d.gradRho = gradRho_.data(), d.wallDirection = wallDirection_.data();
+        for (int b = 0; b < Dim; ++b) d.gradV[b] = gradV_[b].data();
+        return d;
+    }
+
+    /// Sorts the particles by cell and permutes every array that carries state.
+    void sortByCell() {
+        grid_.build(x_.data(), n_, origin_.data());
+        const Index* order = grid_.order();
+        const auto permute = [&](auto& buffer, auto& temp) {
+            using T = std::remove_cvref_t<decltype(*buffer.data())>;
+            if (buffer.size() != n_) return;
+            temp.resize(n_);
+            exec_.forEach(n_, kernels_::Gather<T>{buffer.data(), temp.data(), order});
+            buffer.swap(temp);
+        };
+        for (auto* b : {&x_, &v_, &a_, &u_}) permute(*b, tempVec_);
+        if (sliding_) permute(wallVelocity_, tempVec_);
+        for (auto* b : {&m_, &rho_, &drho_, &drhoOld_, &p_, &nu_, &kernelSum_, &surfaceNeighbours_})
+            permute(*b, tempFloat_);
+        permute(kind_, tempInt_), permute(slip_, tempInt_);
+        permute(origin_, tempIndex_);
+    }
+
+    template <class T>
+    void fetch(const Buffer<T, Exec>& buffer, std::vector<T>& out) {
+        tempHost_.resize(n_ * sizeof(T));
+        T* sorted = reinterpret_cast<T*>(tempHost_.data());
+        exec_.download(sorted, buffer.data(), n_);
+        if (origin_.size() != n_) return;
+        if (originHost_.size() != n_) originHost_.resize(n_);
+        exec_.download(originHost_.data(), origin_.data(), n_);
+        for (Index k = 0; k < n_; ++k) out[originHost_[k]] = sorted[k];
+    }
+
+    FluidStepConfig<Dim> c_;
+    Exec& exec_;
+    NeighbourGrid<Dim, Exec> grid_;
+    Index n_ = 0;
+    bool sliding_ = false;
+    Buffer<Vec, Exec> x_, v_, a_, wallVelocity_, u_, gradC_, gradRho_, wallDirection_;
+    std::vector<Buffer<Vec, Exec>> gradV_;
+    Buffer<Float, Exec> m_, rho_, drho_, drhoOld_, p_, nu_, kernelSum_, surfaceNeighbours_, volume_,
+        pOverRho2_, mu_, inverseWAtSpacing_;
+    std::array<Buffer<double, Exec>, 3> maxima_;
+    Buffer<int, Exec> kind_, slip_;
+    Buffer<Index, Exec> origin_;
+    Buffer<char, Exec> active_, atSurface_;
+    Buffer<Vec, Exec> tempVec_;
+    Buffer<Float, Exec> tempFloat_;
+    Buffer<int, Exec> tempInt_;
+    Buffer<Index, Exec> tempIndex_;
+    std::vector<unsigned char> tempHost_;
+    std::vector<Index> originHost_;
+};
 
 }  // namespace num::device

@@ -98,13 +98,14 @@ NUMERICS_HD void forEachNeighbour(const GridShape<Dim>& g, const Vec<double, Dim
 
 namespace detail {
 template <int Dim>
-struct CellKeys {
+struct CellKeys {  // (cell, tie) in one key: the order within a cell owes nothing to history
     GridShape<Dim> grid;
     const Vec<double, Dim>* x;
-    CellKey* keys;
+    const Index* tie;
+    SortKey* keys;
     Index* order;
     NUMERICS_HD void operator()(Index i) const {
-        keys[i] = grid.keyOf(x[i]);
+        keys[i] = SortKey(grid.keyOf(x[i])) << 32 | SortKey(tie ? tie[i] : i);
         order[i] = i;
     }
 };
@@ -114,14 +115,14 @@ struct ClearCells {
     NUMERICS_HD void operator()(Index c) const { start[c] = 0, end[c] = 0; }
 };
 struct CellRanges {
-    const CellKey* keys;
+    const SortKey* keys;
     Index n;
     Index* start;
     Index* end;
     NUMERICS_HD void operator()(Index k) const {
-        const CellKey key = keys[k];
-        if (k == 0 || keys[k - 1] != key) start[key] = k;
-        if (k + 1 == n || keys[k + 1] != key) end[key] = k + 1;
+        const CellKey key = CellKey(keys[k] >> 32);
+        if (k == 0 || CellKey(keys[k - 1] >> 32) != key) start[key] = k;
+        if (k + 1 == n || CellKey(keys[k + 1] >> 32) != key) end[key] = k + 1;
     }
 };
 template <int Dim>
@@ -141,21 +142,30 @@ class NeighbourGrid {
     /// radius: the kernel's support radius; domainMin / domainMax / periodic: the run's domain.
     NeighbourGrid(Exec& exec, double radius, Point domainMin, Point domainMax,
                   const bool (&periodic)[Dim])
-        : exec_(exec), radius_(radius), domainMin_(domainMin), domainMax_(domainMax),
-          keys_(exec), sortedKeys_(exec), order_(exec), sortedOrder_(exec), start_(exec),
-          end_(exec), scratch_(exec) {
+        : exec_(exec),
+          radius_(radius),
+          domainMin_(domainMin),
+          domainMax_(domainMax),
+          keys_(exec),
+          sortedKeys_(exec),
+          order_(exec),
+          sortedOrder_(exec),
+          start_(exec),
+          end_(exec),
+          scratch_(exec) {
         for (int k = 0; k < Dim; ++k) periodic_[k] = periodic[k];
     }
 
-    /// Sorts n particles at x by cell: afterwards order()[k] is the particle that goes to place
-    /// k (the caller permutes its arrays by it), and after the permutation cell c holds the
-    /// places start()[c] .. end()[c].
-    void build(const Point* x, Index n) {
+    /// Sorts n particles at x by cell and, within a cell, by tie[i] (a number of the particle
+    /// that stays with it, e.g. its index in the storage; nullptr: i). Afterwards order()[k] is
+    /// the particle that goes to place k (the caller permutes its arrays by it), and after the
+    /// permutation cell c holds the places start()[c] .. end()[c].
+    void build(const Point* x, Index n, const Index* tie = nullptr) {
         shape(x, n);
         keys_.resize(n), sortedKeys_.resize(n), order_.resize(n), sortedOrder_.resize(n);
-        exec_.forEach(n, detail::CellKeys<Dim>{grid_, x, keys_.data(), order_.data()});
-        int bits = 1;
-        while (bits < 32 && (std::size_t(1) << bits) < grid_.cellCount()) ++bits;
+        exec_.forEach(n, detail::CellKeys<Dim>{grid_, x, tie, keys_.data(), order_.data()});
+        int bits = 33;
+        while (bits < 64 && (std::size_t(1) << (bits - 32)) < grid_.cellCount()) ++bits;
         exec_.sortPairs(keys_.data(), sortedKeys_.data(), order_.data(), sortedOrder_.data(), n,
                         bits);
         const Index cells = Index(grid_.cellCount());
@@ -211,7 +221,7 @@ class NeighbourGrid {
     Point domainMin_, domainMax_;
     bool periodic_[Dim] = {};
     GridShape<Dim> grid_;
-    Buffer<CellKey, Exec> keys_, sortedKeys_;
+    Buffer<SortKey, Exec> keys_, sortedKeys_;
     Buffer<Index, Exec> order_, sortedOrder_, start_, end_;
     Buffer<double, Exec> scratch_;
 };

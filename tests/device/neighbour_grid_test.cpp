@@ -52,10 +52,9 @@ void checkAgainstBruteForce(std::array<bool, Dim> periodic, double radius, unsig
     std::size_t pairs = 0;
     for (Index i = 0; i < n; ++i) {
         std::vector<std::tuple<Index, V, double>> found, expected;
-        num::device::forEachNeighbour<Dim>(grid.grid(), sorted.data(), grid.start(), grid.end(),
-                                           i, [&](Index j, const V& dx, double r2) {
-                                               found.emplace_back(j, dx, r2);
-                                           });
+        num::device::forEachNeighbour<Dim>(
+            grid.grid(), sorted.data(), grid.start(), grid.end(), i,
+            [&](Index j, const V& dx, double r2) { found.emplace_back(j, dx, r2); });
         for (Index j = 0; j < n; ++j) {
             if (j == i) continue;
             V dx;

@@ -3,6 +3,7 @@
 // and the device run itself. A build without CUDA refuses --backend cuda here.
 #pragma once
 
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -13,6 +14,14 @@
 #include "io/simulation.hpp"
 
 namespace num::io {
+
+/// For tests: NUMERICS_TEST_DEVICE_EXECUTION=host runs the cuda backend's device step on the
+/// host execution (the same functors, in loops), so that the apps' use of the device step is
+/// tested on machines without a GPU or a CUDA build.
+inline bool deviceStepOnHost() {
+    const char* e = std::getenv("NUMERICS_TEST_DEVICE_EXECUTION");
+    return e && std::string(e) == "host";
+}
 
 /// Whether the run uses the CUDA back end: --backend when given, else numerics.backend.
 template <int Dim>
@@ -55,6 +64,7 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
             device::unsupported(setup.model, setup.geometry, setup.settings);
         !what.empty())
         refuse("this scene", what);
+    if (deviceStepOnHost()) return;
     if constexpr (!device::cudaBuilt()) {
         throw AppError(ExitCode::NO_GPU,
                        chosen + ": this build has no CUDA back end (no CUDA compiler was found "
@@ -75,6 +85,9 @@ template <int Dim>
 std::unique_ptr<device::DeviceRun<Dim>> makeCudaRun(const SceneSetup<Dim>& setup, double t0) {
     const device::FluidStepConfig<Dim> config =
         device::makeFluidStepConfig(setup.model, setup.geometry, setup.settings);
+    if (deviceStepOnHost())
+        return std::make_unique<device::DeviceRun<Dim>>(
+            std::make_unique<device::HostFluidStep<Dim>>(config), config, t0);
 #ifdef NUMERICS_HAVE_CUDA
     try {
         return std::make_unique<device::DeviceRun<Dim>>(device::makeCudaFluidStep<Dim>(config),
@@ -90,6 +103,7 @@ std::unique_ptr<device::DeviceRun<Dim>> makeCudaRun(const SceneSetup<Dim>& setup
 
 /// The GPU for summary.json.
 inline std::string cudaDeviceText() {
+    if (deviceStepOnHost()) return "host execution (NUMERICS_TEST_DEVICE_EXECUTION=host)";
 #ifdef NUMERICS_HAVE_CUDA
     return device::cudaDeviceName();
 #else

@@ -54,7 +54,7 @@ def last_csv(directory):
 def close(name, a, b, tolerance, scale=None):
     scale = scale if scale is not None else max(abs(a), abs(b), 1e-300)
     ok = abs(a - b) <= tolerance * scale
-    print(f"  {"ok  " if ok else "FAIL"} {name}: {a:.9g} against the cpu run {b:.9g} (tolerance {tolerance:g} of {scale:.3g})")
+    print(f"  {'ok  ' if ok else 'FAIL'} {name}: {a:.9g} against the cpu run {b:.9g} (tolerance {tolerance:g} of {scale:.3g})")
     return ok
 
 

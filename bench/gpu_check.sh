@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # What to run on a machine with an NVIDIA GPU: builds with the CUDA back end, runs the device
-# tests on the CPU (label device) and the GPU tests (label gpu: the 2D and 3D dam breaks with
-# --backend cuda against the CPU back end within 1 %, two GPU runs bitwise identical, a restart
-# cpu -> cuda -> cpu), then the benchmark bench/gpu_scaling.sh. Stops at the first failure.
+# tests on the CPU (label device) and the GPU tests (label gpu: the device step's CUDA execution
+# against its host execution, every array of an evaluation and 40 steps; the 2D and 3D dam breaks
+# with --backend cuda against the CPU back end within 1 %; two GPU runs bitwise identical; a
+# restart cpu -> cuda -> cpu), then the benchmark bench/gpu_scaling.sh. Stops at the first
+# failure.
 #
 #   bench/gpu_check.sh [BUILD_DIR]        (default build/release)
 set -euo pipefail
@@ -12,7 +14,7 @@ cd "$here"
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv || true
 cmake --preset release
 cmake --build "$build" -j"$(nproc)" --target fluid_sim fluid_sim_3d numerics_cuda \
-    device_neighbour_grid_test device_fluid_step_test
+    device_neighbour_grid_test device_fluid_step_test gpu_cuda_step_test
 "$build/apps/fluid_sim/fluid_sim" --version
 (cd "$build" && ctest -L device --output-on-failure --no-tests=error)
 (cd "$build" && ctest -L gpu -V --no-tests=error) | tee "$build/gpu_check.log"

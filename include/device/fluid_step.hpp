@@ -42,7 +42,7 @@
 
 namespace num::device {
 
-namespace kernels_ {
+namespace passes {
 constexpr int fluid = int(sph::ParticleKind::FLUID);
 constexpr int noSlip = 0;  // sph::WallSlip::NO_SLIP
 
@@ -300,7 +300,7 @@ struct StepCriteria {
     }
 };
 
-}  // namespace kernels_
+}  // namespace passes
 
 /// The device step in the memory of an execution (see the top of this file).
 template <int Dim, class Exec>
@@ -379,9 +379,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     }
 
     void evaluate(Float t) override {
-        kernels_::Arrays<Dim> d = arrays();
+        passes::Arrays<Dim> d = arrays();
         if (anyPeriodic()) {
-            kernels_::Wrap<Dim> wrap{d.x, c_.domainMin, c_.domainMax, {}};
+            passes::Wrap<Dim> wrap{d.x, c_.domainMin, c_.domainMax, {}};
             for (int k = 0; k < Dim; ++k) wrap.periodic[k] = c_.periodic[k];
             exec_.forEach(n_, wrap);
         }
@@ -391,16 +391,16 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         const Vec gravityTerm = c_.deltaHydrostatic && c_.bodyForce
                                     ? g * (c_.eos.rho0 / (c_.eos.c0 * c_.eos.c0))
                                     : Vec{};
-        exec_.forEach(n_, kernels_::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
+        exec_.forEach(n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
                                                    c_.surfaceRhoMin, c_.tensionLimit});
         sph::withKernel<Dim>(c_.kernel, [&](auto kernel) {
             using K = decltype(kernel);
             const sph::KernelValue<K> value(c_.h);
             if (c_.walls)
-                exec_.forEach(n_, kernels_::WallPass<Dim, K>{d, grid_.grid(), grid_.start(),
+                exec_.forEach(n_, passes::WallPass<Dim, K>{d, grid_.grid(), grid_.start(),
                                                              grid_.end(), value, c_.eos, g});
-            exec_.forEach(n_, kernels_::InputsPass<Dim, K>{d, value, c_.w0});
-            exec_.forEach(n_, kernels_::PairPass<Dim, K>{d, grid_.grid(), grid_.start(),
+            exec_.forEach(n_, passes::InputsPass<Dim, K>{d, value, c_.w0});
+            exec_.forEach(n_, passes::PairPass<Dim, K>{d, grid_.grid(), grid_.start(),
                                                          grid_.end(), sph::GradientFactor<K>(c_.h),
                                                          value, c_.laplacianEta2, c_.inverseR2Eta2,
                                                          c_.deltaCoefficient, c_.alphaC0h,
@@ -409,7 +409,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     }
 
     StepMaxima maxima() override {
-        exec_.forEach(n_, kernels_::StepCriteria<Dim>{arrays(), maxima_[0].data(),
+        exec_.forEach(n_, passes::StepCriteria<Dim>{arrays(), maxima_[0].data(),
                                                       maxima_[1].data(), maxima_[2].data()});
         StepMaxima m;
         m.acceleration2 = std::max(0.0, exec_.maxOf(maxima_[0].data(), n_));
@@ -419,14 +419,14 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     }
 
     void advance(Float t, Float dt) override {
-        exec_.forEach(n_, kernels_::KickDrift<Dim>{arrays(), dt});
+        exec_.forEach(n_, passes::KickDrift<Dim>{arrays(), dt});
         evaluate(t + dt);
-        exec_.forEach(n_, kernels_::Kick<Dim>{arrays(), dt});
+        exec_.forEach(n_, passes::Kick<Dim>{arrays(), dt});
     }
 
     void postStep(Float dt) override {
         if (!c_.shifting && !c_.contain) return;
-        kernels_::PostStep<Dim> post{
+        passes::PostStep<Dim> post{
             arrays(),     c_.shifting, c_.shiftingNormalToWalls,
             true,         c_.contain,  c_.shiftingCoefficient * c_.h * c_.eos.c0 * dt,
             0.1 * c_.h,   c_.w0,       c_.domainMin,
@@ -461,8 +461,8 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         return false;
     }
 
-    kernels_::Arrays<Dim> arrays() {
-        kernels_::Arrays<Dim> d;
+    passes::Arrays<Dim> arrays() {
+        passes::Arrays<Dim> d;
         d.x = x_.data(), d.v = v_.data(), d.a = a_.data();
         d.wallVelocity = sliding_ ? wallVelocity_.data() : nullptr;
         d.m = m_.data(), d.rho = rho_.data(), d.drho = drho_.data(), d.drhoOld = drhoOld_.data();
@@ -485,7 +485,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             using T = std::remove_cvref_t<decltype(*buffer.data())>;
             if (buffer.size() != n_) return;
             temp.resize(n_);
-            exec_.forEach(n_, kernels_::Gather<T>{buffer.data(), temp.data(), order});
+            exec_.forEach(n_, passes::Gather<T>{buffer.data(), temp.data(), order});
             buffer.swap(temp);
         };
         for (auto* b : {&x_, &v_, &a_, &u_}) permute(*b, tempVec_);

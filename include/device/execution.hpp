@@ -103,19 +103,23 @@ class Buffer {
     explicit Buffer(Exec& exec) : exec_(&exec) {}
     Buffer(const Buffer&) = delete;
     Buffer& operator=(const Buffer&) = delete;
-    Buffer(Buffer&& o) noexcept : exec_(o.exec_), data_(o.data_), size_(o.size_) {
-        o.data_ = nullptr, o.size_ = 0;
+    Buffer(Buffer&& o) noexcept
+        : exec_(o.exec_), data_(o.data_), size_(o.size_), capacity_(o.capacity_) {
+        o.data_ = nullptr, o.size_ = o.capacity_ = 0;
     }
     ~Buffer() {
         if (data_) exec_->release(data_);
     }
 
-    /// n elements; the contents are undefined after a change of size.
+    /// n elements; the contents are undefined after a change of size. The memory only grows
+    /// (a cell grid whose size changes every step allocates nothing once it reached its most).
     void resize(std::size_t n) {
-        if (n == size_) return;
-        if (data_) exec_->release(data_);
-        data_ = nullptr, size_ = 0;
-        data_ = exec_->template allocate<T>(n);
+        if (n > capacity_) {
+            if (data_) exec_->release(data_);
+            data_ = nullptr, size_ = capacity_ = 0;
+            data_ = exec_->template allocate<T>(n);
+            capacity_ = n;
+        }
         size_ = n;
     }
     void upload(const std::vector<T>& host) {
@@ -128,16 +132,18 @@ class Buffer {
     }
     void swap(Buffer& o) noexcept {
         std::swap(exec_, o.exec_), std::swap(data_, o.data_), std::swap(size_, o.size_);
+        std::swap(capacity_, o.capacity_);
     }
     T* data() { return data_; }
     const T* data() const { return data_; }
     std::size_t size() const { return size_; }
-    std::size_t bytes() const { return size_ * sizeof(T); }
+    /// Memory held [bytes].
+    std::size_t bytes() const { return capacity_ * sizeof(T); }
 
   private:
     Exec* exec_;
     T* data_ = nullptr;
-    std::size_t size_ = 0;
+    std::size_t size_ = 0, capacity_ = 0;
 };
 
 }  // namespace num::device

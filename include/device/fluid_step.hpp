@@ -392,25 +392,25 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
                                     ? g * (c_.eos.rho0 / (c_.eos.c0 * c_.eos.c0))
                                     : Vec{};
         exec_.forEach(n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
-                                                   c_.surfaceRhoMin, c_.tensionLimit});
+                                                 c_.surfaceRhoMin, c_.tensionLimit});
         sph::withKernel<Dim>(c_.kernel, [&](auto kernel) {
             using K = decltype(kernel);
             const sph::KernelValue<K> value(c_.h);
             if (c_.walls)
                 exec_.forEach(n_, passes::WallPass<Dim, K>{d, grid_.grid(), grid_.start(),
-                                                             grid_.end(), value, c_.eos, g});
+                                                           grid_.end(), value, c_.eos, g});
             exec_.forEach(n_, passes::InputsPass<Dim, K>{d, value, c_.w0});
-            exec_.forEach(n_, passes::PairPass<Dim, K>{d, grid_.grid(), grid_.start(),
-                                                         grid_.end(), sph::GradientFactor<K>(c_.h),
-                                                         value, c_.laplacianEta2, c_.inverseR2Eta2,
-                                                         c_.deltaCoefficient, c_.alphaC0h,
-                                                         c_.laminar, gravityTerm, g});
+            exec_.forEach(
+                n_, passes::PairPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(),
+                                             sph::GradientFactor<K>(c_.h), value, c_.laplacianEta2,
+                                             c_.inverseR2Eta2, c_.deltaCoefficient, c_.alphaC0h,
+                                             c_.laminar, gravityTerm, g});
         });
     }
 
     StepMaxima maxima() override {
-        exec_.forEach(n_, passes::StepCriteria<Dim>{arrays(), maxima_[0].data(),
-                                                      maxima_[1].data(), maxima_[2].data()});
+        exec_.forEach(n_, passes::StepCriteria<Dim>{arrays(), maxima_[0].data(), maxima_[1].data(),
+                                                    maxima_[2].data()});
         StepMaxima m;
         m.acceleration2 = std::max(0.0, exec_.maxOf(maxima_[0].data(), n_));
         m.fluidSpeed2 = std::max(0.0, exec_.maxOf(maxima_[1].data(), n_));

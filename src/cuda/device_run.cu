@@ -19,8 +19,7 @@ std::string cudaUnavailable() {
 std::string cudaDeviceName() {
     int device = 0;
     cudaDeviceProp p{};
-    if (cudaGetDevice(&device) != cudaSuccess ||
-        cudaGetDeviceProperties(&p, device) != cudaSuccess)
+    if (cudaGetDevice(&device) != cudaSuccess || cudaGetDeviceProperties(&p, device) != cudaSuccess)
         return "unknown CUDA GPU";
     return std::string(p.name) + " (compute capability " + std::to_string(p.major) + "." +
            std::to_string(p.minor) + ")";

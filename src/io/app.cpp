@@ -189,7 +189,8 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     app.add_flag("--list-scenes", list,
                  "list the shipped scenes (./scenes, else the source tree's) with the program that "
                  "runs each, and exit");
-    app.set_version_flag("--version", info.name + " (numerics) 0.1.0\nCUDA back end (--backend cuda): " +
+    app.set_version_flag("--version", info.name +
+                                          " (numerics) 0.1.0\nCUDA back end (--backend cuda): " +
                                           (device::cudaBuilt() ? std::string("built")
                                                                : std::string("not built (no CUDA "
                                                                              "compiler at build "

@@ -37,8 +37,9 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
     const std::string chosen =
         opt.backendGiven ? "--backend cuda" : scene.file + ": numerics.backend \"cuda\"";
     if (processes > 1)
-        throw AppError(ExitCode::USAGE, chosen + " runs on one process with one GPU: run it "
-                                                 "without mpirun (several GPUs: not yet)");
+        throw AppError(ExitCode::USAGE, chosen +
+                                            " runs on one process with one GPU: run it "
+                                            "without mpirun (several GPUs: not yet)");
     const auto refuse = [&](const std::string& key, const std::string& what) {
         throw AppError(ExitCode::SCENE, chosen + " does not support " + key + " yet: " + what +
                                             " runs on the CPU back end only (--backend cpu)");
@@ -60,16 +61,16 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
     if (setup.model.density == sph::DensityMode::SUMMATION)
         refuse("physics.density \"" + scene.physics.density + "\" (density by summation here)",
                "density by summation");
-    if (const std::string what =
-            device::unsupported(setup.model, setup.geometry, setup.settings);
+    if (const std::string what = device::unsupported(setup.model, setup.geometry, setup.settings);
         !what.empty())
         refuse("this scene", what);
     if (deviceStepOnHost()) return;
     if constexpr (!device::cudaBuilt()) {
         throw AppError(ExitCode::NO_GPU,
-                       chosen + ": this build has no CUDA back end (no CUDA compiler was found "
-                                "when it was built: install the CUDA toolkit, nvcc on PATH or in "
-                                "/usr/local/cuda/bin, and rebuild)");
+                       chosen +
+                           ": this build has no CUDA back end (no CUDA compiler was found "
+                           "when it was built: install the CUDA toolkit, nvcc on PATH or in "
+                           "/usr/local/cuda/bin, and rebuild)");
     } else {
 #ifdef NUMERICS_HAVE_CUDA
         if (const std::string why = device::cudaUnavailable(); !why.empty())

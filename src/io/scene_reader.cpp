@@ -220,11 +220,10 @@ void warnSidewaysOpenSides(Scene<Dim>& s) {
 template <int Dim>
 Scene<Dim> readScene(const SceneDocument& doc) {
     const At root{doc.json(), doc.file(), ""};
-    root.object(
-        {"dimension", "name", "description", "domain", "boundaries", "particles", "time", "gravity",
-         "materials", "fluids", "bodies", "emitters", "output", "probes", "physics", "plugins",
-         "numerics"},
-        {"dimension", "domain", "boundaries", "particles", "time", "materials"});
+    root.object({"dimension", "name", "description", "domain", "boundaries", "particles", "time",
+                 "gravity", "materials", "fluids", "bodies", "emitters", "output", "probes",
+                 "physics", "plugins", "numerics"},
+                {"dimension", "domain", "boundaries", "particles", "time", "materials"});
     Scene<Dim> s;
     s.file = doc.file();
     const int dim = int(root["dimension"].integer(2, 3));

@@ -73,7 +73,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     const std::string cpuBackend =
         opt.backend == "cuda" || opt.backend == "cpu" ? "threads" : opt.backend;
     const int threads = cpuBackend == "seq" ? 1
-                        : opt.threads > 0    ? opt.threads
+                        : opt.threads > 0   ? opt.threads
                                           : int(std::max(1u, std::thread::hardware_concurrency()));
     checkGravity(scene);
     const ScenePlugins<Dim> plugins = loadPlugins<Dim>(doc);  // before set-up, in scene order
@@ -308,8 +308,8 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                                 gpu ? gpu->limitingCriterion() : run.limitingCriterion(),
                                 fieldNames);
                 });
-            if (const std::string w = current ? physical.check(storage, run.time(), comm, *scheduler)
-                                              : std::string();
+            if (const std::string w =
+                    current ? physical.check(storage, run.time(), comm, *scheduler) : std::string();
                 !w.empty() && !opt.quiet && root) {
                 progress.clearLine();
                 std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
@@ -375,10 +375,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     everyParticle(storage, [&](const sph::Storage<Dim>& all) {
         onRoot(comm, [&] {
             end = outputs->finish(status == "completed");
-            summary = summaryJson(scene, all, setup, state, run.time(), run.steps(),
-                                  run.steps() - startSteps, wall, particleSteps, threads,
-                                  gpu ? "cuda" : cpuBackend, status, message,
-                                  solver.meanNeighbours());
+            summary =
+                summaryJson(scene, all, setup, state, run.time(), run.steps(),
+                            run.steps() - startSteps, wall, particleSteps, threads,
+                            gpu ? "cuda" : cpuBackend, status, message, solver.meanNeighbours());
         });
     });
     summary["processes"] = comm.size();

@@ -52,7 +52,9 @@ FluidStepConfig<Dim> makeFluidStepConfig(const sph::FluidModel<Dim>& model,
         c.periodic[k] = geometry.domain.periodic[k];
     }
     c.walls = boundaries;
-    c.deltaCoefficient = model.deltaSph > 0 ? 2 * model.deltaSph * c.h * c.eos.c0 : 0.0;
+    c.deltaCoefficient = model.deltaSph > 0
+                             ? sph::formulas::deltaSphCoefficient(model.deltaSph, c.eos.c0, c.h)
+                             : 0.0;
     c.deltaHydrostatic = model.deltaSphHydrostatic;
     c.alphaC0h = model.artificialViscosity > 0 ? model.artificialViscosity * c.eos.c0 * c.h : 0;
     c.laminar = model.viscosity > 0;

@@ -159,7 +159,7 @@ struct InputsPass {
         d.pOverRho2[i] = sph::formulas::pressureOverDensity2(d.p[i], d.rho[i]);
         d.mu[i] = sph::formulas::dynamicViscosity(d.rho[i], d.nu[i]);
         d.active[i] = isFluid || d.slip[i] == noSlip;
-        d.inverseWAtSpacing[i] = 1 / kernelValue.value(hd::pow(volume, 1.0 / Dim));
+        d.inverseWAtSpacing[i] = 1 / kernelValue.value(sph::formulas::particleSpacing<Dim>(volume));
         d.atSurface[i] = isFluid && sph::atFreeSurface(d.kernelSum[i], volume, w0);
     }
 };
@@ -197,8 +197,8 @@ struct PairPass {
         forEachNeighbour<Dim>(grid, d.x, start, end, i, [&](Index j, const Vec& dx, double r2) {
             const Float r = hd::sqrt(r2);
             const Vec grad = dx * gradient.factor(r);
-            const Float laplacian = sph::pairLaplacian<Dim>(dx, grad, r, laplacianEta2);
-            const Float inverseR2 = sph::pairInverseR2(r, inverseR2Eta2);
+            const Float laplacian = f::pairLaplacian<Dim>(dx, grad, r, laplacianEta2);
+            const Float inverseR2 = f::pairInverseR2(r, inverseR2Eta2);
             const Float w = kernelValue.value(r);
             const bool fluidj = d.kind[j] == fluid;
             const Float vj = d.volume[j], rhoj = d.rho[j];
@@ -220,8 +220,9 @@ struct PairPass {
                 viscous += f::laminarViscosityAcceleration<Dim>(
                     ui - d.u[j], f::laminarViscosityFactor(mui, d.mu[j], laplacian), vj, invRhoi);
             // Kernel sums (free surfaces) and the shifting sums.
-            c += f::kernelSumWeight(vj, w);
-            if (d.atSurface[j]) near += f::kernelSumWeight(vj, w);
+            const Float weight = f::kernelSumWeight(vj, w);
+            c += weight;
+            if (d.atSurface[j]) near += weight;
             const Vec dv = d.u[j] - ui;
             gradC += grad * f::shiftingTensileFactor(w, invWi, d.inverseWAtSpacing[j]) * vj;
             gradRho += f::densityGradientTerm<Dim>(grad, vj, rhoj - rhoi);
@@ -275,7 +276,7 @@ struct PostStep {
         if (shifting && !sph::atFreeSurface(d.kernelSum[i], d.volume[i], w0) &&
             !(d.surfaceNeighbours[i] > 0) && diffusion > 0) {
             const Vector<Dim> dr = sph::formulas::shiftingDisplacement<Dim>(
-                d.gradC[i], d.wallDirection[i], diffusion, normalToWalls, cap);
+                d.gradC[i], d.wallDirection[i], diffusion, cap, normalToWalls);
             Vector<Dim> columns[Dim];
             for (int k = 0; k < Dim; ++k) columns[k] = d.gradV[k][i];
             sph::formulas::shiftParticle<Dim>(d.x[i], d.v[i], d.rho[i], continuity, dr,
@@ -388,9 +389,10 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         sortByCell();
         d = arrays();
         const Vec g = c_.bodyForce ? c_.bodyForce(t) : Vec{};
-        const Vec gravityTerm = c_.deltaHydrostatic && c_.bodyForce
-                                    ? g * (c_.eos.rho0 / (c_.eos.c0 * c_.eos.c0))
-                                    : Vec{};
+        const Vec gravityTerm =
+            c_.deltaHydrostatic && c_.bodyForce
+                ? sph::formulas::deltaSphGravityTerm<Dim>(g, c_.eos.rho0, c_.eos.c0)
+                : Vec{};
         exec_.forEach(n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
                                                  c_.surfaceRhoMin, c_.tensionLimit});
         sph::withKernel<Dim>(c_.kernel, [&](auto kernel) {

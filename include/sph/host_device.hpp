@@ -7,8 +7,12 @@
 // Code marked NUMERICS_HD calls no std:: function that has no device version: num::hd below
 // wraps the C library's (global namespace) functions, which both glibc and CUDA provide, and
 // min / max written as std::min / std::max are, so that NaN and signed zeros come out alike.
-// Whole powers are written as products (x * x * x), never pow(x, 3): host and device then
-// round alike. Device code should be compiled with -fmad=false for bitwise agreement.
+// Whole powers are written as products (x * x * x), never pow(x, 3). With those, +, -, *, /
+// and sqrt round alike on host and device (IEEE, correctly rounded) provided neither side fuses
+// multiply-adds: the host build has -ffp-contract=off (cmake/numericsArch.cmake), device code
+// needs nvcc -fmad=false. exp and pow are not correctly rounded: the device's may differ from
+// glibc's in the last place (the Tait inverse rho(p), the viscosity of temperature, the local
+// spacing of particle shifting).
 #pragma once
 
 #include <cmath>

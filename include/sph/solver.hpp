@@ -277,8 +277,10 @@ class Solver {
                     for (Size k = 0; k < m; ++k) gradientFactor[k] = gradient.factor(r[k]);
                     for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradientFactor[k];
                     for (Size k = 0; k < m; ++k)
-                        laplacian[k] = pairLaplacian(dx[k], grads[k], r[k], laplacianEta2);
-                    for (Size k = 0; k < m; ++k) inverseR2[k] = pairInverseR2(r[k], inverseR2Eta2);
+                        laplacian[k] =
+                            formulas::pairLaplacian(dx[k], grads[k], r[k], laplacianEta2);
+                    for (Size k = 0; k < m; ++k)
+                        inverseR2[k] = formulas::pairInverseR2(r[k], inverseR2Eta2);
                     if (needsW) {
                         Float* w = sc.w.data();
                         for (Size k = 0; k < m; ++k) w[k] = kernelValue.value(r[k]);

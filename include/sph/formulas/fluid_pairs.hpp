@@ -35,6 +35,11 @@ NUMERICS_HD_INLINE Float continuityRate(Float rhoA, Float volumeB, Float diverge
 NUMERICS_HD_INLINE Float deltaSphCoefficient(Float delta, Float c0, Float h) {
     return 2 * delta * h * c0;
 }
+/// rho0 g / c0^2, once per evaluation (g the body force at the time).
+template <int Dim>
+NUMERICS_HD Vector<Dim> deltaSphGravityTerm(const Vector<Dim>& g, Float rho0, Float c0) {
+    return g * (rho0 / (c0 * c0));
+}
 /// The pair's flux f: drho_i/dt += f V_j, drho_j/dt -= f V_i. gravityTerm = rho0 g / c0^2.
 template <int Dim>
 NUMERICS_HD Float deltaSphFlux(Float coefficient, Float rhoi, Float rhoj,
@@ -90,10 +95,13 @@ NUMERICS_HD Vector<Dim> laminarViscosityAcceleration(const Vector<Dim>& dv, Floa
     return dv * (factor * volumeB * inverseRhoA);
 }
 
-// --- Kernel sum C_i = sum_j V_j W_ij (free_surface.hpp) ------------------------------------
+// --- Kernel sums -------------------------------------------------------------------------
 
-/// V_j W_ij.
+/// V_j W_ij: a term of C_i = sum_j V_j W_ij (free_surface.hpp).
 NUMERICS_HD_INLINE Float kernelSumWeight(Float volumeB, Float w) { return volumeB * w; }
+/// m_j W_ij: a term of the summation density rho_i = sum_j m_j W_ij (Monaghan 1992, eq. 2.7;
+/// summation_density.hpp).
+NUMERICS_HD_INLINE Float summationDensityTerm(Float massB, Float w) { return massB * w; }
 
 // --- Particle shifting (Lind et al. 2012, eq. 9, 15, 17; Sun et al. 2017, sec. 3) ----------
 //   grad C_i   = sum_j V_j [1 + R max(0, (W_ij / W(dx_ij))^4 - 1.5)] grad,  R = 0.6

@@ -46,6 +46,28 @@ NUMERICS_HD_INLINE void limitSurfaceTension(Float& p, Float& rho, Float pMin, Fl
     rho = hd::max(rho, rhoMin);
 }
 
+/// dx_i = V_i^(1/Dim), the local particle spacing; particle shifting compares W_ij with
+/// W(dx_ij) (terms/particle_shifting.hpp).
+template <int Dim>
+NUMERICS_HD Float particleSpacing(Float volume) {
+    return hd::pow(volume, 1.0 / Dim);
+}
+
+/// Particle shifting's move of a fluid particle away from free surfaces (Lind et al. 2012,
+/// eq. 9, 15, 17; terms/particle_shifting.hpp): dr = -A h c0 dt grad C (diffusion = A h c0 dt),
+/// without its component along the wall direction n unless normalToWalls, capped at |dr| = cap.
+template <int Dim>
+NUMERICS_HD Vector<Dim> shiftingDisplacement(const Vector<Dim>& gradC,
+                                             const Vector<Dim>& wallDirection, Float diffusion,
+                                             Float cap, bool normalToWalls) {
+    Vector<Dim> dr = gradC * (-diffusion);
+    const Vector<Dim>& n = wallDirection;
+    if (const Float nn = normSqr(n); !normalToWalls && nn > 0) dr -= n * (dot(dr, n) / nn);
+    const Float len = norm(dr);
+    if (len > cap) dr *= cap / len;
+    return dr;
+}
+
 /// Boussinesq buoyancy (Boussinesq 1903; Kundu & Cohen sec. 4.18):
 ///   dv/dt += -beta (T - T0) g.
 template <int Dim>

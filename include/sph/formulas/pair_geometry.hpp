@@ -27,6 +27,8 @@ struct PairGeometry {
     Float inverseR2;
 };
 
+namespace formulas {
+
 /// dx . grad_i W / (r^2 + eta2): the Laplacian factor of the pair (Morris et al. 1997, eq. 8).
 template <int Dim>
 NUMERICS_HD Float pairLaplacian(const Vector<Dim>& dx, const Vector<Dim>& grad, Float r,
@@ -36,6 +38,8 @@ NUMERICS_HD Float pairLaplacian(const Vector<Dim>& dx, const Vector<Dim>& grad, 
 
 /// 1 / (r^2 + eta2) (Monaghan 1992, eq. 4.2).
 NUMERICS_HD_INLINE Float pairInverseR2(Float r, Float eta2) { return 1.0 / (r * r + eta2); }
+
+}  // namespace formulas
 
 namespace detail {
 template <class Kernel>

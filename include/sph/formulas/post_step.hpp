@@ -7,22 +7,8 @@
 
 namespace num::sph::formulas {
 
-// --- Particle shifting (terms/particle_shifting.hpp: Lind et al. 2012, eq. 9, 15, 17) --------
-//   dr_i = -A h c0 dt grad C_i, without its component along the wall direction n_i unless
-//   shifting normal to walls, |dr_i| capped; v_i += (dr_i . grad) v_i, rho_i += dr_i . grad rho_i.
-
-/// dr for diffusion = A h c0 dt, the wall direction n = sum_{j wall} V_j grad_i W_ij and the cap.
-template <int Dim>
-NUMERICS_HD Vector<Dim> shiftingDisplacement(const Vector<Dim>& gradC,
-                                             const Vector<Dim>& wallDirection, Float diffusion,
-                                             bool normalToWalls, Float cap) {
-    Vector<Dim> dr = gradC * (-diffusion);
-    const Vector<Dim>& n = wallDirection;
-    if (const Float nn = normSqr(n); !normalToWalls && nn > 0) dr -= n * (dot(dr, n) / nn);
-    const Float len = hd::sqrt(normSqr(dr));
-    if (len > cap) dr *= cap / len;
-    return dr;
-}
+// --- Particle shifting (terms/particle_shifting.hpp; its displacement dr:
+//     shiftingDisplacement, fluid_particles.hpp) ----------------------------------------------
 
 /// Moves a particle by dr and corrects its velocity and (continuity) density by the Taylor
 /// expansion; gradV: the Dim columns of (grad v)_i.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -170,6 +171,7 @@ class DeviceRun {
     void upload(const sph::Storage<Dim>& s, bool primed) {
         fluid_->upload(particleArrays(s));
         primed_ = primed;
+        limits_.reset();
     }
     /// Copies the particles back into the storage they came from.
     void download(sph::Storage<Dim>& s) {
@@ -180,25 +182,14 @@ class DeviceRun {
     void prime() {
         fluid_->evaluate(time_);
         primed_ = true;
+        limits_.reset();
     }
 
-    /// The limits of the next step, offered as the CPU solver offers them.
+    /// The limits of the next step, offered as the CPU solver offers them (reduced on the
+    /// device once per state).
     sph::TimeStepLimits timeStepLimits() {
-        sph::TimeStepLimits limits(sequential_);
-        if (config_.dtFixed > 0) {
-            limits.offer("fixed", config_.dtFixed);
-            return limits;
-        }
-        const StepMaxima m = fluid_->maxima();
-        limits.offer("dt_max", config_.dtMax);
-        if (m.acceleration2 > 0)
-            limits.offer("acceleration", config_.accelerationFactor *
-                                             std::sqrt(config_.h / std::sqrt(m.acceleration2)));
-        limits.offer("courant",
-                     config_.cfl * config_.h / (config_.eos.c0 + std::sqrt(m.fluidSpeed2)));
-        if (config_.laminar && m.viscosity > 0)
-            limits.offer("viscous", config_.viscousFactor * config_.h * config_.h / m.viscosity);
-        return limits;
+        if (!limits_) limits_ = computeLimits();
+        return *limits_;
     }
 
     /// One step, at most up to tEnd (sph::Run::step). Returns the step taken.
@@ -213,6 +204,7 @@ class DeviceRun {
                 "dt_max");
         const bool last = time_ + dt >= tEnd;
         if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
+        limits_.reset();
         fluid_->advance(time_, dt);
         time_ = last ? tEnd : time_ + dt;
         fluid_->postStep(dt);
@@ -232,6 +224,24 @@ class DeviceRun {
     IDeviceFluid<Dim>& fluid() { return *fluid_; }
 
   private:
+    sph::TimeStepLimits computeLimits() {
+        sph::TimeStepLimits limits(sequential_);
+        if (config_.dtFixed > 0) {
+            limits.offer("fixed", config_.dtFixed);
+            return limits;
+        }
+        const StepMaxima m = fluid_->maxima();
+        limits.offer("dt_max", config_.dtMax);
+        if (m.acceleration2 > 0)
+            limits.offer("acceleration", config_.accelerationFactor *
+                                             std::sqrt(config_.h / std::sqrt(m.acceleration2)));
+        limits.offer("courant",
+                     config_.cfl * config_.h / (config_.eos.c0 + std::sqrt(m.fluidSpeed2)));
+        if (config_.laminar && m.viscosity > 0)
+            limits.offer("viscous", config_.viscousFactor * config_.h * config_.h / m.viscosity);
+        return limits;
+    }
+
     std::unique_ptr<IDeviceFluid<Dim>> fluid_;
     FluidStepConfig<Dim> config_;
     sph::SequentialScheduler sequential_;
@@ -240,6 +250,7 @@ class DeviceRun {
     bool primed_ = false;
     Float lastDt_ = 0;
     std::string criterion_ = "none";
+    std::optional<sph::TimeStepLimits> limits_;  ///< of the current state
 };
 
 }  // namespace num::device

@@ -119,6 +119,7 @@ struct Scene {
     std::string evaluation = sph::defaults::evaluation;  ///< the pair loop: asymmetric or symmetric
     double endTime = 1, cfl = sph::defaults::cfl, dtMax = 0;
     std::string integrator = "leapfrog";
+    std::string backend = "cpu";  ///< numerics.backend: cpu or cuda (--backend overrides it)
     VectorField<Dim> gravity{};
     std::map<std::string, MaterialSpec> materials;
     std::vector<FluidBlock<Dim>> fluids;

@@ -16,7 +16,8 @@ struct RunOptions {
     std::string program = "fluid_sim";
     std::optional<std::string> outDir;   ///< overrides output.directory
     int threads = 0;                     ///< 0: all hardware threads
-    std::string backend = "threads";     ///< seq, omp or threads
+    std::string backend = "threads";     ///< seq, omp, threads, cpu (= threads) or cuda
+    bool backendGiven = false;           ///< --backend given: it overrides numerics.backend
     std::optional<double> endTime;       ///< overrides time.end
     std::optional<std::string> restart;  ///< checkpoint to continue from
     double checkpointEvery = 0;          ///< simulated seconds between checkpoints (0: none)

@@ -10,7 +10,7 @@
 // Use `hFromSupportRadius` / `supportRadius` to convert.
 //
 // Each kernel offers W, dW/dr (<= 0), the gradient with respect to x_i for the pair
-// vector r_ij = x_i - x_j, and dW/dh.
+// vector r_ij = x_i - x_j, and dW/dh, callable on host and device (sph/host_device.hpp).
 #pragma once
 
 #include <array>
@@ -30,38 +30,38 @@ struct RadialKernel {
     static constexpr T sigma = Shape::template sigma<T>(Dim);
 
     /// Support radius H = support * h.
-    static constexpr T supportRadius(T h) { return support * h; }
+    NUMERICS_HD static constexpr T supportRadius(T h) { return support * h; }
     /// Smoothing length h of the kernel whose support radius is H (Koschier's form).
-    static constexpr T hFromSupportRadius(T H) { return H / support; }
+    NUMERICS_HD static constexpr T hFromSupportRadius(T H) { return H / support; }
 
-    static constexpr T hPowDim(T h) {
+    NUMERICS_HD static constexpr T hPowDim(T h) {
         T p = h;
         for (int k = 1; k < Dim; ++k) p *= h;
         return p;
     }
 
-    static T W(T r, T h) {
+    NUMERICS_HD static T W(T r, T h) {
         const T q = r / h;
         return q >= support ? T(0) : sigma / hPowDim(h) * Shape::f(q);
     }
-    static T dW_dr(T r, T h) {
+    NUMERICS_HD static T dW_dr(T r, T h) {
         const T q = r / h;
         return q >= support ? T(0) : sigma / (hPowDim(h) * h) * Shape::df(q);
     }
     /// dW/dh at fixed r: -(sigma / h^(Dim+1)) (Dim f(q) + q f'(q)).
-    static T dW_dh(T r, T h) {
+    NUMERICS_HD static T dW_dh(T r, T h) {
         const T q = r / h;
         if (q >= support) return T(0);
         return -sigma / (hPowDim(h) * h) * (T(Dim) * Shape::f(q) + q * Shape::df(q));
     }
     /// grad_i W(|r_ij|, h) for r_ij = x_i - x_j; zero at r = 0 where the direction is undefined.
-    static Vec<T, Dim> gradW(const Vec<T, Dim>& rij, T h) {
+    NUMERICS_HD static Vec<T, Dim> gradW(const Vec<T, Dim>& rij, T h) {
         const T r = norm(rij);
         if (r <= T(0)) return Vec<T, Dim>{};
         return rij * (dW_dr(r, h) / r);
     }
     /// (1/r) dW/dr, finite at r = 0 for the smooth kernels; the factor of the gradient.
-    static T gradFactor(T r, T h) { return r > T(0) ? dW_dr(r, h) / r : T(0); }
+    NUMERICS_HD static T gradFactor(T r, T h) { return r > T(0) ? dW_dr(r, h) / r : T(0); }
 };
 
 /// Cubic B-spline M4 (Monaghan 1992, eq. 2.6; Monaghan & Lattanzio 1985). Support 2h.
@@ -76,13 +76,13 @@ struct CubicSplineShape {
         return dim == 1 ? T(2) / T(3) : dim == 2 ? T(10) / (T(7) * pi_v<T>) : T(1) / pi_v<T>;
     }
     template <class T>
-    static constexpr T f(T q) {
+    NUMERICS_HD static constexpr T f(T q) {
         if (q < T(1)) return T(1) - T(1.5) * q * q + T(0.75) * q * q * q;
         const T s = T(2) - q;
         return T(0.25) * s * s * s;
     }
     template <class T>
-    static constexpr T df(T q) {
+    NUMERICS_HD static constexpr T df(T q) {
         if (q < T(1)) return -T(3) * q + T(2.25) * q * q;
         const T s = T(2) - q;
         return -T(0.75) * s * s;
@@ -107,22 +107,22 @@ struct QuinticSplineShape {
                           : T(1) / (T(120) * pi_v<T>);
     }
     template <class T>
-    static constexpr T pow5(T x) {
+    NUMERICS_HD static constexpr T pow5(T x) {
         return x * x * x * x * x;
     }
     template <class T>
-    static constexpr T pow4(T x) {
+    NUMERICS_HD static constexpr T pow4(T x) {
         return x * x * x * x;
     }
     template <class T>
-    static constexpr T f(T q) {
+    NUMERICS_HD static constexpr T f(T q) {
         T v = pow5(T(3) - q);
         if (q < T(2)) v -= T(6) * pow5(T(2) - q);
         if (q < T(1)) v += T(15) * pow5(T(1) - q);
         return v;
     }
     template <class T>
-    static constexpr T df(T q) {
+    NUMERICS_HD static constexpr T df(T q) {
         T v = -T(5) * pow4(T(3) - q);
         if (q < T(2)) v += T(30) * pow4(T(2) - q);
         if (q < T(1)) v -= T(75) * pow4(T(1) - q);
@@ -179,12 +179,12 @@ struct SpikyShape {
                           : T(15) / (T(64) * pi_v<T>);
     }
     template <class T>
-    static constexpr T f(T q) {
+    NUMERICS_HD static constexpr T f(T q) {
         const T s = T(2) - q;
         return s * s * s;
     }
     template <class T>
-    static constexpr T df(T q) {
+    NUMERICS_HD static constexpr T df(T q) {
         const T s = T(2) - q;
         return -T(3) * s * s;
     }
@@ -195,7 +195,7 @@ struct SpikyShape {
 template <int Dim>
 struct WendlandC2DimShape : WendlandC2Shape {
     template <class T>
-    static constexpr T f(T q) {
+    NUMERICS_HD static constexpr T f(T q) {
         const T s = T(1) - T(0.5) * q;
         if constexpr (Dim == 1)
             return s * s * s * (T(1.5) * q + T(1));
@@ -203,7 +203,7 @@ struct WendlandC2DimShape : WendlandC2Shape {
             return s * s * s * s * (T(2) * q + T(1));
     }
     template <class T>
-    static constexpr T df(T q) {
+    NUMERICS_HD static constexpr T df(T q) {
         const T s = T(1) - T(0.5) * q;
         // 1D: d/dq[s^3 (1.5q+1)] = -1.5 s^2 (1.5q+1) + 1.5 s^3 = -3 q s^2
         // 2D/3D: d/dq[s^4 (2q+1)] = -2 s^3 (2q+1) + 2 s^4 = -5 q s^3
@@ -218,7 +218,7 @@ struct WendlandC2DimShape : WendlandC2Shape {
 template <int Dim>
 struct WendlandC4DimShape : WendlandC4Shape {
     template <class T>
-    static constexpr T f(T q) {
+    NUMERICS_HD static constexpr T f(T q) {
         const T s = T(1) - T(0.5) * q;
         if constexpr (Dim == 1) {
             return s * s * s * s * s * (T(2) * q * q + T(2.5) * q + T(1));
@@ -227,7 +227,7 @@ struct WendlandC4DimShape : WendlandC4Shape {
         }
     }
     template <class T>
-    static constexpr T df(T q) {
+    NUMERICS_HD static constexpr T df(T q) {
         const T s = T(1) - T(0.5) * q;
         // d/dq [s^n P(q)] = s^(n-1) (-(n/2) P(q) + s P'(q)),  s = 1 - q/2.
         if constexpr (Dim == 1) {

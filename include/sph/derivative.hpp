@@ -15,27 +15,12 @@
 #include <vector>
 
 #include "sph/derivative_arguments.hpp"
+#include "sph/formulas/pair_geometry.hpp"
 #include "sph/settings.hpp"
 #include "sph/storage.hpp"
 #include "sph/type_name.hpp"
 
 namespace num::sph {
-
-/// Geometry of one pair (i, j): dx = x_i - x_j (nearest periodic image), r = |dx|, the
-/// kernel value w = W(r, h) (0 unless a derivative asked for kernel values), and two factors
-/// that several terms share, computed once per pair (a division each):
-///   laplacian = dx . grad W / (r^2 + eta^2), eta^2 = defaults::laplacianEta2 h^2: the
-///               second-derivative factor of viscosity and conduction (Morris et al. 1997);
-///   inverseR2 = 1 / (r^2 + eta^2), eta^2 = defaults::inverseR2Eta2 h^2 (0.01 h^2): of the
-///               artificial viscosity (Monaghan 1992) and delta-SPH (Antuono et al. 2010).
-template <int Dim>
-struct PairGeometry {
-    Vector<Dim> dx;
-    Float r;
-    Float w;
-    Float laplacian;
-    Float inverseR2;
-};
 
 /// The geometry of all neighbours of a particle, parallel to its neighbour and gradient lists.
 template <int Dim>

@@ -38,49 +38,10 @@
 #include "sph/decomposition.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_term.hpp"
+#include "sph/formulas/pair_geometry.hpp"
 #include "sph/kernel_choice.hpp"
 
 namespace num::sph {
-
-namespace detail {
-template <class Kernel>
-struct KernelShape {};
-template <class Shape, int Dim, class T>
-struct KernelShape<kernels::RadialKernel<Shape, Dim, T>> {
-    using type = Shape;
-};
-}  // namespace detail
-
-/// (1/r) dW/dr of a radial kernel for the pair loop, without branches or divisions other than
-/// by r, so that the loop over a particle's neighbours vectorises. Equals Kernel::gradFactor
-/// to round-off for 0 < r < support radius (every found neighbour), and gives 0 at r = 0 (where
-/// the smooth kernels' dW/dr vanishes).
-/// The clamp of q is a member, not the constant: the compiler turns a clamp to a constant into
-/// a branch around the constant-folded f(support), and a loop with a branch does not vectorise
-/// (hence also the copies the pair loop makes inside each thread's function).
-template <class Kernel>
-struct GradientFactor {
-    using Shape = typename detail::KernelShape<Kernel>::type;
-    Float invH, scale, support = Kernel::support;
-    explicit GradientFactor(Float h)
-        : invH(1 / h), scale(Kernel::sigma / (Kernel::hPowDim(h) * h)) {}
-    Float factor(Float r) const {
-        const Float q = std::min(r * invH, support);
-        return scale * Shape::df(q) / std::max(r, std::numeric_limits<Float>::min());
-    }
-};
-
-/// W(r) of a radial kernel for the pair loop, without branches, so that the loop over a
-/// particle's neighbours vectorises (as GradientFactor). Bitwise Kernel::W for r below the
-/// support radius (every found neighbour): the same q = r / h and sigma / h^Dim * f(q); 0 from
-/// the support radius on.
-template <class Kernel>
-struct KernelValue {
-    using Shape = typename detail::KernelShape<Kernel>::type;
-    Float h, scale, support = Kernel::support;
-    explicit KernelValue(Float h) : h(h), scale(Kernel::sigma / Kernel::hPowDim(h)) {}
-    Float value(Float r) const { return scale * Shape::f(std::min(r / h, support)); }
-};
 
 /// Thrown by Solver::evaluate when its abandon check asked to stop part-way (a Ctrl-C during a
 /// step that would take long): the storage is left part-way through the step.
@@ -316,8 +277,10 @@ class Solver {
                     for (Size k = 0; k < m; ++k) gradientFactor[k] = gradient.factor(r[k]);
                     for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradientFactor[k];
                     for (Size k = 0; k < m; ++k)
-                        laplacian[k] = dot(dx[k], grads[k]) / (r[k] * r[k] + laplacianEta2);
-                    for (Size k = 0; k < m; ++k) inverseR2[k] = 1.0 / (r[k] * r[k] + inverseR2Eta2);
+                        laplacian[k] =
+                            formulas::pairLaplacian(dx[k], grads[k], r[k], laplacianEta2);
+                    for (Size k = 0; k < m; ++k)
+                        inverseR2[k] = formulas::pairInverseR2(r[k], inverseR2Eta2);
                     if (needsW) {
                         Float* w = sc.w.data();
                         for (Size k = 0; k < m; ++k) w[k] = kernelValue.value(r[k]);

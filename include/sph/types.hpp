@@ -50,6 +50,6 @@ enum class OrderEnum : int { ZERO = 0, FIRST = 1, SECOND = 2 };
 enum class ParticleKind : int { FLUID = 0, WALL = 1, BODY = 2 };
 
 /// Whether a stored KIND is a fluid particle (not a wall or body).
-inline bool isFluid(int kind) { return kind == int(ParticleKind::FLUID); }
+NUMERICS_HD_INLINE bool isFluid(int kind) { return kind == int(ParticleKind::FLUID); }
 
 }  // namespace num::sph

@@ -13,6 +13,7 @@
 #include <memory>
 
 #include "agreed_errors.hpp"
+#include "device/backend.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "io/simulation.hpp"
@@ -159,9 +160,11 @@ int runApp(int argc, char** argv, const AppInfo& info) {
                    "threads of the omp and threads backends (default: all cores)")
         ->check(CLI::Range(1, 1024));
     app.add_option("--backend", opt.backend,
-                   "seq (one thread), omp (OpenMP) or threads (default: a pool of threads that\n"
-                   "sleep when idle, faster than omp on a machine busy with other work)")
-        ->check(CLI::IsMember({"seq", "omp", "threads"}));
+                   "seq (one thread), omp (OpenMP), threads or cpu (default: a pool of threads\n"
+                   "that sleep when idle, faster than omp on a machine busy with other work), or\n"
+                   "cuda (the steps on an NVIDIA GPU; needs a build with CUDA: see --version);\n"
+                   "replaces the scene's numerics.backend")
+        ->check(CLI::IsMember({"seq", "omp", "threads", "cpu", "cuda"}));
     // Finite and positive: CLI::PositiveNumber lets "nan" through.
     const CLI::Validator finitePositive(
         [](std::string& text) {
@@ -186,7 +189,12 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     app.add_flag("--list-scenes", list,
                  "list the shipped scenes (./scenes, else the source tree's) with the program that "
                  "runs each, and exit");
-    app.set_version_flag("--version", info.name + " (numerics) 0.1.0");
+    app.set_version_flag("--version", info.name +
+                                          " (numerics) 0.1.0\nCUDA back end (--backend cuda): " +
+                                          (device::cudaBuilt() ? std::string("built")
+                                                               : std::string("not built (no CUDA "
+                                                                             "compiler at build "
+                                                                             "time)")));
     app.footer(examples(info.name, Dim));
     try {
         app.parse(argc, argv);
@@ -204,6 +212,7 @@ int runApp(int argc, char** argv, const AppInfo& info) {
         return listScenes(std::filesystem::is_directory("scenes", ec) ? "scenes" : info.scenesDir,
                           info);
     }
+    opt.backendGiven = app.count("--backend") > 0;
     if (!out.empty()) opt.outDir = out;
     if (endTime > 0) opt.endTime = endTime;
     if (!restart.empty()) opt.restart = restart;

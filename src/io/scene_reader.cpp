@@ -220,10 +220,10 @@ void warnSidewaysOpenSides(Scene<Dim>& s) {
 template <int Dim>
 Scene<Dim> readScene(const SceneDocument& doc) {
     const At root{doc.json(), doc.file(), ""};
-    root.object(
-        {"dimension", "name", "description", "domain", "boundaries", "particles", "time", "gravity",
-         "materials", "fluids", "bodies", "emitters", "output", "probes", "physics", "plugins"},
-        {"dimension", "domain", "boundaries", "particles", "time", "materials"});
+    root.object({"dimension", "name", "description", "domain", "boundaries", "particles", "time",
+                 "gravity", "materials", "fluids", "bodies", "emitters", "output", "probes",
+                 "physics", "plugins", "numerics"},
+                {"dimension", "domain", "boundaries", "particles", "time", "materials"});
     Scene<Dim> s;
     s.file = doc.file();
     const int dim = int(root["dimension"].integer(2, 3));
@@ -262,6 +262,11 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.integrator = t["integrator"].choice({"leapfrog", "predictor_corrector", "euler"});
 
     if (root.has("gravity")) s.gravity = readField<Dim>(root["gravity"]);
+    if (root.has("numerics")) {
+        const At nu = root["numerics"];
+        nu.object({"backend"});
+        if (nu.has("backend")) s.backend = nu["backend"].choice({"cpu", "cuda"});
+    }
 
     const At mats = root["materials"];
     if (!mats.v.is_object() || mats.v.empty())

@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "agreed_errors.hpp"
+#include "device_backend.hpp"
 #include "fingerprint.hpp"
 #include "initial_state.hpp"
 #include "io/checkpoint.hpp"
@@ -67,12 +68,17 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     if (!opt.quiet && root)
         for (const std::string& w : scene.warnings)
             std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
-    const int threads = opt.backend == "seq" ? 1
-                        : opt.threads > 0    ? opt.threads
+    // The CUDA back end runs the steps on the GPU; the CPU backend's threads do the rest.
+    const bool onCuda = runsOnCuda(scene, opt);
+    const std::string cpuBackend =
+        opt.backend == "cuda" || opt.backend == "cpu" ? "threads" : opt.backend;
+    const int threads = cpuBackend == "seq" ? 1
+                        : opt.threads > 0   ? opt.threads
                                           : int(std::max(1u, std::thread::hardware_concurrency()));
     checkGravity(scene);
     const ScenePlugins<Dim> plugins = loadPlugins<Dim>(doc);  // before set-up, in scene order
     SceneSetup<Dim> setup = makeSceneSetup(scene, threads, plugins.terms);
+    if (onCuda) checkCudaRun(scene, setup, opt, !plugins.empty(), comm.size());
     checkRunLimits(scene, setup, opt.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(scene, setup);
     checkInitialState(scene, setup, initial);
@@ -123,12 +129,16 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     emitters.setEmitted(state.emitted);
     emitters.setBlocked(state.emitterBlocked);
 
-    auto scheduler = sph::makeScheduler(opt.backend, Size(threads));
+    auto scheduler = sph::makeScheduler(cpuBackend, Size(threads));
     sph::Solver<Dim> solver(*scheduler, setup.settings,
                             sph::makeFluidEquations(setup.model, setup.geometry),
                             setup.geometry.domain);
     auto integrator = sph::makeIntegrator<Dim>(scene.integrator);
     sph::Run<Dim> run(storage, solver, *integrator, state.time);
+    // On the CUDA back end the steps run on the GPU (gpu below); `run` then keeps the time and
+    // the step count, and `storage` is brought up to date for outputs, checkpoints and checks.
+    std::unique_ptr<device::DeviceRun<Dim>> gpu;
+    if (onCuda) gpu = makeCudaRun(setup, state.time);
     // Each process keeps its share of the particles and a halo; one process keeps them all.
     parallel::DomainDecomposition<Dim> decomposition(comm, solver.domain(),
                                                      solver.kernel().supportRadius());
@@ -164,13 +174,20 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         if (comm.size() > 1) solver.setDecomposition(&decomposition);
         run.setTime(state.time, Size(state.steps));
         run.markPrimed(true);
+        if (gpu) gpu->setTime(state.time, Size(state.steps)), gpu->upload(storage, true);
         onRoot(comm, [&] { outputs->resume(state.time, state.series); });
     } else {
         onRoot(comm, [&] { outputs->start(); });
         emit(0.0);
         decomposition.distribute(storage);
         if (comm.size() > 1) solver.setDecomposition(&decomposition);
-        run.prime();
+        if (gpu) {
+            gpu->upload(storage, false);
+            gpu->prime();
+            gpu->download(storage);
+        } else {
+            run.prime();
+        }
         everyParticle(storage, [&](const sph::Storage<Dim>& all) {
             if (root) state.start = conservationVector(all, setup.gravity(1e300));
         });
@@ -195,7 +212,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     stop::duringRun();
     const stop::TestSignal testSignal = stop::testSignal();
     // Several processes finish the step in progress together: one alone cannot abandon it.
-    if (comm.size() == 1)
+    if (comm.size() == 1 && !gpu)
         solver.setAbandonCheck([&] { return stop::abandonStep(run.steps() + 1); });
     Progress progress(opt.quiet || !root         ? Progress::Mode::QUIET
                       : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
@@ -251,11 +268,20 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             // as a longer run does.
             const double next = nextOutputTime();
             const double stop = reached(scene.endTime, next) ? next : scene.endTime;
-            if (stop < next && run.time() + solver.timeStepLimits(storage).dt() > stop)
+            const double nextDt =
+                gpu ? gpu->timeStepLimits().dt() : solver.timeStepLimits(storage).dt();
+            if (stop < next && run.time() + nextDt > stop) {
+                if (gpu) gpu->download(storage);
                 beforeEndStep.emplace(resumable(), storage);
+            }
             double dt = 0;
             try {
-                dt = run.step(stop);
+                if (gpu) {
+                    dt = gpu->step(stop);
+                    run.setTime(gpu->time(), gpu->steps());
+                } else {
+                    dt = run.step(stop);
+                }
             } catch (const sph::EvaluationAbandoned&) {
                 abandoned = true;
                 break;
@@ -267,11 +293,23 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             const std::int64_t owned = ownedParticles(storage, comm);
             const std::int64_t particles = comm.sum(owned);
             particleSteps += double(particles);
-            agreed(comm, [&] {
-                checkHealth(*scheduler, storage, scene, run.time(), run.steps(), dt,
-                            run.limitingCriterion(), fieldNames);
-            });
-            if (const std::string w = physical.check(storage, run.time(), comm, *scheduler);
+            // On the GPU the particles are copied back (and checked) only when an output or a
+            // checkpoint is due, or the run ends.
+            const bool current =
+                !gpu || reached(run.time(), nextOutputTime()) ||
+                reached(run.time(), scene.endTime) ||
+                (opt.checkpointEvery > 0 &&
+                 reached(run.time(), (state.checkpointCount + 1) * opt.checkpointEvery)) ||
+                (testSignal.signal && run.steps() == testSignal.step);
+            if (gpu && current) gpu->download(storage);
+            if (current)
+                agreed(comm, [&] {
+                    checkHealth(*scheduler, storage, scene, run.time(), run.steps(), dt,
+                                gpu ? gpu->limitingCriterion() : run.limitingCriterion(),
+                                fieldNames);
+                });
+            if (const std::string w =
+                    current ? physical.check(storage, run.time(), comm, *scheduler) : std::string();
                 !w.empty() && !opt.quiet && root) {
                 progress.clearLine();
                 std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(), w.c_str());
@@ -299,6 +337,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
             }
         }
         if (stopRequested()) status = "interrupted";
+        if (gpu) gpu->download(storage);
         if (abandoned) {
             // The storage is part-way through the abandoned step: no output or checkpoint of it.
             message =
@@ -321,7 +360,7 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         failure = e.code();
     }
     const std::int64_t particles = comm.sum(ownedParticles(storage, comm));
-    progress.finish(run.time(), run.lastDt(), Size(particles), run.steps());
+    progress.finish(run.time(), gpu ? gpu->lastDt() : run.lastDt(), Size(particles), run.steps());
 
     state.emitted = emitters.emitted();
     state.emitterBlocked = emitters.blocked();
@@ -336,12 +375,19 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
     everyParticle(storage, [&](const sph::Storage<Dim>& all) {
         onRoot(comm, [&] {
             end = outputs->finish(status == "completed");
-            summary = summaryJson(scene, all, setup, state, run.time(), run.steps(),
-                                  run.steps() - startSteps, wall, particleSteps, threads,
-                                  opt.backend, status, message, solver.meanNeighbours());
+            summary =
+                summaryJson(scene, all, setup, state, run.time(), run.steps(),
+                            run.steps() - startSteps, wall, particleSteps, threads,
+                            gpu ? "cuda" : cpuBackend, status, message, solver.meanNeighbours());
         });
     });
     summary["processes"] = comm.size();
+    if (gpu) {
+        summary["device"] = cudaDeviceText();
+        summary["device_bytes"] = gpu->fluid().bytes();
+        summary["device_bytes_per_particle"] =
+            double(gpu->fluid().bytes()) / double(std::max<std::size_t>(1, storage.size()));
+    }
     summary["neighbour_list_builds"] = solver.neighbours().builds();
     summary["decomposition"] = {
         {"load_imbalance", decomposition.imbalance()},

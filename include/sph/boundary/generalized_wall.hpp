@@ -24,12 +24,14 @@
 // background pressure and v_w = v_wall, without a gather. Most of a tank's wall particles are
 // such (the shipped 3D dam break: 13,116 of its 16,491 particles are walls); which are is found
 // again at each build of the lists.
+// The formulas: sph/formulas/wall_condition.hpp (host and device).
 #pragma once
 
 #include <functional>
 #include <memory>
 
 #include "sph/boundary/thermal_condition.hpp"
+#include "sph/formulas/wall_condition.hpp"
 #include "sph/terms/equation_of_state.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/neighbour_gather.hpp"
@@ -76,23 +78,18 @@ class GeneralizedWall : public IEquationTerm<Dim> {
         };
         const auto fluid = [&](Size j) { return isFluid(kind[j]); };
         gather_->forEachWhere(scheduler, nearFluid_, fluid, [&](Size w, auto&& visit) {
-            Float sumW = 0, sumP = 0, sumT = 0;
-            Vec sumRhoR{}, sumV{};
+            formulas::WallSums<Dim> sums;
             visit([&](Size f, const Vec& dx, Float, Float W) {
-                sumW += W;
-                sumP += p[f] * W;
-                sumRhoR += dx * (rho[f] * W);
-                sumV += v[f] * W;
-                if (heat) sumT += T[f] * W;
+                sums.add(p[f], rho[f], v[f], heat ? T[f] : 0.0, heat, dx, W);
             });
-            if (!(sumW > 0)) return emptySum(w);
+            if (!sums.any()) return emptySum(w);
             const Vec wall = sliding ? wallVelocity[w] : Vec{};
-            p[w] = (sumP + dot(g, sumRhoR)) / sumW;
-            vb[w] = slip[w] == int(WallSlip::NO_SLIP) ? wall * 2.0 - sumV / sumW : wall;
+            p[w] = formulas::wallPressure(sums, g);
+            vb[w] = formulas::wallVelocity(sums, wall, slip[w] == int(WallSlip::NO_SLIP));
             rho[w] = eos_.density(p[w]);
             if (heat)
-                Tb[w] = cond[w] == int(ThermalCondition::FIXED_TEMPERATURE) ? 2 * T[w] - sumT / sumW
-                                                                            : T[w];
+                Tb[w] = formulas::wallTemperature(
+                    sums, T[w], cond[w] == int(ThermalCondition::FIXED_TEMPERATURE));
         });
         scheduler.parallelFor(Size(farFromFluid_.size()), 1024, [&](Size b, Size e) {
             for (Size k = b; k < e; ++k) emptySum(farFromFluid_[k]);

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "sph/formulas/post_step.hpp"
 #include "sph/setup/fluid_geometry.hpp"
 
 namespace num::sph {
@@ -29,17 +30,9 @@ class ParticleContainment : public IEquationTerm<Dim> {
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 if (!isFluid(kind[i])) continue;
-                for (int k = 0; k < Dim; ++k) {
-                    const Float lo = g.domain.min[k], hi = g.domain.max[k];
-                    if (g.hasWall(k, 0) && x[i][k] < lo) {
-                        x[i][k] = std::min(2 * lo - x[i][k], hi);
-                        v[i][k] = std::max(v[i][k], 0.0);
-                    }
-                    if (g.hasWall(k, 1) && x[i][k] > hi) {
-                        x[i][k] = std::max(2 * hi - x[i][k], lo);
-                        v[i][k] = std::min(v[i][k], 0.0);
-                    }
-                }
+                for (int k = 0; k < Dim; ++k)
+                    formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
+                                             g.hasWall(k, 0), g.hasWall(k, 1));
                 for (const SolidBody<Dim>& body : g.bodies) {
                     const Float d = body.shape.signedDistance(x[i]);
                     if (d >= 0) continue;

@@ -7,26 +7,15 @@
 //   HEAT_FLUX          conducts like CONDUCTING and receives the power of heat_ids::HEAT_SOURCE;
 //                      a layer of such particles is a heater plate that delivers a fixed flux
 //                      (see ThermalBoundary::setHeatFlux)
+// The enum and conductsHeat live in sph/formulas/heat_pairs.hpp (host and device).
 #pragma once
 
 #include <functional>
 
+#include "sph/formulas/heat_pairs.hpp"
 #include "sph/terms/thermal_properties.hpp"
 
 namespace num::sph {
-
-enum class ThermalCondition : int {
-    CONDUCTING = 0,
-    FIXED_TEMPERATURE = 1,
-    ADIABATIC = 2,
-    HEAT_FLUX = 3
-};
-
-/// True if the pair (a, b) exchanges heat by conduction.
-inline bool conductsHeat(int conditionA, int conditionB) {
-    return conditionA != int(ThermalCondition::ADIABATIC) &&
-           conditionB != int(ThermalCondition::ADIABATIC);
-}
 
 /// Sets the thermal condition of every particle for which select(i) is true. Creates the
 /// quantity (CONDUCTING everywhere) if the storage does not have it yet.

@@ -6,9 +6,10 @@
 // Acts only between approaching particles; antisymmetric, so momentum is conserved. For a
 // viscous flow it corresponds to nu = alpha h c0 / (2 (Dim + 2)) (Monaghan 2005, sec. 5.4).
 // Boundary particles show the wall condition's velocity (FluidId::PAIR_VELOCITY,
-// terms/pair_inputs.hpp).
+// terms/pair_inputs.hpp). The formula: sph/formulas/fluid_pairs.hpp.
 #pragma once
 
+#include "sph/formulas/fluid_pairs.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
 
@@ -36,17 +37,17 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
     void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
         const bool fi = isFluid(kind_[i]), fj = isFluid(kind_[j]);
         if (!(fi || (Symmetric && fj))) return;
-        const Float vr = dot(v_[i] - v_[j], pair.dx);
+        const Float vr = formulas::approachRate(v_[i], v_[j], pair.dx);
         if (vr >= 0) return;
-        // Pi_ij = -alpha c0 h vr / ((r^2 + eta^2) rho_ij)
-        const Float pi = -alphaC0h_ * vr * pair.inverseR2 / (0.5 * (rho_[i] + rho_[j]));
+        const Float pi =
+            formulas::artificialViscosityPi(alphaC0h_, vr, pair.inverseR2, rho_[i], rho_[j]);
         const Vec f = grad * pi;
         if (fi) a_[i] -= f * m_[j];
         if constexpr (Symmetric)
             if (fj) a_[j] += f * m_[i];
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
-    /// register, added in the order of eval, so the result is bitwise eval's.
+    /// register, with eval's formula in eval's order, so the result is bitwise eval's.
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
                           const NeighbourGeometry<Dim>& geometry) {
         if (!isFluid(kind_[i])) return;
@@ -57,8 +58,9 @@ class ArtificialViscosityPart : public DerivativeTemplate<ArtificialViscosityPar
             const Size j = neighs[k];
             // min(vr, 0) instead of a branch: receding pairs add a zero (an unpredictable
             // branch per pair costs more than the arithmetic it skips).
-            const Float vr = std::min(dot(vi - v_[j], geometry.dx[k]), Float(0));
-            const Float pi = -alphaC0h_ * vr * geometry.inverseR2[k] / (0.5 * (rhoi + rho_[j]));
+            const Float vr = std::min(formulas::approachRate(vi, v_[j], geometry.dx[k]), Float(0));
+            const Float pi = formulas::artificialViscosityPi(alphaC0h_, vr, geometry.inverseR2[k],
+                                                             rhoi, rho_[j]);
             sum -= grads[k] * pi * m_[j];
         }
         a_[i] = sum;

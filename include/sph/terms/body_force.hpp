@@ -4,6 +4,7 @@
 
 #include <functional>
 
+#include "sph/formulas/fluid_particles.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
@@ -22,7 +23,7 @@ class BodyForceTerm : public IEquationTerm<Dim> {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i)
-                if (isFluid(kind[i])) a[i] += g;
+                if (isFluid(kind[i])) formulas::addBodyForce(a[i], g);
         });
     }
     void create(Storage<Dim>&, IMaterial&) const override {}

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sph/equation_term.hpp"
+#include "sph/formulas/fluid_particles.hpp"
 #include "sph/terms/thermal_properties.hpp"
 
 namespace num::sph {
@@ -45,7 +46,8 @@ class BoussinesqBuoyancy : public IEquationTerm<Dim> {
             for (Size i = b; i < e; ++i) {
                 if (hasKind && kind[i] != int(ParticleKind::FLUID)) continue;
                 const ThermalMaterial& m = table[hasMat ? mat[i] : 0];
-                a[i] += g * (-m.expansion * (T[i] - m.referenceTemperature));
+                a[i] +=
+                    formulas::boussinesqAcceleration(g, m.expansion, T[i], m.referenceTemperature);
             }
         });
     }

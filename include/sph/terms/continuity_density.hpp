@@ -1,6 +1,6 @@
 // Continuity equation (Monaghan 1992, eq. 2.9, in the volume form of Colagrossi & Landrini 2003):
 //   drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij,   V_j = m_j / rho_j
-// (FluidId::VOLUME, terms/pair_inputs.hpp).
+// (FluidId::VOLUME, terms/pair_inputs.hpp). The formula: sph/formulas/fluid_pairs.hpp.
 // Only fluid densities evolve. Boundary particles enter with their own velocity, zero: they are
 // held in place (boundary_hold.hpp), and the equation is the time derivative of the kernel sum,
 // in which only their positions appear. A wall's prescribed surface velocity (a sliding lid,
@@ -15,6 +15,7 @@
 // at t = 0.9 to 28 s at spacings 0.08 to 0.04); now they run the 40 s (docs/validation.md).
 #pragma once
 
+#include "sph/formulas/fluid_pairs.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
 
@@ -38,13 +39,13 @@ class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Di
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec& grad) {
-        const Float div = dot(velocity(i) - velocity(j), grad);
-        if (isFluid(kind_[i])) drho_[i] += rho_[i] * volume_[j] * div;
+        const Float div = formulas::continuityDivergence(velocity(i), velocity(j), grad);
+        if (isFluid(kind_[i])) drho_[i] += formulas::continuityRate(rho_[i], volume_[j], div);
         if constexpr (Symmetric)
-            if (isFluid(kind_[j])) drho_[j] += rho_[j] * volume_[i] * div;
+            if (isFluid(kind_[j])) drho_[j] += formulas::continuityRate(rho_[j], volume_[i], div);
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
-    /// register, added in the order of eval, so the result is bitwise eval's.
+    /// register, with eval's formula in eval's order, so the result is bitwise eval's.
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
                           const NeighbourGeometry<Dim>&) {
         if (!isFluid(kind_[i])) return;
@@ -53,7 +54,8 @@ class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Di
         Float sum = drho_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
-            sum += rhoi * volume_[j] * dot(vi - velocity(j), grads[k]);
+            sum += formulas::continuityRate(
+                rhoi, volume_[j], formulas::continuityDivergence(vi, velocity(j), grads[k]));
         }
         drho_[i] = sum;
     }

@@ -6,13 +6,14 @@
 // delta ~ 0.1. The last term of psi subtracts the density difference of hydrostatic equilibrium
 // under the body force g, as in Fourtakas et al. (2019, Comput. Fluids 190, eq. 12) in its linear
 // form, so a tank at rest is not diffused away from hydrostatics. Applied between fluid particles
-// only.
+// only. The formula: sph/formulas/fluid_pairs.hpp.
 #pragma once
 
 #include <functional>
 #include <memory>
 #include <vector>
 
+#include "sph/formulas/fluid_pairs.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
 
@@ -28,7 +29,7 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
   public:
     using Vec = Vector<Dim>;
     DeltaSphPart(std::shared_ptr<const DeltaSphData<Dim>> data, Float delta, Float c0, Float h)
-        : data_(std::move(data)), coefficient_(2 * delta * h * c0) {}
+        : data_(std::move(data)), coefficient_(formulas::deltaSphCoefficient(delta, c0, h)) {}
 
     /// The gather writes fluid particles only.
     bool gathersAtBoundary(Size) const override { return false; }
@@ -45,13 +46,13 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
     void eval(Size i, Size j, const Vec& grad, const PairGeometry<Dim>& pair) {
         if (!isFluid(kind_[i]) || !isFluid(kind_[j])) return;
         const DeltaSphData<Dim>& d = *data_;
-        const Float psi = rho_[i] - rho_[j] - dot(d.gravityTerm, pair.dx);
-        const Float f = coefficient_ * psi * dot(pair.dx, grad) * pair.inverseR2;
+        const Float f = formulas::deltaSphFlux(coefficient_, rho_[i], rho_[j], d.gravityTerm,
+                                               pair.dx, grad, pair.inverseR2);
         drho_[i] += f * volume_[j];
         if constexpr (Symmetric) drho_[j] -= f * volume_[i];
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
-    /// register, added in the order of eval, so the result is bitwise eval's.
+    /// register, with eval's formula in eval's order, so the result is bitwise eval's.
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
                           const NeighbourGeometry<Dim>& geometry) {
         if (!isFluid(kind_[i])) return;
@@ -61,10 +62,9 @@ class DeltaSphPart : public DerivativeTemplate<DeltaSphPart<Dim>, Dim> {
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
             if (!isFluid(kind_[j])) continue;
-            const Vec& dx = geometry.dx[k];
-            const Float psi = rhoi - rho_[j] - dot(d.gravityTerm, dx);
-            const Float f = coefficient_ * psi * dot(dx, grads[k]) * geometry.inverseR2[k];
-            sum += f * volume_[j];
+            sum += formulas::deltaSphFlux(coefficient_, rhoi, rho_[j], d.gravityTerm,
+                                          geometry.dx[k], grads[k], geometry.inverseR2[k]) *
+                   volume_[j];
         }
         drho_[i] = sum;
     }
@@ -90,7 +90,8 @@ class DeltaSph : public IEquationTerm<Dim> {
                                               settings.get<double>("smoothing_length"));
     }
     void initialize(IScheduler&, Storage<Dim>&, Float t) override {
-        data_->gravityTerm = bodyForce_ ? bodyForce_(t) * (rho0_ / (c0_ * c0_)) : Vec{};
+        data_->gravityTerm =
+            bodyForce_ ? formulas::deltaSphGravityTerm(bodyForce_(t), rho0_, c0_) : Vec{};
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     TermAccess access() const override {

@@ -1,9 +1,7 @@
 // Equation of state of a weakly-compressible fluid, and the term that applies it.
 //
-// Tait (Monaghan 1994, eq. 3.5; Batchelor 1967):  p = B ((rho / rho0)^gamma - 1) + p_b,
-//                                                  B = rho0 c0^2 / gamma, gamma = 7.
-// Linear (Morris, Fox & Zhu 1997, eq. 10):        p = c0^2 (rho - rho0) + p_b.
-// p_b is an optional background pressure. Both have the sound speed c0 at rho = rho0.
+// Tait (Monaghan 1994, eq. 3.5) or linear (Morris et al. 1997, eq. 10): EquationOfState in
+// sph/formulas/equation_of_state.hpp, callable on host and device.
 // The term holds each fluid particle's pressure at or above p_b - T_max: liquid stretched
 // beyond the tension T_max cavitates (sph/defaults.hpp, maxTension); its density is left as it
 // is, the particle's larger volume standing for the cavity.
@@ -15,43 +13,10 @@
 #include <limits>
 
 #include "sph/equation_term.hpp"
+#include "sph/formulas/equation_of_state.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
-
-enum class EosType { TAIT, LINEAR };
-
-/// x^gamma; by squaring where gamma is a whole number up to 16 (the Tait gamma = 7: four
-/// multiplications, a few units in the last place from std::pow, at a fraction of its cost).
-inline Float power(Float x, Float gamma) {
-    if (gamma != std::floor(gamma) || gamma < 1 || gamma > 16) return std::pow(x, gamma);
-    Float result = 1, square = x;
-    for (int n = int(gamma);; square *= square) {
-        if (n & 1) result *= square;
-        if ((n >>= 1) == 0) return result;
-    }
-}
-
-struct EquationOfState {
-    EosType type = EosType::TAIT;
-    Float rho0 = 1000;
-    Float c0 = 10;
-    Float gamma = 7;
-    Float backgroundPressure = 0;
-
-    Float stiffness() const { return rho0 * c0 * c0 / gamma; }
-
-    Float pressure(Float rho) const {
-        if (type == EosType::LINEAR) return c0 * c0 * (rho - rho0) + backgroundPressure;
-        return stiffness() * (power(rho / rho0, gamma) - 1) + backgroundPressure;
-    }
-    /// The inverse, rho(p); Tait is clamped where (p - p_b) / B <= -1 has no density.
-    Float density(Float p) const {
-        const Float dp = p - backgroundPressure;
-        if (type == EosType::LINEAR) return rho0 + dp / (c0 * c0);
-        return rho0 * std::pow(std::max(1 + dp / stiffness(), 1e-3), 1 / gamma);
-    }
-};
 
 /// Sets the pressure of every fluid particle from its density, p_i = max(p(rho_i), p_b - T_max)
 /// (boundary particles get theirs from the wall condition).
@@ -73,7 +38,7 @@ class EquationOfStateTerm : public IEquationTerm<Dim> {
         auto kind = s.template getValue<int>(QuantityId::KIND);
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i)
-                if (isFluid(kind[i])) p[i] = std::max(eos_.pressure(rho[i]), pMin_);
+                if (isFluid(kind[i])) p[i] = formulas::fluidPressure(eos_, rho[i], pMin_);
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}

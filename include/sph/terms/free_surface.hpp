@@ -17,24 +17,18 @@
 // Inside the fluid (C_i >= 0.9) nothing changes, so closed flows (Taylor-Green, cavities) keep
 // their negative gauge pressures. C_i is the sum of the previous evaluation (one step old: a
 // particle moves less than 0.25 h per step); before the first it is taken as 1.
+// The formulas: sph/formulas/fluid_pairs.hpp and fluid_particles.hpp.
 #pragma once
 
 #include <memory>
 
+#include "sph/formulas/fluid_pairs.hpp"
+#include "sph/formulas/fluid_particles.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/terms/equation_of_state.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
-
-/// The kernel sum below which a particle's support is cut: the particle is at a free surface.
-inline constexpr Float surfaceKernelSum = 0.9;
-
-/// Whether a particle is at a free surface, from KERNEL_SUM (its neighbours' sum), its volume
-/// V_i and W(0): C_i = KERNEL_SUM_i + V_i W(0) < 0.9.
-inline bool atFreeSurface(Float neighbourSum, Float volume, Float w0) {
-    return neighbourSum + volume * w0 < surfaceKernelSum;
-}
 
 /// sum_{j != i} V_j W_ij into KERNEL_SUM, and the same sum over the neighbours that were
 /// free-surface particles in the previous evaluation into SURFACE_NEIGHBOURS.
@@ -73,22 +67,25 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec&, const PairGeometry<Dim>& pair) {
-        c_[i] += volume_[j] * pair.w;
-        if (atSurface_[j]) nearSurface_[i] += volume_[j] * pair.w;
+        const Float wi = formulas::kernelSumWeight(volume_[j], pair.w);
+        c_[i] += wi;
+        if (atSurface_[j]) nearSurface_[i] += wi;
         if constexpr (Symmetric) {
-            c_[j] += volume_[i] * pair.w;
-            if (atSurface_[i]) nearSurface_[j] += volume_[i] * pair.w;
+            const Float wj = formulas::kernelSumWeight(volume_[i], pair.w);
+            c_[j] += wj;
+            if (atSurface_[i]) nearSurface_[j] += wj;
         }
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
-    /// register, added in the order of eval, so the result is bitwise eval's.
+    /// register, with eval's formula in eval's order, so the result is bitwise eval's.
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec>,
                           const NeighbourGeometry<Dim>& geometry) {
         Float c = c_[i], near = nearSurface_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
-            c += volume_[j] * geometry.w[k];
-            if (atSurface_[j]) near += volume_[j] * geometry.w[k];
+            const Float weight = formulas::kernelSumWeight(volume_[j], geometry.w[k]);
+            c += weight;
+            if (atSurface_[j]) near += weight;
         }
         c_[i] = c, nearSurface_[i] = near;
     }
@@ -133,9 +130,10 @@ class FreeSurfaceTensionLimit : public IEquationTerm<Dim> {
         auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                if (!isFluid(kind[i]) || !atFreeSurface(c[i], m[i] / rho[i], w0_)) continue;
-                p[i] = std::max(p[i], pMin_);
-                rho[i] = std::max(rho[i], rhoMin_);
+                if (!isFluid(kind[i]) ||
+                    !atFreeSurface(c[i], formulas::particleVolume(m[i], rho[i]), w0_))
+                    continue;
+                formulas::limitSurfaceTension(p[i], rho[i], pMin_, rhoMin_);
             }
         });
     }

@@ -20,6 +20,7 @@
 // temperature that puts the prescribed one on the wall surface), else its own temperature.
 // Time-step limit (explicit diffusion): dt <= diffusion_factor h^2 / alpha_max with alpha = k /
 // (rho c).
+// The pair formula: sph/formulas/heat_pairs.hpp (host and device).
 #pragma once
 
 #include <algorithm>
@@ -30,6 +31,7 @@
 
 #include "sph/boundary/thermal_condition.hpp"
 #include "sph/equation_term.hpp"
+#include "sph/formulas/heat_pairs.hpp"
 
 namespace num::sph {
 
@@ -90,10 +92,10 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
         if (!conductsHeat(cond_[a], cond_[b])) return;
         const Float ka = k_[mat_[a]], kb = k_[mat_[b]];
         if (!(ka + kb > 0)) return;
-        const Float f =
-            exchange(ka, kb, rho_[a], rho_[b], temperature(a), temperature(b), pair.laplacian);
-        dT_[a] += m_[b] * f * invC_[mat_[a]];
-        if constexpr (Symmetric) dT_[b] -= m_[a] * f * invC_[mat_[b]];
+        const Float f = formulas::heatExchange(ka, kb, rho_[a], rho_[b], temperature(a),
+                                               temperature(b), pair.laplacian);
+        dT_[a] += formulas::heatRate(m_[b], f, invC_[mat_[a]]);
+        if constexpr (Symmetric) dT_[b] -= formulas::heatRate(m_[a], f, invC_[mat_[b]]);
     }
     /// Gather (asymmetric) evaluation: particle a's own data read once and its sum kept in a
     /// register, with eval's arithmetic in eval's order, so the result is bitwise eval's.
@@ -107,23 +109,18 @@ class HeatConductionDerivative : public DerivativeTemplate<HeatConductionDerivat
             if (!conductsHeat(condA, cond_[b])) continue;
             const Float kb = k_[mat_[b]];
             if (!(ka + kb > 0)) continue;
-            sum += m_[b] *
-                   exchange(ka, kb, rhoA, rho_[b], Ta, temperature(b), geometry.laplacian[k]) *
-                   invCa;
+            sum += formulas::heatRate(m_[b],
+                                      formulas::heatExchange(ka, kb, rhoA, rho_[b], Ta,
+                                                             temperature(b), geometry.laplacian[k]),
+                                      invCa);
         }
         dT_[a] = sum;
     }
 
   private:
-    /// The pair's exchange per unit mass and heat capacity, 4 k_a k_b / (k_a + k_b) (twice the
-    /// harmonic mean) / (rho_a rho_b) (T_a - T_b) (r_ab . grad W) / (r^2 + eta^2).
-    static Float exchange(Float ka, Float kb, Float rhoA, Float rhoB, Float Ta, Float Tb,
-                          Float laplacian) {
-        return 4.0 * ka * kb / ((ka + kb) * rhoA * rhoB) * (Ta - Tb) * laplacian;
-    }
     /// The temperature particle a shows to conduction: a fixed-temperature particle's wall value.
     Float temperature(Size a) const {
-        return cond_[a] == int(ThermalCondition::FIXED_TEMPERATURE) ? Tfixed_[a] : T_[a];
+        return formulas::conductionTemperature(cond_[a], T_[a], Tfixed_[a]);
     }
     void bindStates(const Storage<Dim>& s, Accumulated<Dim>& results) {
         T_ = s.template getValue<Float>(QuantityId::TEMPERATURE);

@@ -8,11 +8,13 @@
 // condition (2 v_wall - v~ for no-slip, Adami et al. 2012, eq. 23); free-slip boundary
 // particles are skipped (the velocities: FluidId::PAIR_VELOCITY, terms/pair_inputs.hpp).
 // Time-step limit: dt <= f h^2 / nu (Morris et al. 1997, eq. 13).
+// The formula: sph/formulas/fluid_pairs.hpp.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include "sph/formulas/fluid_pairs.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
 
@@ -48,14 +50,15 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
         const bool fi = isFluid(kind_[i]), fj = isFluid(kind_[j]);
         const ViscousData<Dim>& d = *data_;
         if (!(fi || (Symmetric && fj)) || !d.active[i] || !d.active[j]) return;
-        const Float f = (d.mu[i] + d.mu[j]) * pair.laplacian;
+        const Float f = formulas::laminarViscosityFactor(d.mu[i], d.mu[j], pair.laplacian);
         const Vec dv = v_[i] - v_[j];
-        if (fi) a_[i] += dv * (f * volume_[j] * (1.0 / rho_[i]));
+        if (fi) a_[i] += formulas::laminarViscosityAcceleration(dv, f, volume_[j], 1.0 / rho_[i]);
         if constexpr (Symmetric)
-            if (fj) a_[j] -= dv * (f * volume_[i] * (1.0 / rho_[j]));
+            if (fj)
+                a_[j] -= formulas::laminarViscosityAcceleration(dv, f, volume_[i], 1.0 / rho_[j]);
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
-    /// register, added in the order of eval, so the result is bitwise eval's.
+    /// register, with eval's formula in eval's order, so the result is bitwise eval's.
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec>,
                           const NeighbourGeometry<Dim>& geometry) {
         const ViscousData<Dim>& d = *data_;
@@ -66,8 +69,8 @@ class LaminarViscosityPart : public DerivativeTemplate<LaminarViscosityPart<Dim>
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
             if (!d.active[j]) continue;
-            const Float f = (mui + d.mu[j]) * geometry.laplacian[k];
-            sum += (vi - v_[j]) * (f * volume_[j] * invRhoi);
+            const Float f = formulas::laminarViscosityFactor(mui, d.mu[j], geometry.laplacian[k]);
+            sum += formulas::laminarViscosityAcceleration(vi - v_[j], f, volume_[j], invRhoi);
         }
         a_[i] = sum;
     }
@@ -99,7 +102,7 @@ class LaminarViscosity : public IEquationTerm<Dim> {
         d.mu.resize(s.size()), d.active.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                d.mu[i] = rho[i] * nu[i];
+                d.mu[i] = formulas::dynamicViscosity(rho[i], nu[i]);
                 d.active[i] = isFluid(kind[i]) || slip[i] == int(WallSlip::NO_SLIP);
             }
         });

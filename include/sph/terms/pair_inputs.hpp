@@ -12,6 +12,7 @@
 // PairInputs added before it.
 #pragma once
 
+#include "sph/formulas/fluid_particles.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
@@ -35,7 +36,7 @@ class PairInputs : public IEquationTerm<Dim> {
         auto velocity = s.template getValue<Vec>(FluidId::PAIR_VELOCITY);
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
-                volume[i] = m[i] / rho[i];
+                volume[i] = formulas::particleVolume(m[i], rho[i]);
                 if (isFluid(kind[i])) velocity[i] = v[i];
             }
         });

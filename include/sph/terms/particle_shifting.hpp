@@ -37,6 +37,7 @@
 // Phases: the pair sums (grad C, grad rho, grad v, the wall and surface flags) are made in
 // every evaluation; particles are moved once per step, in postStep, after the integrator, with
 // the step's dt and the sums of the step's last evaluation (at the end of the step).
+// The pair formulas: sph/formulas/fluid_pairs.hpp.
 #pragma once
 
 #include <algorithm>
@@ -45,6 +46,9 @@
 #include <optional>
 #include <vector>
 
+#include "sph/formulas/fluid_pairs.hpp"
+#include "sph/formulas/fluid_particles.hpp"
+#include "sph/formulas/post_step.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/free_surface.hpp"
@@ -96,21 +100,23 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
         const Float vi = volume_[i], vj = volume_[j];
         const Vec dv = velocity_[j] - velocity_[i];
         const Float drho = rho_[j] - rho_[i];
-        const Vec gradR =
-            grad * tensileFactor(pair.w, d.inverseWAtSpacing[i], d.inverseWAtSpacing[j]);
+        const Vec gradR = grad * formulas::shiftingTensileFactor(pair.w, d.inverseWAtSpacing[i],
+                                                                 d.inverseWAtSpacing[j]);
         gradC_[i] += gradR * vj;
-        gradRho_[i] += grad * (vj * drho);
+        gradRho_[i] += formulas::densityGradientTerm(grad, vj, drho);
         if (!isFluid(kind_[j])) wallDirection_[i] += grad * vj;
-        for (int b = 0; b < Dim; ++b) gradV_[b][i] += dv * (vj * grad[b]);
+        for (int b = 0; b < Dim; ++b)
+            gradV_[b][i] += formulas::velocityGradientTerm(dv, vj, grad[b]);
         if constexpr (Symmetric) {
             if (!isFluid(kind_[i])) wallDirection_[j] -= grad * vi;
             gradC_[j] -= gradR * vi;
-            gradRho_[j] += grad * (vi * drho);
-            for (int b = 0; b < Dim; ++b) gradV_[b][j] += dv * (vi * grad[b]);
+            gradRho_[j] += formulas::densityGradientTerm(grad, vi, drho);
+            for (int b = 0; b < Dim; ++b)
+                gradV_[b][j] += formulas::velocityGradientTerm(dv, vi, grad[b]);
         }
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sums kept in
-    /// registers, added in the order of eval, so the result is bitwise eval's.
+    /// registers, with eval's formulas in eval's order, so the result is bitwise eval's.
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
                           const NeighbourGeometry<Dim>& geometry) {
         const Float* inverseWAtSpacing = data_->inverseWAtSpacing.data();
@@ -125,20 +131,17 @@ class ParticleShiftingPart : public DerivativeTemplate<ParticleShiftingPart<Dim>
             const Float vj = volume_[j];
             const Vec dv = velocity_[j] - velocityI;
             const Float drho = rho_[j] - rhoI;
-            gradC += grad * tensileFactor(geometry.w[k], inverseWI, inverseWAtSpacing[j]) * vj;
-            gradRho += grad * (vj * drho);
+            gradC +=
+                grad *
+                formulas::shiftingTensileFactor(geometry.w[k], inverseWI, inverseWAtSpacing[j]) *
+                vj;
+            gradRho += formulas::densityGradientTerm(grad, vj, drho);
             if (!isFluid(kind_[j])) wallDirection += grad * vj;
-            for (int b = 0; b < Dim; ++b) gradV[b] += dv * (vj * grad[b]);
+            for (int b = 0; b < Dim; ++b)
+                gradV[b] += formulas::velocityGradientTerm(dv, vj, grad[b]);
         }
         gradC_[i] = gradC, gradRho_[i] = gradRho, wallDirection_[i] = wallDirection;
         for (int b = 0; b < Dim; ++b) gradV_[b][i] = gradV[b];
-    }
-
-    static constexpr Float tensileR = 0.6, tensileThreshold = 1.5;
-    /// 1 + R max(0, q^4 - 1.5), q = W_ij / W(dx_ij) with 1 / W(dx_ij) the mean of i's and j's.
-    static Float tensileFactor(Float w, Float inverseWi, Float inverseWj) {
-        const Float q = w * 0.5 * (inverseWi + inverseWj);
-        return 1 + tensileR * std::max(0.0, (q * q) * (q * q) - tensileThreshold);
     }
 
   private:
@@ -171,7 +174,7 @@ class ParticleShifting : public IEquationTerm<Dim> {
         d.inverseWAtSpacing.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i)
-                d.inverseWAtSpacing[i] = 1 / kernel_->W(std::pow(volume[i], 1.0 / Dim));
+                d.inverseWAtSpacing[i] = 1 / kernel_->W(formulas::particleSpacing<Dim>(volume[i]));
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
@@ -199,15 +202,12 @@ class ParticleShifting : public IEquationTerm<Dim> {
                 if (!isFluid(kind[i]) || atFreeSurface(c[i], volume[i], w0) || nearSurface[i] > 0 ||
                     !(dt > 0))
                     continue;
-                Vec dr = gradC[i] * (-diffusion);
-                const Vec& n = wallDirection[i];
-                if (const Float nn = normSqr(n); !normalToWalls_ && nn > 0)
-                    dr -= n * (dot(dr, n) / nn);
-                const Float len = norm(dr);
-                if (len > cap) dr *= cap / len;
-                x[i] += dr;
-                for (int k = 0; k < Dim; ++k) v[i] += gradV[k][i] * dr[k];
-                if (continuity) rho[i] += dot(gradRho[i], dr);
+                const Vec dr = formulas::shiftingDisplacement(gradC[i], wallDirection[i], diffusion,
+                                                              cap, normalToWalls_);
+                Vec columns[Dim];
+                for (int k = 0; k < Dim; ++k) columns[k] = gradV[k][i];
+                formulas::shiftParticle<Dim>(x[i], v[i], rho[i], continuity, dr, gradRho[i],
+                                             columns);
             }
         });
     }

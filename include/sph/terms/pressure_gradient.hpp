@@ -3,11 +3,13 @@
 // The pair contribution is antisymmetric, so sum_i m_i dv_i/dt = 0 to round-off. Boundary
 // particles take part with the pressure and density of the wall condition; only fluid
 // particles are accelerated. p / rho^2 is computed once per particle before the pair loop.
+// The formulas: sph/formulas/fluid_pairs.hpp.
 #pragma once
 
 #include <memory>
 #include <vector>
 
+#include "sph/formulas/fluid_pairs.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
@@ -37,13 +39,13 @@ class PressureGradientPart : public DerivativeTemplate<PressureGradientPart<Dim>
     }
     template <bool Symmetric>
     void eval(Size i, Size j, const Vec& grad) {
-        const Vec f = grad * (pr2_[i] + pr2_[j]);
+        const Vec f = formulas::pressureGradientForce(grad, pr2_[i], pr2_[j]);
         if (isFluid(kind_[i])) a_[i] -= f * m_[j];
         if constexpr (Symmetric)
             if (isFluid(kind_[j])) a_[j] += f * m_[i];
     }
     /// Gather (asymmetric) evaluation: the particle's own data read once and its sum kept in a
-    /// register, added in the order of eval, so the result is bitwise eval's.
+    /// register, with eval's formula in eval's order, so the result is bitwise eval's.
     void gatherNeighbours(Size i, ArrayView<const Size> neighs, ArrayView<const Vec> grads,
                           const NeighbourGeometry<Dim>&) {
         if (!isFluid(kind_[i])) return;
@@ -51,7 +53,7 @@ class PressureGradientPart : public DerivativeTemplate<PressureGradientPart<Dim>
         Vec sum = a_[i];
         for (std::size_t k = 0; k < neighs.size(); ++k) {
             const Size j = neighs[k];
-            sum -= grads[k] * (pr2i + pr2_[j]) * m_[j];
+            sum -= formulas::pressureGradientForce(grads[k], pr2i, pr2_[j]) * m_[j];
         }
         a_[i] = sum;
     }
@@ -75,7 +77,8 @@ class PressureGradient : public IEquationTerm<Dim> {
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         data_->pOverRho2.resize(s.size());
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
-            for (Size i = b; i < e; ++i) data_->pOverRho2[i] = p[i] / (rho[i] * rho[i]);
+            for (Size i = b; i < e; ++i)
+                data_->pOverRho2[i] = formulas::pressureOverDensity2(p[i], rho[i]);
         });
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}

@@ -3,10 +3,12 @@
 // the pair loop (a gather pass), so pressure and forces use the density of the same instant.
 // Exact mass conservation holds trivially (masses never change); near a free surface the sum
 // is truncated, so free-surface cases should use the continuity equation instead.
+// The formula: sph/formulas/fluid_pairs.hpp (host and device).
 #pragma once
 
 #include <memory>
 
+#include "sph/formulas/fluid_pairs.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/neighbour_gather.hpp"
 
@@ -26,7 +28,9 @@ class SummationDensity : public IEquationTerm<Dim> {
         fluid_ = particlesWhere(s, isFluid);
         gather_->forEach(scheduler, fluid_, [&](Size i, auto&& visit) {
             Float sum = 0;
-            visit([&](Size j, const Vector<Dim>&, Float, Float w) { sum += m[j] * w; });
+            visit([&](Size j, const Vector<Dim>&, Float, Float w) {
+                sum += formulas::summationDensityTerm(m[j], w);
+            });
             rho[i] = sum;
         });
     }

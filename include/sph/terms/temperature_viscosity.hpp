@@ -7,6 +7,7 @@
 //   Water (Vogel 1921 fit, T in degC):  mu(T) = A exp(B / (T + 273.15 - C)),
 //       A = 2.939e-5 Pa s, B = 507.88 K, C = 149.3 K (mu(20 degC) = 1.003e-3 Pa s),
 //       nu = mu / rho0.
+// The laws: ViscosityOfTemperature in sph/formulas/fluid_particles.hpp (host and device).
 // Boundary particles get the law at their own temperature with their material's parameters:
 // in the no-slip condition their viscosity stands for that of the fluid at the wall (a wall
 // at T0 + 20 K that kept nu0 made a warm channel's peak velocity 2 % too low). Runs
@@ -14,28 +15,14 @@
 // time-step limit reads the updated values.
 #pragma once
 
-#include <cmath>
 #include <vector>
 
 #include "sph/equation_term.hpp"
+#include "sph/formulas/fluid_particles.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/thermal_properties.hpp"
 
 namespace num::sph {
-
-enum class ViscosityLaw { EXPONENTIAL, WATER_VOGEL };
-
-struct ViscosityOfTemperature {
-    ViscosityLaw law = ViscosityLaw::EXPONENTIAL;
-    Float coefficient = 0.02;  ///< b of the exponential law [1/K] (water near 20 degC: ~0.02)
-
-    /// nu at temperature T for a material with viscosity nu0 at T0 and rest density rho0.
-    Float operator()(Float T, Float nu0, Float T0, Float rho0) const {
-        if (law == ViscosityLaw::WATER_VOGEL)
-            return 2.939e-5 * std::exp(507.88 / (T + 273.15 - 149.3)) / rho0;
-        return nu0 * std::exp(-coefficient * (T - T0));
-    }
-};
 
 template <int Dim>
 class TemperatureViscosity : public IEquationTerm<Dim> {

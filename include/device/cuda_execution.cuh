@@ -1,0 +1,120 @@
+// The CUDA execution of the device step (compiled by nvcc only; the interface of
+// HostExecution in device/execution.hpp): buffers by cudaMalloc, forEach a kernel launch of
+// the same functor the host runs in a loop, reductions by CUB's DeviceReduce and the cell sort
+// by CUB's DeviceRadixSort::SortPairs (stable, so the order is the host's std::stable_sort).
+// Every call is on the default stream, in order; errors become DeviceError.
+#pragma once
+
+#include <cuda_runtime.h>
+
+#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_reduce.cuh>
+#include <string>
+
+#include "device/execution.hpp"
+
+namespace num::device {
+
+inline void check(cudaError_t e, const char* what) {
+    if (e != cudaSuccess)
+        throw DeviceError(std::string("CUDA: ") + what + ": " + cudaGetErrorString(e));
+}
+
+template <class F>
+__global__ void forEachKernel(Index n, F f) {
+    const Index i = Index(blockIdx.x) * Index(blockDim.x) + Index(threadIdx.x);
+    if (i < n) f(i);
+}
+
+class CudaExecution {
+  public:
+    static constexpr bool onDevice = true;
+    static const char* name() { return "cuda"; }
+
+    CudaExecution() { check(cudaMalloc(&result_, sizeof(double)), "cudaMalloc"); }
+    CudaExecution(const CudaExecution&) = delete;
+    CudaExecution& operator=(const CudaExecution&) = delete;
+    ~CudaExecution() {
+        cudaFree(temp_);
+        cudaFree(result_);
+    }
+
+    template <class T>
+    T* allocate(std::size_t n) {
+        void* p = nullptr;
+        if (n) check(cudaMalloc(&p, n * sizeof(T)), "cudaMalloc (out of device memory?)");
+        return static_cast<T*>(p);
+    }
+    void release(void* p) { cudaFree(p); }
+    template <class T>
+    void upload(T* device, const T* host, std::size_t n) {
+        if (n) check(cudaMemcpy(device, host, n * sizeof(T), cudaMemcpyHostToDevice), "upload");
+    }
+    template <class T>
+    void download(T* host, const T* device, std::size_t n) {
+        if (n) check(cudaMemcpy(host, device, n * sizeof(T), cudaMemcpyDeviceToHost), "download");
+    }
+    template <class T>
+    void copy(T* to, const T* from, std::size_t n) {
+        if (n) check(cudaMemcpy(to, from, n * sizeof(T), cudaMemcpyDeviceToDevice), "copy");
+    }
+
+    template <class F>
+    void forEach(Index n, const F& f) {
+        if (n == 0) return;
+        constexpr unsigned threads = 256;
+        forEachKernel<<<(n + threads - 1) / threads, threads>>>(n, f);
+        check(cudaGetLastError(), "kernel launch");
+    }
+
+    double maxOf(const double* v, Index n) {
+        if (n == 0) return -std::numeric_limits<double>::infinity();
+        std::size_t bytes = 0;
+        check(cub::DeviceReduce::Max(nullptr, bytes, v, result_, int(n)), "DeviceReduce::Max");
+        check(cub::DeviceReduce::Max(temp(bytes), bytes, v, result_, int(n)), "DeviceReduce::Max");
+        return fetchResult();
+    }
+    double minOf(const double* v, Index n) {
+        if (n == 0) return std::numeric_limits<double>::infinity();
+        std::size_t bytes = 0;
+        check(cub::DeviceReduce::Min(nullptr, bytes, v, result_, int(n)), "DeviceReduce::Min");
+        check(cub::DeviceReduce::Min(temp(bytes), bytes, v, result_, int(n)), "DeviceReduce::Min");
+        return fetchResult();
+    }
+
+    void sortPairs(const SortKey* keysIn, SortKey* keysOut, const Index* valuesIn, Index* valuesOut,
+                   Index n, int keyBits) {
+        std::size_t bytes = 0;
+        check(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keysIn, keysOut, valuesIn, valuesOut,
+                                              int(n), 0, keyBits),
+              "DeviceRadixSort::SortPairs");
+        check(cub::DeviceRadixSort::SortPairs(temp(bytes), bytes, keysIn, keysOut, valuesIn,
+                                              valuesOut, int(n), 0, keyBits),
+              "DeviceRadixSort::SortPairs");
+    }
+
+    void synchronize() { check(cudaDeviceSynchronize(), "kernel"); }
+
+  private:
+    /// CUB's temporary storage, grown as needed and kept.
+    void* temp(std::size_t bytes) {
+        if (bytes > tempBytes_) {
+            cudaFree(temp_);
+            temp_ = nullptr, tempBytes_ = 0;
+            check(cudaMalloc(&temp_, bytes), "cudaMalloc (CUB temporary storage)");
+            tempBytes_ = bytes;
+        }
+        return temp_;
+    }
+    double fetchResult() {
+        double r = 0;
+        check(cudaMemcpy(&r, result_, sizeof(double), cudaMemcpyDeviceToHost), "reduction");
+        return r;
+    }
+
+    void* temp_ = nullptr;
+    std::size_t tempBytes_ = 0;
+    double* result_ = nullptr;
+};
+
+}  // namespace num::device

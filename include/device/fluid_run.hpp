@@ -1,0 +1,256 @@
+// The host side of the device step (plain C++; the apps and the tests use it): what a fluid
+// model must leave out to run on the device, its FluidStepConfig, the copies between a Storage
+// and the device step, and DeviceRun, the run loop of sph::Run (timestepping.hpp) over a device
+// step: the adaptive step from the same criteria (the maxima reduced on the device, offered in
+// the CPU solver's order), the leapfrog, the post-step phase.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "device/fluid_step.hpp"
+#include "sph/defaults.hpp"
+#include "sph/fluid_model.hpp"
+#include "sph/scheduler.hpp"
+
+namespace num::device {
+
+/// What of a fluid model the device step does not run yet, as "what (why)", or "" when it runs
+/// all of it. Checked before anything is uploaded.
+template <int Dim>
+std::string unsupported(const sph::FluidModel<Dim>& model, const sph::FluidGeometry<Dim>& geometry,
+                        const sph::RunSettings& settings) {
+    if (model.heat.any()) return "heat (conduction, buoyancy, temperature-dependent viscosity)";
+    if (model.extraTerms.size() > 0) return "extra equation terms (plugins' or users' terms)";
+    if (!geometry.bodies.empty()) return "solid bodies";
+    if (model.density == sph::DensityMode::SUMMATION) return "density by summation";
+    if (settings.get<std::string>("evaluation") == "symmetric") return "symmetric evaluation";
+    return "";
+}
+
+template <int Dim>
+FluidStepConfig<Dim> makeFluidStepConfig(const sph::FluidModel<Dim>& model,
+                                         const sph::FluidGeometry<Dim>& geometry,
+                                         const sph::RunSettings& settings) {
+    FluidStepConfig<Dim> c;
+    const sph::RunKernel<Dim> kernel(settings);
+    c.kernel = kernel.type, c.h = kernel.h, c.supportRadius = kernel.supportRadius();
+    c.w0 = kernel.W(0);
+    c.laplacianEta2 = sph::defaults::laplacianEta2 * c.h * c.h;
+    c.inverseR2Eta2 = sph::defaults::inverseR2Eta2 * c.h * c.h;
+    c.eos = model.equationOfState();
+    c.pMin = c.eos.backgroundPressure - model.maxTension;
+    c.tensionLimit = model.freeSurfaceTensionLimit;
+    c.surfaceRhoMin = model.freeSurfaceDensityFloor * c.eos.rho0;
+    c.surfacePMin = c.eos.pressure(c.surfaceRhoMin);
+    bool boundaries = !geometry.bodies.empty();
+    for (int k = 0; k < Dim; ++k) {
+        c.wallLow[k] = geometry.hasWall(k, 0), c.wallHigh[k] = geometry.hasWall(k, 1);
+        boundaries |= c.wallLow[k] || c.wallHigh[k];
+        c.domainMin[k] = geometry.domain.min[k], c.domainMax[k] = geometry.domain.max[k];
+        c.periodic[k] = geometry.domain.periodic[k];
+    }
+    c.walls = boundaries;
+    c.deltaCoefficient = model.deltaSph > 0
+                             ? sph::formulas::deltaSphCoefficient(model.deltaSph, c.eos.c0, c.h)
+                             : 0.0;
+    c.deltaHydrostatic = model.deltaSphHydrostatic;
+    c.alphaC0h = model.artificialViscosity > 0 ? model.artificialViscosity * c.eos.c0 * c.h : 0;
+    c.laminar = model.viscosity > 0;
+    c.shifting = model.shifting;
+    c.shiftingCoefficient = model.shiftingCoefficient;
+    c.shiftingNormalToWalls = model.shiftingNormalToWalls;
+    c.contain = model.containParticles && boundaries;
+    c.bodyForce = model.bodyForce;
+    c.dtFixed = settings.get<double>("dt_fixed"), c.dtMax = settings.get<double>("dt_max");
+    c.accelerationFactor = settings.get<double>("acceleration_factor");
+    c.cfl = settings.get<double>("cfl"), c.viscousFactor = settings.get<double>("viscous_factor");
+    return c;
+}
+
+namespace detail {
+template <class T, int Dim>
+std::vector<T> valuesOr(const sph::Storage<Dim>& s, sph::QuantityId id, T otherwise) {
+    if (!s.has(id)) return std::vector<T>(s.size(), otherwise);
+    const auto v = s.template getValue<T>(id);
+    return std::vector<T>(v.begin(), v.end());
+}
+template <class T, int Dim>
+void store(sph::Storage<Dim>& s, sph::QuantityId id, const std::vector<T>& from) {
+    if (!s.has(id)) return;
+    auto to = s.template getValue<T>(id);
+    std::copy(from.begin(), from.end(), to.begin());
+}
+}  // namespace detail
+
+/// The particles of a storage the device step starts from.
+template <int Dim>
+ParticleArrays<Dim> particleArrays(const sph::Storage<Dim>& s) {
+    namespace FluidId = sph::FluidId;
+    using sph::QuantityId;
+    using Vec = Vector<Dim>;
+    ParticleArrays<Dim> p;
+    const auto x = s.template getValue<Vec>(QuantityId::POSITION);
+    const auto v = s.template getDt<Vec>(QuantityId::POSITION);
+    const auto a = s.template getD2t<Vec>(QuantityId::POSITION);
+    p.x.assign(x.begin(), x.end()), p.v.assign(v.begin(), v.end()), p.a.assign(a.begin(), a.end());
+    p.m = detail::valuesOr<Float>(s, QuantityId::MASS, 0.0);
+    p.rho = detail::valuesOr<Float>(s, QuantityId::DENSITY, 0.0);
+    const auto drho = s.template getDt<Float>(QuantityId::DENSITY);
+    p.drho.assign(drho.begin(), drho.end());
+    p.p = detail::valuesOr<Float>(s, QuantityId::PRESSURE, 0.0);
+    p.nu = detail::valuesOr<Float>(s, FluidId::KINEMATIC_VISCOSITY, 0.0);
+    p.kernelSum = detail::valuesOr<Float>(s, FluidId::KERNEL_SUM, 1.0);
+    p.surfaceNeighbours = detail::valuesOr<Float>(s, FluidId::SURFACE_NEIGHBOURS, 0.0);
+    p.kind = detail::valuesOr<int>(s, QuantityId::KIND, int(sph::ParticleKind::FLUID));
+    p.slip = detail::valuesOr<int>(s, FluidId::WALL_SLIP, int(sph::WallSlip::NO_SLIP));
+    if (s.has(QuantityId::WALL_VELOCITY))
+        p.wallVelocity = detail::valuesOr<Vec>(s, QuantityId::WALL_VELOCITY, Vec{});
+    p.pairVelocity = detail::valuesOr<Vec>(s, FluidId::PAIR_VELOCITY, Vec{});
+    return p;
+}
+
+/// Writes what the device step changes back into the storage it started from.
+template <int Dim>
+void copyBack(const ParticleArrays<Dim>& p, sph::Storage<Dim>& s) {
+    namespace FluidId = sph::FluidId;
+    using sph::QuantityId;
+    using Vec = Vector<Dim>;
+    auto copy = [](const auto& from, auto to) { std::copy(from.begin(), from.end(), to.begin()); };
+    copy(p.x, s.template getValue<Vec>(QuantityId::POSITION));
+    copy(p.v, s.template getDt<Vec>(QuantityId::POSITION));
+    copy(p.a, s.template getD2t<Vec>(QuantityId::POSITION));
+    copy(p.rho, s.template getValue<Float>(QuantityId::DENSITY));
+    copy(p.drho, s.template getDt<Float>(QuantityId::DENSITY));
+    detail::store(s, QuantityId::PRESSURE, p.p);
+    detail::store(s, FluidId::KERNEL_SUM, p.kernelSum);
+    detail::store(s, FluidId::SURFACE_NEIGHBOURS, p.surfaceNeighbours);
+    detail::store(s, FluidId::VOLUME, p.volume);
+    detail::store(s, FluidId::PAIR_VELOCITY, p.pairVelocity);
+    detail::store(s, FluidId::KERNEL_SUM_GRADIENT, p.kernelSumGradient);
+    detail::store(s, FluidId::DENSITY_GRADIENT, p.densityGradient);
+    detail::store(s, FluidId::WALL_DIRECTION, p.wallDirection);
+    for (int b = 0; b < Dim; ++b)
+        detail::store(s, sph::velocityGradientId<Dim>(b), p.velocityGradient[b]);
+}
+
+/// The device step on the host execution (tests; a reference for the CUDA one).
+template <int Dim>
+class HostFluidStep final : public IDeviceFluid<Dim> {
+  public:
+    explicit HostFluidStep(FluidStepConfig<Dim> config) : step_(std::move(config), exec_) {}
+    void upload(const ParticleArrays<Dim>& p) override { step_.upload(p); }
+    void download(ParticleArrays<Dim>& p) override { step_.download(p); }
+    void evaluate(Float t) override { step_.evaluate(t); }
+    StepMaxima maxima() override { return step_.maxima(); }
+    void advance(Float t, Float dt) override { step_.advance(t, dt); }
+    void postStep(Float dt) override { step_.postStep(dt); }
+    std::size_t size() const override { return step_.size(); }
+    std::size_t bytes() const override { return step_.bytes(); }
+    const char* execution() const override { return step_.execution(); }
+
+  private:
+    HostExecution exec_;
+    DeviceFluidStep<Dim, HostExecution> step_;
+};
+
+/// sph::Run's step over a device step: particles uploaded once, copied back only when asked
+/// (outputs, probes, checkpoints).
+template <int Dim>
+class DeviceRun {
+  public:
+    using Size = sph::Size;
+    DeviceRun(std::unique_ptr<IDeviceFluid<Dim>> fluid, const FluidStepConfig<Dim>& config,
+              Float t0 = 0)
+        : fluid_(std::move(fluid)), config_(config), time_(t0) {}
+
+    /// Copies the storage's particles to the device. primed: its rates are those at the
+    /// current time (a restart), so the first step needs no evaluation first.
+    void upload(const sph::Storage<Dim>& s, bool primed) {
+        fluid_->upload(particleArrays(s));
+        primed_ = primed;
+        limits_.reset();
+    }
+    /// Copies the particles back into the storage they came from.
+    void download(sph::Storage<Dim>& s) {
+        ParticleArrays<Dim> p;
+        fluid_->download(p);
+        copyBack(p, s);
+    }
+    void prime() {
+        fluid_->evaluate(time_);
+        primed_ = true;
+        limits_.reset();
+    }
+
+    /// The limits of the next step, offered as the CPU solver offers them (reduced on the
+    /// device once per state).
+    sph::TimeStepLimits timeStepLimits() {
+        if (!limits_) limits_ = computeLimits();
+        return *limits_;
+    }
+
+    /// One step, at most up to tEnd (sph::Run::step). Returns the step taken.
+    Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
+        if (!primed_) prime();
+        const sph::TimeStepLimits limits = timeStepLimits();
+        Float dt = limits.dt();
+        criterion_ = limits.criterion();
+        if (!(dt < std::numeric_limits<Float>::infinity()))
+            throw std::runtime_error(
+                "no time-step criterion applies (no forces, no sound speed): set dt_fixed or "
+                "dt_max");
+        const bool last = time_ + dt >= tEnd;
+        if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
+        limits_.reset();
+        fluid_->advance(time_, dt);
+        time_ = last ? tEnd : time_ + dt;
+        fluid_->postStep(dt);
+        ++steps_;
+        lastDt_ = dt;
+        return dt;
+    }
+    void advanceTo(Float tEnd) {
+        while (time_ < tEnd * (1 - 1e-14)) step(tEnd);
+    }
+
+    Float time() const { return time_; }
+    Size steps() const { return steps_; }
+    Float lastDt() const { return lastDt_; }
+    const std::string& limitingCriterion() const { return criterion_; }
+    void setTime(Float t, Size steps) { time_ = t, steps_ = steps; }
+    IDeviceFluid<Dim>& fluid() { return *fluid_; }
+
+  private:
+    sph::TimeStepLimits computeLimits() {
+        sph::TimeStepLimits limits(sequential_);
+        if (config_.dtFixed > 0) {
+            limits.offer("fixed", config_.dtFixed);
+            return limits;
+        }
+        const StepMaxima m = fluid_->maxima();
+        limits.offer("dt_max", config_.dtMax);
+        if (m.acceleration2 > 0)
+            limits.offer("acceleration", config_.accelerationFactor *
+                                             std::sqrt(config_.h / std::sqrt(m.acceleration2)));
+        limits.offer("courant",
+                     config_.cfl * config_.h / (config_.eos.c0 + std::sqrt(m.fluidSpeed2)));
+        if (config_.laminar && m.viscosity > 0)
+            limits.offer("viscous", config_.viscousFactor * config_.h * config_.h / m.viscosity);
+        return limits;
+    }
+
+    std::unique_ptr<IDeviceFluid<Dim>> fluid_;
+    FluidStepConfig<Dim> config_;
+    sph::SequentialScheduler sequential_;
+    Float time_;
+    Size steps_ = 0;
+    bool primed_ = false;
+    Float lastDt_ = 0;
+    std::string criterion_ = "none";
+    std::optional<sph::TimeStepLimits> limits_;  ///< of the current state
+};
+
+}  // namespace num::device

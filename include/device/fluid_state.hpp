@@ -1,0 +1,104 @@
+// What the device step of the weakly-compressible fluid needs to know (FluidStepConfig, plain
+// data) and the particles it uploads and downloads (ParticleArrays, structure of arrays in the
+// storage's order). Built from a FluidModel, its geometry and the run settings by
+// device/fluid_run.hpp; read by the device step (device/fluid_step.hpp), which nvcc compiles:
+// hence no dependence on Storage or the terms here.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "sph/formulas/equation_of_state.hpp"
+#include "sph/kernel_choice.hpp"
+#include "sph/types.hpp"
+
+namespace num::device {
+
+using sph::Float;
+template <int Dim>
+using Vector = num::Vec<double, Dim>;
+
+template <int Dim>
+struct FluidStepConfig {
+    // Kernel.
+    sph::KernelType kernel = sph::KernelType::WENDLAND_C2;
+    Float h = 0, supportRadius = 0;
+    Float w0 = 0;                                ///< W(0), for the free-surface test
+    Float laplacianEta2 = 0, inverseR2Eta2 = 0;  ///< eta^2 of the two pair factors [m^2]
+    // Equation of state, tension limits.
+    sph::EquationOfState eos;
+    Float pMin = 0;  ///< p_b - T_max
+    bool tensionLimit = false;
+    Float surfaceRhoMin = 0, surfacePMin = 0;  ///< f rho0 and p(f rho0)
+    // Terms.
+    bool walls = false;          ///< the wall condition (any wall or body)
+    Float deltaCoefficient = 0;  ///< 2 delta h c0; 0: no delta-SPH
+    bool deltaHydrostatic = false;
+    Float alphaC0h = 0;  ///< alpha c0 h of the artificial viscosity; 0: off
+    bool laminar = false;
+    bool shifting = false;
+    Float shiftingCoefficient = 0;
+    bool shiftingNormalToWalls = false;
+    bool contain = false;                         ///< containment in the box's walls
+    bool wallLow[Dim] = {}, wallHigh[Dim] = {};   ///< which box sides are walls
+    std::function<Vector<Dim>(Float)> bodyForce;  ///< empty: none
+    // Domain.
+    Vector<Dim> domainMin{}, domainMax{};
+    bool periodic[Dim] = {};
+    // Time step (RunSettings of the same names).
+    Float dtFixed = 0, dtMax = 0, accelerationFactor = 0, cfl = 0, viscousFactor = 0;
+};
+
+/// The particles in the storage's order, as structure of arrays.
+template <int Dim>
+struct ParticleArrays {
+    using Vec = Vector<Dim>;
+    // The state a step starts from (uploaded).
+    std::vector<Vec> x, v, a;
+    std::vector<Float> m, rho, drho, p, nu, kernelSum, surfaceNeighbours;
+    std::vector<int> kind, slip;
+    std::vector<Vec> wallVelocity;  ///< empty: every boundary is held
+    // What an evaluation leaves (downloaded with the state).
+    std::vector<Float> volume;
+    std::vector<Vec> pairVelocity, kernelSumGradient, densityGradient, wallDirection;
+    std::array<std::vector<Vec>, Dim> velocityGradient;
+    std::size_t size() const { return x.size(); }
+};
+
+/// The maxima the time-step criteria need, reduced on the device.
+struct StepMaxima {
+    Float acceleration2 = 0;  ///< max |a|^2 over every particle
+    Float fluidSpeed2 = 0;    ///< max |v|^2 over the fluid
+    Float viscosity = 0;      ///< max nu (laminar viscosity on)
+};
+
+}  // namespace num::device
+
+namespace num::device {
+
+/// The device step of one execution (device/fluid_step.hpp), behind an interface that needs no
+/// CUDA header: the apps drive the CUDA one, the tests the host one (device/fluid_run.hpp).
+template <int Dim>
+class IDeviceFluid {
+  public:
+    virtual ~IDeviceFluid() = default;
+    /// Copies the particles to the execution's memory (in the storage's order).
+    virtual void upload(const ParticleArrays<Dim>& particles) = 0;
+    /// Copies them back, in the storage's order.
+    virtual void download(ParticleArrays<Dim>& particles) = 0;
+    /// Evaluates every rate at time t.
+    virtual void evaluate(Float t) = 0;
+    /// The maxima of the time-step criteria at the current state.
+    virtual StepMaxima maxima() = 0;
+    /// The leapfrog from t to t + dt: kick-drift, evaluate at t + dt, kick.
+    virtual void advance(Float t, Float dt) = 0;
+    /// The post-step phase of a step of dt: shifting, containment.
+    virtual void postStep(Float dt) = 0;
+    virtual std::size_t size() const = 0;
+    /// Memory the step holds in its execution [bytes].
+    virtual std::size_t bytes() const = 0;
+    virtual const char* execution() const = 0;
+};
+
+}  // namespace num::device

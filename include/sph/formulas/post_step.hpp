@@ -1,0 +1,40 @@
+// The post-step formulas of the fluid, written once for the CPU engine (ParticleShifting and
+// ParticleContainment's postStep) and the CUDA back end's device step.
+#pragma once
+
+#include "sph/host_device.hpp"
+#include "sph/types.hpp"
+
+namespace num::sph::formulas {
+
+// --- Particle shifting (terms/particle_shifting.hpp; its displacement dr:
+//     shiftingDisplacement, fluid_particles.hpp) ----------------------------------------------
+
+/// Moves a particle by dr and corrects its velocity and (continuity) density by the Taylor
+/// expansion; gradV: the Dim columns of (grad v)_i.
+template <int Dim>
+NUMERICS_HD void shiftParticle(Vector<Dim>& x, Vector<Dim>& v, Float& rho, bool continuity,
+                               const Vector<Dim>& dr, const Vector<Dim>& gradRho,
+                               const Vector<Dim> (&gradV)[Dim]) {
+    x += dr;
+    for (int k = 0; k < Dim; ++k) v += gradV[k] * dr[k];
+    if (continuity) rho += dot(gradRho, dr);
+}
+
+// --- Containment (boundary/particle_containment.hpp) ---------------------------------------
+
+/// One axis of a fluid particle against the box's walls [lo, hi]: reflected back inside, the
+/// velocity component into the wall removed.
+NUMERICS_HD_INLINE void containInWalls(Float& x, Float& v, Float lo, Float hi, bool wallLow,
+                                       bool wallHigh) {
+    if (wallLow && x < lo) {
+        x = hd::min(2 * lo - x, hi);
+        v = hd::max(v, 0.0);
+    }
+    if (wallHigh && x > hi) {
+        x = hd::max(2 * hi - x, lo);
+        v = hd::min(v, 0.0);
+    }
+}
+
+}  // namespace num::sph::formulas

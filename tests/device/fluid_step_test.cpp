@@ -1,0 +1,277 @@
+// The device step of the fluid (include/device/fluid_step.hpp), run by the host execution: the
+// functors the CUDA kernels launch, in plain loops, against the CPU engine (sph::Solver and
+// sph::Run with the fluid model's terms) on small 2D and 3D dam breaks and a periodic channel.
+//
+// Bitwise where the order of operations is the CPU's: the particles are first sorted as the
+// device grid sorts them, so that both visit every particle's neighbours in the same order (no
+// periodic wrap): then every single term's sum (pressure, density of walls, kernel sums, the
+// shifting sums) is the CPU's bit for bit. The rates that add several terms (acceleration: the
+// pressure gradient, artificial and laminar viscosity, gravity; density: continuity and
+// delta-SPH) differ in round-off only: the CPU adds each term's sum into one register in turn,
+// the device step keeps each term's sum apart and adds the sums at the end.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "device/fluid_run.hpp"
+#include "sph/timestepping.hpp"
+
+namespace {
+
+using namespace num;
+using namespace num::sph;
+using device::ParticleArrays;
+
+template <int Dim>
+struct Case {
+    FluidModel<Dim> model;
+    FluidGeometry<Dim> geometry;
+    RunSettings settings;
+};
+
+/// A dam break: a block of water in the corner of a closed tank, gravity, the default numerics
+/// (delta-SPH, shifting, tension limit) with artificial and laminar viscosity; periodicX: a
+/// channel periodic in x instead, water filling the lower part.
+template <int Dim>
+Case<Dim> damBreak(bool periodicX = false) {
+    Case<Dim> c;
+    const double dx = Dim == 2 ? 0.04 : 0.08;
+    c.geometry.spacing = dx;
+    for (int k = 0; k < Dim; ++k) c.geometry.domain.min[k] = 0, c.geometry.domain.max[k] = 0.8;
+    c.geometry.domain.max[Dim - 1] = 0.6;
+    Vector<Dim> hi = c.geometry.domain.max;
+    hi[0] = periodicX ? 0.8 : 0.32, hi[Dim - 1] = 0.32;
+    c.geometry.domain.periodic[0] = periodicX;
+    c.geometry.fluid.push_back(
+        FluidRegion<Dim>::filling(Shape<Dim>::box(c.geometry.domain.min, hi)));
+    if (periodicX)  // a flow along the channel
+        c.geometry.fluid.back().velocity = [](const Vector<Dim>& x) {
+            Vector<Dim> v{};
+            v[0] = 0.5 * x[Dim - 1];
+            return v;
+        };
+    Vector<Dim> g{};
+    g[Dim - 1] = -9.81;
+    c.model.bodyForce = constantForce(g);
+    c.model.maxVelocity = 2.5;
+    c.model.viscosity = 1e-6;
+    c.model.artificialViscosity = 0.02;
+    c.settings.set("kernel", std::string("wendland_c2")).set("smoothing_length", 1.5 * dx);
+    return c;
+}
+
+template <class V>
+double largest(const std::vector<V>& v) {
+    double m = 0;
+    for (const V& e : v) {
+        if constexpr (std::is_arithmetic_v<V>)
+            m = std::max(m, std::abs(double(e)));
+        else
+            m = std::max(m, norm(e));
+    }
+    return m;
+}
+
+template <int Dim>
+ParticleArrays<Dim> stateOf(const Storage<Dim>& s) {
+    ParticleArrays<Dim> p = device::particleArrays(s);
+    p.volume = std::vector<Float>(s.template getValue<Float>(FluidId::VOLUME).begin(),
+                                  s.template getValue<Float>(FluidId::VOLUME).end());
+    auto vec = [&](QuantityId id) {
+        const auto v = s.template getValue<Vector<Dim>>(id);
+        return std::vector<Vector<Dim>>(v.begin(), v.end());
+    };
+    p.kernelSumGradient = vec(FluidId::KERNEL_SUM_GRADIENT);
+    p.densityGradient = vec(FluidId::DENSITY_GRADIENT);
+    p.wallDirection = vec(FluidId::WALL_DIRECTION);
+    for (int b = 0; b < Dim; ++b) p.velocityGradient[b] = vec(velocityGradientId<Dim>(b));
+    return p;
+}
+
+/// Sorts the storage's particles as the device grid sorts them (by cell, stably).
+template <int Dim>
+void sortAsTheDevice(Storage<Dim>& s, const device::FluidStepConfig<Dim>& c) {
+    device::HostExecution exec;
+    device::NeighbourGrid<Dim, device::HostExecution> grid(exec, c.supportRadius, c.domainMin,
+                                                           c.domainMax, c.periodic);
+    const auto x = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
+    grid.build(x.data(), device::Index(x.size()));
+    std::vector<Size> order(grid.order(), grid.order() + x.size());
+    s.reorder(order);
+}
+
+#define EXPECT_SAME(a, b, what)                                                       \
+    do {                                                                              \
+        ASSERT_EQ((a).size(), (b).size()) << what;                                    \
+        std::size_t differ = 0;                                                       \
+        for (std::size_t i = 0; i < (a).size(); ++i) differ += !((a)[i] == (b)[i]);   \
+        EXPECT_EQ(differ, 0u) << what << ": particles that differ of " << (a).size(); \
+    } while (0)
+
+template <class V>
+double largestDifference(const std::vector<V>& a, const std::vector<V>& b) {
+    double m = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if constexpr (std::is_arithmetic_v<V>)
+            m = std::max(m, std::abs(double(a[i] - b[i])));
+        else
+            m = std::max(m, norm(a[i] - b[i]));
+    }
+    return m;
+}
+
+/// Two evaluations (the second with the first's kernel sums: the tension limit and the surface
+/// flags act) by the CPU solver and by the device step, from the same particles.
+template <int Dim>
+void compareOneEvaluation(bool periodicX) {
+    const Case<Dim> c = damBreak<Dim>(periodicX);
+    const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
+    ASSERT_EQ(device::unsupported(c.model, c.geometry, c.settings), "");
+    Storage<Dim> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    sortAsTheDevice(storage, config);
+    SequentialScheduler scheduler;
+    Solver<Dim> solver(scheduler, c.settings, makeFluidEquations(c.model, c.geometry),
+                       c.geometry.domain);
+    device::HostFluidStep<Dim> step(config);
+    step.upload(device::particleArrays(storage));
+    solver.evaluate(storage, 0.0);
+    step.evaluate(0.0);
+    solver.evaluate(storage, 0.01);
+    step.evaluate(0.01);
+    const ParticleArrays<Dim> cpu = stateOf(storage);
+    ParticleArrays<Dim> dev;
+    step.download(dev);
+
+    EXPECT_GT(largest(cpu.a), 1.0);  // the case has accelerations to compare
+    EXPECT_GT(largest(cpu.kernelSumGradient), 0.0);
+    if (!periodicX) {  // the same neighbour order: bitwise
+        EXPECT_SAME(dev.x, cpu.x, "positions");
+        EXPECT_SAME(dev.p, cpu.p, "pressure (equation of state, tension limit, walls)");
+        EXPECT_SAME(dev.rho, cpu.rho, "density (tension limit, walls)");
+        EXPECT_SAME(dev.pairVelocity, cpu.pairVelocity, "pair velocity (walls)");
+        EXPECT_SAME(dev.volume, cpu.volume, "volume");
+        EXPECT_SAME(dev.kernelSum, cpu.kernelSum, "kernel sum");
+        EXPECT_SAME(dev.surfaceNeighbours, cpu.surfaceNeighbours, "surface neighbours");
+        EXPECT_SAME(dev.kernelSumGradient, cpu.kernelSumGradient, "kernel sum gradient");
+        EXPECT_SAME(dev.densityGradient, cpu.densityGradient, "density gradient");
+        EXPECT_SAME(dev.wallDirection, cpu.wallDirection, "wall direction");
+        for (int b = 0; b < Dim; ++b)
+            EXPECT_SAME(dev.velocityGradient[b], cpu.velocityGradient[b], "velocity gradient");
+    }
+    // Round-off: relative to the largest value of each.
+    const double eps = periodicX ? 1e-9 : 1e-12;
+    EXPECT_LE(largestDifference(dev.a, cpu.a), eps * largest(cpu.a));
+    EXPECT_LE(largestDifference(dev.drho, cpu.drho), eps * largest(cpu.drho));
+    EXPECT_LE(largestDifference(dev.p, cpu.p), eps * largest(cpu.p));
+    EXPECT_LE(largestDifference(dev.kernelSum, cpu.kernelSum), eps);
+    EXPECT_LE(largestDifference(dev.kernelSumGradient, cpu.kernelSumGradient),
+              eps * largest(cpu.kernelSumGradient));
+}
+
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolver2D) { compareOneEvaluation<2>(false); }
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolver3D) { compareOneEvaluation<3>(false); }
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverOnAPeriodicChannel) {
+    compareOneEvaluation<2>(true);
+}
+
+/// The CPU run and the device step's run over the same steps.
+template <int Dim>
+void compareShortRun(bool periodicX, int steps) {
+    const Case<Dim> c = damBreak<Dim>(periodicX);
+    const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
+    Storage<Dim> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    device::DeviceRun<Dim> deviceRun(std::make_unique<device::HostFluidStep<Dim>>(config), config);
+    deviceRun.upload(storage, false);
+    SequentialScheduler scheduler;
+    Solver<Dim> solver(scheduler, c.settings, makeFluidEquations(c.model, c.geometry),
+                       c.geometry.domain);
+    LeapfrogKDK<Dim> integrator;
+    sph::Run<Dim> run(storage, solver, integrator);
+    for (int k = 0; k < steps; ++k) {
+        const double dtCpu = run.step(), dtDevice = deviceRun.step();
+        ASSERT_NEAR(dtDevice, dtCpu, 1e-9 * dtCpu) << "step " << k;
+        ASSERT_EQ(deviceRun.limitingCriterion(), run.limitingCriterion());
+    }
+    EXPECT_NEAR(deviceRun.time(), run.time(), 1e-9 * run.time());
+    Storage<Dim> fromDevice = storage;
+    deviceRun.download(fromDevice);
+    const ParticleArrays<Dim> cpu = stateOf(storage), dev = stateOf(fromDevice);
+    const double dx = c.geometry.spacing;
+    double moved = 0;
+    const ParticleArrays<Dim> start =
+        device::particleArrays(makeFluidStorage(c.model, c.geometry, c.settings));
+    moved = largestDifference(cpu.x, start.x);
+    EXPECT_GT(moved, 1e-3 * dx);  // the particles moved
+    // Round-off grows over the steps, but stays far below what the flow moved them.
+    EXPECT_LE(largestDifference(dev.x, cpu.x), 1e-6 * moved);
+    EXPECT_LE(largestDifference(dev.v, cpu.v), 1e-6 * largest(cpu.v));
+    EXPECT_LE(largestDifference(dev.rho, cpu.rho), 1e-9 * c.model.restDensity);
+}
+
+TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRun2D) { compareShortRun<2>(false, 20); }
+TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRun3D) { compareShortRun<3>(false, 8); }
+TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRunOnAPeriodicChannel) {
+    compareShortRun<2>(true, 20);
+}
+
+template <int Dim>
+ParticleArrays<Dim> deviceRunOf(const Case<Dim>& c, int steps) {
+    const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
+    Storage<Dim> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    device::DeviceRun<Dim> run(std::make_unique<device::HostFluidStep<Dim>>(config), config);
+    run.upload(storage, false);
+    for (int k = 0; k < steps; ++k) run.step();
+    ParticleArrays<Dim> p;
+    run.fluid().download(p);
+    return p;
+}
+
+TEST(DeviceFluidStep, TwoRunsAreBitwiseIdentical) {
+    const Case<2> c = damBreak<2>();
+    const ParticleArrays<2> a = deviceRunOf(c, 15), b = deviceRunOf(c, 15);
+    EXPECT_SAME(a.x, b.x, "positions");
+    EXPECT_SAME(a.v, b.v, "velocities");
+    EXPECT_SAME(a.rho, b.rho, "densities");
+    EXPECT_SAME(a.a, b.a, "accelerations");
+}
+
+/// A run stopped, copied back into a storage and continued from it (as from a checkpoint)
+/// ends bitwise as the uninterrupted run; and the CPU engine continues the device's state.
+TEST(DeviceFluidStep, ARestartFromTheDownloadedStateContinuesBitwise) {
+    const Case<2> c = damBreak<2>();
+    const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
+    Storage<2> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    device::DeviceRun<2> first(std::make_unique<device::HostFluidStep<2>>(config), config);
+    first.upload(storage, false);
+    for (int k = 0; k < 6; ++k) first.step();
+    first.download(storage);
+    device::DeviceRun<2> second(std::make_unique<device::HostFluidStep<2>>(config), config,
+                                first.time());
+    second.upload(storage, true);
+    for (int k = 0; k < 6; ++k) first.step(), second.step();
+    ParticleArrays<2> a, b;
+    first.fluid().download(a);
+    second.fluid().download(b);
+    EXPECT_SAME(a.x, b.x, "positions");
+    EXPECT_SAME(a.v, b.v, "velocities");
+    EXPECT_SAME(a.rho, b.rho, "densities");
+    EXPECT_EQ(first.time(), second.time());
+
+    // The CPU engine continues from the device's state (primed: the rates are current).
+    second.download(storage);
+    SequentialScheduler scheduler;
+    Solver<2> solver(scheduler, c.settings, makeFluidEquations(c.model, c.geometry),
+                     c.geometry.domain);
+    LeapfrogKDK<2> integrator;
+    sph::Run<2> cpu(storage, solver, integrator, second.time());
+    cpu.markPrimed(true);
+    const double dtCpu = cpu.step(), dtDevice = second.step();
+    EXPECT_NEAR(dtCpu, dtDevice, 1e-9 * dtCpu);
+    ParticleArrays<2> after;
+    second.fluid().download(after);
+    EXPECT_LE(largestDifference(stateOf(storage).x, after.x), 1e-9 * c.geometry.spacing);
+}
+
+}  // namespace

@@ -30,7 +30,7 @@ bool runsOnCuda(const Scene<Dim>& scene, const RunOptions& opt) {
 }
 
 /// Refuses what the CUDA back end does not run (yet), naming the scene key; then a build
-/// without the back end or a machine without a GPU (exit code 11).
+/// without the back end or a machine without a GPU (exit code 12).
 template <int Dim>
 void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const RunOptions& opt,
                   bool plugins, int processes) {

@@ -106,7 +106,7 @@ def main():
             return SKIP
         probe = run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", "1e-4", "--out",
                                   os.path.join(work, "probe")] + quiet, env, check=False)
-        if probe.returncode == 11:
+        if probe.returncode == 12:
             print("skipped: no GPU: " + probe.stderr.strip())
             return SKIP
         if probe.returncode != 0:
@@ -164,13 +164,13 @@ def main():
         good = sym.returncode == 5 and "particles.evaluation" in sym.stderr
         print(f"  {'ok  ' if good else 'FAIL'} symmetric: exit {sym.returncode}: {sym.stderr.strip()}")
         ok &= good
-        # Without the test hook, on a build without CUDA or a machine without a GPU: exit 11.
+        # Without the test hook, on a build without CUDA or a machine without a GPU: exit 12.
         plain = run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", "1e-4", "--out",
                                   os.path.join(work, "plain")] + quiet,
                     {"NUMERICS_TEST_DEVICE_EXECUTION": ""}, check=False)
-        good = plain.returncode in (0, 11) and (plain.returncode == 0 or "cuda" in plain.stderr)
+        good = plain.returncode in (0, 12) and (plain.returncode == 0 or "cuda" in plain.stderr)
         print(f"  {'ok  ' if good else 'FAIL'} without the hook: exit {plain.returncode} "
-              f"(0 with a GPU, 11 without): {plain.stderr.strip()}")
+              f"(0 with a GPU, 12 without): {plain.stderr.strip()}")
         ok &= good
     print("PASSED" if ok else "FAILED")
     return 0 if ok else 1

@@ -39,7 +39,13 @@ using sph::Size;
 SceneDocument sceneOfCheckpoint(const std::string& path, int dimension) {
     const std::string payload = readCheckpointFile(path, dimension);
     ByteReader r(payload, path);
-    return SceneDocument::fromText(r.getString(), path + " (scene stored in the checkpoint)");
+    try {
+        return SceneDocument::fromText(r.getString(), path + " (scene stored in the checkpoint)");
+    } catch (const AppError& e) {
+        // The checksum matched: the file was edited and its checksum written again.
+        throw AppError(ExitCode::CHECKPOINT,
+                       std::string(e.what()) + "; it cannot be used for --restart");
+    }
 }
 
 /// The number of particles a process owns (those not yet assigned count on the root).
@@ -167,6 +173,12 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         onRoot(comm, [&] { outputs->resume(state.time, state.series); });
     } else {
         onRoot(comm, [&] { outputs->start(); });
+        if (root && !outputs->earlierRunNote().empty()) {
+            if (!opt.quiet)
+                std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(),
+                             outputs->earlierRunNote().c_str());
+            scene.warnings.push_back(outputs->earlierRunNote());  // and in summary.json
+        }
         emit(0.0);
         decomposition.distribute(storage);
         if (comm.size() > 1) solver.setDecomposition(&decomposition);
@@ -202,6 +214,9 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                                                  : Progress::Mode::PLAIN,
                       run.time(), scene.endTime);
     PhysicalCheck physical(setup.velocityScale, setup.model.c0(), setup.model.restDensity);
+    for (const auto& r : plugins.ranges)
+        physical.addRange({r.id, r.name, r.unit, r.lo, r.hi,
+                           "the range the plugin " + r.library + " declares for it"});
     std::vector<std::pair<double, std::string>> checkpoints;
     auto resumable = [&] {
         RunState<Dim> r = state;

@@ -333,6 +333,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         // A plugin term that failed in a step stops the run as an instability does.
         if (e.code() != ExitCode::UNSTABLE && e.code() != ExitCode::PLUGIN) throw;
         status = e.code() == ExitCode::UNSTABLE ? "unstable" : "failed", message = e.what();
+        // The first step from a checkpoint: the checkpoint may hold a state no run reached.
+        if (opt.restart && e.code() == ExitCode::UNSTABLE && run.steps() <= startSteps + 1)
+            message += "; this was the first step from " + *opt.restart +
+                       ": if that checkpoint was edited, restart from one that was not";
         failure = e.code();
     }
     const std::int64_t particles = comm.sum(ownedParticles(storage, comm));

@@ -4,7 +4,6 @@
 // pressure that the equation of state cannot turn into a positive density is a scene error (5).
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -12,34 +11,6 @@
 #include "io/scene_setup.hpp"
 
 namespace num::io {
-
-/// The sound speed (given, or "auto") above every speed the run starts with: the fluid
-/// particles', the moving walls', the emitters'. A flow that starts at or above the speed of
-/// sound is outside the weakly-compressible model.
-template <int Dim>
-void checkStartSpeed(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
-                     const sph::Storage<Dim>& s) {
-    const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
-    const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
-    double fastest = 0;
-    for (sph::Size i = 0; i < s.size(); ++i)
-        if (kind[i] == int(sph::ParticleKind::FLUID)) fastest = std::max(fastest, norm(v[i]));
-    for (int k = 0; k < Dim; ++k)
-        for (const auto& side : scene.sides[k]) fastest = std::max(fastest, norm(side.velocity));
-    for (const auto& e : scene.emitters) fastest = std::max(fastest, e.speed);
-    const double c0 = setup.model.c0();
-    if (fastest < c0) return;
-    const std::string fluid =
-        !scene.fluids.empty() ? scene.fluids[0].material : scene.emitters[0].material;
-    const bool automatic = !scene.materials.at(fluid).soundSpeed;
-    throw sceneError(scene.file, "materials." + fluid + ".sound_speed",
-                     "a sound speed above every speed the scene starts with (" +
-                         formatted("%.3g", fastest) + " m/s)",
-                     formatted("%.3g m/s", c0) + (automatic ? " (\"auto\")" : ""),
-                     "a flow that starts at or above the speed of sound is outside the "
-                     "weakly-compressible model: lower the initial velocities, wall or emitter "
-                     "speeds, or raise the sound speed");
-}
 
 template <int Dim>
 void checkInitialState(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
@@ -84,7 +55,6 @@ void checkInitialState(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
                  "a pressure the equation of state turns into a positive density", p[i],
                  ExitCode::SCENE);
     }
-    checkStartSpeed(scene, setup, s);
 }
 
 /// Gravity must be finite over the whole run: sampled at 1001 times from 0 to the end time.

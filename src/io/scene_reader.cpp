@@ -32,15 +32,15 @@ VectorField<Dim> readField(const At& a, const std::string& allowed, const std::s
     return f;
 }
 
-/// The variables of an initial field: the position's coordinates (x, y in 2D; x, y, z in 3D).
+/// The variables of an initial field: the position's coordinates (x, y in 2D; x, y, z in 3D)
+/// and t, which is 0 when the field is set.
 template <int Dim>
 const char* initialVariables() {
-    return Dim == 2 ? "xy" : "xyz";
+    return Dim == 2 ? "xyt" : "xyzt";
 }
 template <int Dim>
 std::string initialMeaning() {
-    return std::string("an initial field is set once, at t = 0, from the position") +
-           (Dim == 2 ? " (x, y) of a 2D scene" : " (x, y, z)");
+    return Dim == 2 ? "a 2D scene has the coordinates x and y only" : "";
 }
 
 std::string materialName(const At& a, const std::map<std::string, MaterialSpec>& materials) {

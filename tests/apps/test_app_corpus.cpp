@@ -93,15 +93,8 @@ const std::vector<Case>& corpus() {
              return "";
          },
          kExpression,
-         {"fluids[0].temperature", "an expression in x and y", "it uses 'z'", "2D scene"}},
-        {"initial_field_uses_time",
-         3,
-         [](json& j) {
-             j["fluids"][0]["velocity"] = {"sin(t)", 0, 0};
-             return "";
-         },
-         kExpression,
-         {"fluids[0].velocity[0]", "it uses 't'", "set once, at t = 0"}},
+         {"fluids[0].temperature", "an expression in x, y and t", "it uses 'z'",
+          "a 2D scene has the coordinates x and y only"}},
         // Derived settings within the limits of those they come from (issue 47).
         {"auto_sound_speed_beyond_the_limit",
          2,
@@ -120,15 +113,6 @@ const std::vector<Case>& corpus() {
          },
          kScene,
          {"physics.max_speed", "[0, 100000]", "found 200000"}},
-        {"flow_starts_supersonic",
-         2,
-         [](json& j) {
-             j["fluids"][0]["velocity"] = {30, 0};  // sound_speed 20
-             return "";
-         },
-         kScene,
-         {"materials.water.sound_speed", "above every speed the scene starts with (30 m/s)",
-          "found 20 m/s"}},
         {"cfl_below_the_engine_limit",
          2,
          [](json&) { return std::string("--set time.cfl=1e-7"); },

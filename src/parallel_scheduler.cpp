@@ -7,6 +7,8 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -69,6 +71,16 @@ struct ThreadPoolScheduler::Pool {
     bool stop = false;
     std::vector<std::thread> workers;
 
+    void stopWorkers() {
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            stop = true;
+        }
+        wake.notify_all();
+        for (auto& w : workers) w.join();
+        workers.clear();
+    }
+
     void workerLoop() {
         insidePoolTask = true;
         std::uint64_t seen = 0;
@@ -90,18 +102,20 @@ struct ThreadPoolScheduler::Pool {
 
 ThreadPoolScheduler::ThreadPoolScheduler(Size threads)
     : threads_(std::max<Size>(1, threads)), pool_(std::make_unique<Pool>()) {
-    for (Size t = 1; t < threads_; ++t)
-        pool_->workers.emplace_back([p = pool_.get()] { p->workerLoop(); });
+    try {
+        for (Size t = 1; t < threads_; ++t)
+            pool_->workers.emplace_back([p = pool_.get()] { p->workerLoop(); });
+    } catch (const std::system_error& e) {
+        // The threads started so far end before the error leaves: a joinable std::thread that
+        // is destroyed ends the program.
+        const std::size_t started = pool_->workers.size();
+        pool_->stopWorkers();
+        throw ThreadStartError("the system refused thread " + std::to_string(started + 2) + " of " +
+                               std::to_string(threads_) + " (" + e.code().message() + ")");
+    }
 }
 
-ThreadPoolScheduler::~ThreadPoolScheduler() {
-    {
-        std::lock_guard<std::mutex> lock(pool_->mutex);
-        pool_->stop = true;
-    }
-    pool_->wake.notify_all();
-    for (auto& w : pool_->workers) w.join();
-}
+ThreadPoolScheduler::~ThreadPoolScheduler() { pool_->stopWorkers(); }
 
 void ThreadPoolScheduler::parallelFor(Size n, Size granularity,
                                       const std::function<void(Size, Size)>& task) {

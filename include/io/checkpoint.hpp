@@ -67,6 +67,7 @@ class ByteReader {
         return v;
     }
     bool atEnd() const { return pos_ == bytes_.size(); }
+    const std::string& file() const { return file_; }
 
   private:
     const char* take(std::size_t n) {
@@ -86,11 +87,15 @@ class ByteReader {
     std::size_t pos_ = 0;
 };
 
+/// A checkpoint's bytes: header (with the payload's size and checksum) + payload.
+std::string checkpointBytes(int dimension, const std::string& payload);
 /// Writes header + payload to `path` atomically.
 void writeCheckpointFile(const std::string& path, int dimension, const std::string& payload);
 /// Reads and checks a checkpoint (exists, magic, version, dimension, size, CRC) and returns its
 /// payload; every failure is an AppError (CHECKPOINT) saying what is wrong.
 std::string readCheckpointFile(const std::string& path, int dimension);
+/// The same checks on a checkpoint's bytes (header + payload) already in memory; `path` names it.
+std::string checkpointPayload(const std::string& bytes, const std::string& path, int dimension);
 
 /// Every quantity with its order, type and all levels.
 template <int Dim>

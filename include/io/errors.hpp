@@ -19,6 +19,7 @@ enum class ExitCode : int {
     CHECKPOINT = 8,    ///< checkpoint missing, corrupted, truncated or incompatible
     UNSTABLE = 9,      ///< the run went unstable (NaN, particles leaving through a wall)
     PLUGIN = 10,       ///< a plugin is not loadable, of another API version, or its code failed
+    RESOURCES = 11,    ///< the system refused threads or memory (a process or memory limit)
     NO_GPU = 12,       ///< --backend cuda: no CUDA back end in this build, or no GPU to run it
     INTERRUPTED = 130  ///< stopped by Ctrl-C (SIGINT) or SIGTERM after writing final output
 };

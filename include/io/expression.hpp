@@ -23,6 +23,8 @@ class Expression {
     bool isConstant() const { return impl_ == nullptr; }
     /// Depends on t (false for constants).
     bool dependsOnTime() const;
+    /// The variables the expression uses, of "xyzt" in that order ("" for constants).
+    std::string variables() const;
     /// The source text ("" for constants).
     const std::string& text() const;
 

@@ -29,8 +29,12 @@ class Outputs {
     Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std::string directory,
             const sph::Storage<Dim>& initial, FieldNames names = {});
 
-    /// Creates the directory and a fresh probes.csv (a new run).
+    /// Creates the directory and a fresh probes.csv (a new run). Files an earlier run left under
+    /// the names this run writes (its series, movie, probes, summary and checkpoints) are
+    /// removed first; earlierRunNote() then says so.
     void start();
+    /// "" or the warning that start() removed an earlier run's files.
+    const std::string& earlierRunNote() const { return earlierRunNote_; }
     /// Continues an earlier run at time t: the series and probes.csv keep what is up to t.
     void resume(double t, std::vector<std::pair<double, std::string>> series);
 
@@ -47,6 +51,9 @@ class Outputs {
     int pictures() const { return pictures_; }
 
   private:
+    /// Whether a file name is one this run writes (or a checkpoint's).
+    bool earlierRunFile(const std::string& name) const;
+    void removeEarlierRun();
     void writeProbes(const sph::Storage<Dim>& s, double t);
     void writeParaviewScript() const;
     /// Makes <prefix>.mp4 from the pictures with ffmpeg; returns "" or why it could not.
@@ -59,6 +66,7 @@ class Outputs {
     RenderSettings<Dim> render_;
     PvdSeries series_;
     int pictures_ = 0;
+    std::string earlierRunNote_;
 };
 
 /// Whether an executable is on the PATH.

@@ -31,7 +31,8 @@
 #include "sph/equation_term.hpp"
 
 /// The version of this header's classes; a plugin built against another version is refused.
-#define NUMERICS_PLUGIN_API_VERSION 1
+/// (2 added the range of a field, Registry::addField with lo and hi.)
+#define NUMERICS_PLUGIN_API_VERSION 2
 /// The symbol every plugin exports (as extern "C").
 #define NUMERICS_PLUGIN_ENTRY_NAME "numerics_plugin_entry"
 
@@ -100,6 +101,11 @@ class Registry {
     /// A scene writes it to the outputs under `name` by listing the name in the plugin's
     /// "fields"; quantities not listed are left out of the outputs.
     virtual void addField(const std::string& name, sph::QuantityId id) = 0;
+    /// The same for a scalar quantity (a double per particle) with a physical range [lo, hi]
+    /// (in `unit`, for messages): a run in which a particle's value leaves it stops as unstable
+    /// (exit code 9), naming the field, whether or not the scene writes it.
+    virtual void addField(const std::string& name, sph::QuantityId id, double lo, double hi,
+                          const std::string& unit) = 0;
 
     /// Registers Term<2> and Term<3>, each made by `Term<Dim>(args...)` with the arguments
     /// `read(parameters)` returns as a tuple.

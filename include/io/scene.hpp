@@ -15,6 +15,10 @@
 
 namespace num::io {
 
+/// The largest sound speed a scene may give or derive [m/s] ("auto" is 10 times the velocity
+/// scale, so physics.max_speed is at most a tenth of it).
+inline constexpr double kMaxSoundSpeed = 1e6;
+
 template <int Dim>
 using SceneVec = Vec<double, Dim>;
 

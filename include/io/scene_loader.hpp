@@ -3,12 +3,16 @@
 // type and range, and check the geometry.
 #pragma once
 
+#include <cstddef>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "io/scene.hpp"
 
 namespace num::io {
+
+/// The largest scene file read [bytes].
+inline constexpr std::size_t kMaxSceneBytes = std::size_t(16) << 20;
 
 class SceneDocument {
   public:

@@ -13,6 +13,11 @@
 
 namespace num::sph {
 
+/// The operating system refused a thread (a process or memory limit of a batch system).
+struct ThreadStartError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 class IScheduler {
   public:
     virtual ~IScheduler() = default;

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <optional>
@@ -135,8 +137,18 @@ class ParameterSet {
     }
     static void checkRange(const SettingSpec& s, double v) {
         if (!(v >= s.min && v <= s.max))
-            throw SettingsError("setting '" + s.key + "' = " + std::to_string(v) + " is outside [" +
-                                std::to_string(s.min) + ", " + std::to_string(s.max) + "]");
+            throw SettingsError("setting '" + s.key + "' = " + shortest(v) + " is outside [" +
+                                shortest(s.min) + ", " + shortest(s.max) + "]");
+    }
+    /// A number as printf's %.17g writes it, shortened to the fewest digits that read back
+    /// the same: 1e-07, 0.25, 1e+300, inf.
+    static std::string shortest(double v) {
+        char text[32];
+        for (int digits = 1; digits <= 17; ++digits) {
+            std::snprintf(text, sizeof text, "%.*g", digits, v);
+            if (std::strtod(text, nullptr) == v || v != v) break;
+        }
+        return text;
     }
     static std::string typeName(const SettingValue& v) {
         static const char* names[] = {"boolean", "integer", "number", "string"};

@@ -220,7 +220,8 @@ class Storage {
                                             " missing in the appended storage");
             const Quantity<Dim>& o = it->second;
             q.raiseOrder(o.order(), size_);
-            q.visit([&](auto& b) {
+            // Init-captures: clang before 16 cannot capture a structured binding.
+            q.visit([&, &q = q](auto& b) {
                 using T = typename std::decay_t<decltype(b.value)>::value_type;
                 if (!o.template holds<T>())
                     throw std::invalid_argument("append: value types differ");
@@ -254,7 +255,7 @@ class Storage {
     Storage emptyCopy() const {
         Storage out;
         for (const auto& [id, q] : quantities_)
-            q.visit([&](const auto& b) {
+            q.visit([&, &id = id, &q = q](const auto& b) {
                 using T = typename std::decay_t<decltype(b.value)>::value_type;
                 out.quantities_.emplace(id, Quantity<Dim>(q.order(), QuantityBuffers<T>{}));
             });
@@ -266,7 +267,7 @@ class Storage {
     /// quantity and level; particles beyond n are dropped.
     void resize(Size n) {
         for (auto& [id, q] : quantities_)
-            q.visit([&](auto& b) {
+            q.visit([&, &q = q](auto& b) {
                 for (int k = 0; k < q.levels(); ++k) b.level(k).resize(n);
             });
         size_ = n;
@@ -299,7 +300,7 @@ class Storage {
         // In place, cycle by cycle: a copy of each array (gather's) would raise the peak memory
         // of every reordering by the largest array.
         for (auto& [id, q] : quantities_) {
-            q.visit([&](auto& b) {
+            q.visit([&, &q = q](auto& b) {
                 for (int k = 0; k < q.levels(); ++k) {
                     auto& v = b.level(k);
                     std::fill(seen.begin(), seen.end(), char(0));
@@ -323,7 +324,7 @@ class Storage {
         for (Size i : order)
             if (i >= size_) throw std::out_of_range("gather: particle index out of range");
         for (auto& [id, q] : quantities_) {
-            q.visit([&](auto& b) {
+            q.visit([&, &q = q](auto& b) {
                 for (int k = 0; k < q.levels(); ++k) {
                     auto& v = b.level(k);
                     std::remove_reference_t<decltype(v)> out(order.size());

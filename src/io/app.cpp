@@ -17,6 +17,7 @@
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "io/simulation.hpp"
+#include "sph/scheduler.hpp"
 #include "sph/settings.hpp"
 
 namespace num::io {
@@ -75,9 +76,16 @@ int listScenes(const std::string& dir, const AppInfo& info) {
     std::vector<fs::path> files;
     for (const std::string sub : {"", "validation"}) {
         std::vector<fs::path> here;
+        // Without exceptions: an entry that cannot be examined (a symbolic link in a loop, one
+        // to nothing, no permission) is left out, and so is the rest of a folder that cannot
+        // be read on.
         std::error_code ec;
-        for (const auto& e : fs::directory_iterator(fs::path(dir) / sub, ec))
-            if (e.is_regular_file() && e.path().extension() == ".json") here.push_back(e.path());
+        for (fs::directory_iterator it(fs::path(dir) / sub, ec), end; !ec && it != end;
+             it.increment(ec)) {
+            std::error_code fileEc;
+            if (it->is_regular_file(fileEc) && it->path().extension() == ".json")
+                here.push_back(it->path());
+        }
         std::sort(here.begin(), here.end());
         files.insert(files.end(), here.begin(), here.end());
     }
@@ -246,8 +254,16 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     } catch (const sph::SettingsError& e) {
         std::fprintf(stderr, "%s: error: scene setting: %s\n", info.name.c_str(), e.what());
         return int(ExitCode::SCENE);
+    } catch (const sph::ThreadStartError& e) {
+        return alone(std::string("error: ") + e.what() +
+                         ": run with fewer --threads, or raise the limit on processes or memory "
+                         "(ulimit -u, ulimit -v, the batch system's request)",
+                     ExitCode::RESOURCES);
     } catch (const std::bad_alloc&) {
-        return alone("error: out of memory (try a larger particles.spacing)", ExitCode::INTERNAL);
+        return alone(
+            "error: out of memory (try a larger particles.spacing, fewer --threads, or "
+            "raise the memory limit: ulimit -v, the batch system's request)",
+            ExitCode::RESOURCES);
     } catch (const std::exception& e) {
         return alone(std::string("internal error: ") + e.what() + " (please report it)",
                      ExitCode::INTERNAL);

@@ -9,6 +9,7 @@ struct Expression::Impl {
     double x = 0, y = 0, z = 0, t = 0;
     std::string text;
     bool usesTime = false;
+    std::string variables;  ///< the variables the text uses, of "xyzt", in that order
 };
 
 Expression Expression::parse(const std::string& text) {
@@ -21,7 +22,10 @@ Expression Expression::parse(const std::string& text) {
         impl->parser.DefineVar("t", &impl->t);
         impl->parser.SetExpr(text);
         impl->parser.Eval();  // parses now, so errors surface when the scene is read
-        for (const auto& [name, ptr] : impl->parser.GetUsedVar()) impl->usesTime |= name == "t";
+        const auto used = impl->parser.GetUsedVar();
+        impl->usesTime = used.count("t") != 0;
+        for (const char* v : {"x", "y", "z", "t"})
+            if (used.count(v)) impl->variables += v;
     } catch (const mu::Parser::exception_type& e) {
         std::string msg = e.GetMsg();
         while (!msg.empty() && (msg.back() == '.' || msg.back() == ' ')) msg.pop_back();
@@ -43,6 +47,8 @@ double Expression::operator()(double x, double y, double z, double t) const {
 }
 
 bool Expression::dependsOnTime() const { return impl_ && impl_->usesTime; }
+
+std::string Expression::variables() const { return impl_ ? impl_->variables : std::string(); }
 
 const std::string& Expression::text() const {
     static const std::string empty;

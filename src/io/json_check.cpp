@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 #include "io/formatted.hpp"
@@ -12,6 +13,14 @@ namespace num::io::detail {
 
 std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
     return sph::closestName(word, candidates);
+}
+
+std::string shortest(double x) {
+    // Every digit that tells the value from a limit it crosses (1.0000001 is not 1).
+    std::string text;
+    for (int digits = 6; digits <= 17; ++digits)
+        if (text = formatted("%.*g", digits, x); std::strtod(text.c_str(), nullptr) == x) break;
+    return text;
 }
 
 std::string describe(const json& v) {
@@ -36,7 +45,7 @@ std::string describe(const json& v) {
         case json::value_t::object:
             return "an object";
         default:
-            return formatted("%g", v.get<double>());
+            return shortest(v.get<double>());
     }
 }
 
@@ -72,15 +81,21 @@ At At::required(const std::string& key) const {
 
 double At::number(double lo, double hi, bool loOpen, const std::string& unit) const {
     const std::string u = unit.empty() ? "" : " [" + unit + "]";
+    // The limits in the shortest form that reads back the same; an open upper limit (1e300)
+    // is named where a value exceeds it.
+    const auto limit = [](double x) { return shortest(x); };
+    const bool above = v.is_number() && v.get<double>() > hi;
     std::ostringstream range;
-    if (loOpen && lo == 0 && hi >= 1e300)
+    if (above && hi >= 1e300)
+        range << "a number in " << (loOpen ? "(" : "[") << limit(lo) << ", " << limit(hi) << "]";
+    else if (loOpen && lo == 0 && hi >= 1e300)
         range << "a positive number";
     else if (lo == 0 && hi >= 1e300)
         range << "a number >= 0";
     else if (lo <= -1e300 && hi >= 1e300)
         range << "a number";
     else
-        range << "a number in " << (loOpen ? "(" : "[") << lo << ", " << hi << "]";
+        range << "a number in " << (loOpen ? "(" : "[") << limit(lo) << ", " << limit(hi) << "]";
     if (!v.is_number()) fail(range.str() + u);
     const double x = v.get<double>();
     if (!std::isfinite(x) || x < lo || x > hi || (loOpen && x == lo)) fail(range.str() + u);
@@ -116,15 +131,27 @@ std::string At::choice(std::initializer_list<const char*> choices) const {
     fail("one of " + list, guess.empty() ? "" : "did you mean \"" + guess + "\"?");
 }
 
-Expression At::expression() const {
+Expression At::expression(const std::string& allowed, const std::string& meaning) const {
+    std::string in;
+    for (std::size_t k = 0; k < allowed.size(); ++k)
+        in += (k == 0 ? "" : k + 1 == allowed.size() ? " and " : ", ") + allowed.substr(k, 1);
+    const std::string expected = "a number or an expression in " + in;
     if (v.is_number()) return Expression(number());
-    if (!v.is_string()) fail("a number or an expression string in x, y, z, t");
+    if (!v.is_string()) fail(expected);
+    Expression e;
     try {
-        return Expression::parse(v.get<std::string>());
-    } catch (const ExpressionError& e) {
-        throw sceneError(file, path, "an expression in x, y, z, t", describe(v), e.what(),
+        e = Expression::parse(v.get<std::string>());
+    } catch (const ExpressionError& error) {
+        throw sceneError(file, path, "an expression in " + in, describe(v), error.what(),
                          ExitCode::EXPRESSION);
     }
+    for (char c : e.variables())
+        if (allowed.find(c) == std::string::npos)
+            throw sceneError(file, path, expected, describe(v),
+                             std::string("it uses '") + c + "', which is not defined here" +
+                                 (meaning.empty() ? "" : ": " + meaning),
+                             ExitCode::EXPRESSION);
+    return e;
 }
 
 void At::array(std::size_t n, const std::string& what) const {

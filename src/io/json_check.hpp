@@ -17,6 +17,8 @@ using nlohmann::json;
 /// The closest of `candidates` to `word` if close enough to be a likely misspelling, else "".
 std::string closest(const std::string& word, const std::vector<std::string>& candidates);
 /// A short description of a JSON value for "found ..." ("the string \"abc\"", "-0.01").
+/// A number in the fewest digits (at least 6, as %g) that read back the same value.
+std::string shortest(double x);
 std::string describe(const json& v);
 
 /// A JSON value and where it is (file and key path such as "fluids[0].velocity").
@@ -54,8 +56,11 @@ struct At {
     }
     std::string string() const;
     std::string choice(std::initializer_list<const char*> choices) const;
-    /// A number or an expression string in x, y, z, t.
-    Expression expression() const;
+    /// A number or an expression string in the variables `allowed` (of "xyzt"); one that uses
+    /// another variable is refused (exit code 6), naming it: it would be taken as 0.
+    /// `meaning` says why the others are not allowed ("gravity is uniform in space").
+    Expression expression(const std::string& allowed = "xyzt",
+                          const std::string& meaning = "") const;
     /// An array of exactly n elements (n = dimension for vectors).
     void array(std::size_t n, const std::string& what) const;
 };

@@ -3,8 +3,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -83,8 +85,51 @@ void Outputs<Dim>::writeParaviewScript() const {
 }
 
 template <int Dim>
+bool Outputs<Dim>::earlierRunFile(const std::string& name) const {
+    const std::string& prefix = scene_.output.prefix;
+    for (const std::string& own :
+         {prefix + ".pvd", prefix + ".mp4", std::string("probes.csv"), std::string("probes.png"),
+          std::string("summary.json"), std::string("checkpoint_interrupted.chk")})
+        if (name == own) return true;
+    // prefix_NNNN.vtu, .csv, .png and checkpoint_NNNN.chk: at least four digits.
+    auto numbered = [&](const std::string& head, std::initializer_list<const char*> extensions) {
+        if (name.rfind(head, 0) != 0) return false;
+        const std::size_t dot = name.rfind('.');
+        if (dot == std::string::npos || dot < head.size() + 4) return false;
+        for (std::size_t k = head.size(); k < dot; ++k)
+            if (!std::isdigit((unsigned char)name[k])) return false;
+        for (const char* e : extensions)
+            if (name.compare(dot + 1, std::string::npos, e) == 0) return true;
+        return false;
+    };
+    return numbered(prefix + "_", {"vtu", "csv", "png"}) || numbered("checkpoint_", {"chk"});
+}
+
+template <int Dim>
+void Outputs<Dim>::removeEarlierRun() {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    std::vector<std::string> names;
+    for (fs::directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
+        std::error_code fileEc;
+        const std::string name = it->path().filename().string();
+        if (it->is_regular_file(fileEc) && earlierRunFile(name)) names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    std::size_t removed = 0;
+    for (const std::string& name : names) removed += std::remove(path(name).c_str()) == 0;
+    if (removed == 0) return;
+    earlierRunNote_ = dir_ + ": removed " + std::to_string(removed) +
+                      " files an earlier run wrote under the names this run writes (" +
+                      names.front() + (names.size() > 1 ? " ... " + names.back() : "") +
+                      "), so that its series, movie and checkpoints are this run's alone; give "
+                      "another --out to keep an earlier run's files";
+}
+
+template <int Dim>
 void Outputs<Dim>::start() {
     makeOutputDirectory(dir_);
+    removeEarlierRun();
     writeParaviewScript();
     if (scene_.probes.empty()) return;
     // Quoted where needed (RFC 4180), although probe names are plain words.
@@ -170,8 +215,11 @@ std::string Outputs<Dim>::makeVideo() const {
     const std::string video = path(scene_.output.prefix + ".mp4");
     const std::string log = path("ffmpeg.log");
     // Written under a temporary name and renamed, like every other output.
+    // This run's pictures only: a restart that ends before the run it continues leaves that
+    // run's later pictures in the folder.
     const std::string cmd = "ffmpeg -y -nostdin -loglevel error -framerate " + std::to_string(fps) +
                             " -i " + quote(path(scene_.output.prefix + "_%04d.png")) +
+                            " -frames:v " + std::to_string(pictures_) +
                             " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
                             quote(video + ".tmp") + " >" + quote(log) + " 2>&1";
     const int rc = std::system(cmd.c_str());

@@ -5,11 +5,15 @@
 //            number passes 0.3 and density errors pass about 5 %, Monaghan 1994, sec. 3);
 //            |v| >= c0 stops the run: supersonic flow is outside the weakly-compressible model;
 //   density: |rho / rho0 - 1| > 0.2 warns (the model is built for about 1 %);
-//            rho < rho0 / 2 or rho > 2 rho0 stops the run.
+//            rho < rho0 / 2 or rho > 2 rho0 stops the run;
+//   temperature: any particle (fluid, wall or body) below absolute zero stops the run: a
+//            wall's heat flux or a plugin's heat sink drew more heat than the water holds;
+//   a plugin's quantity outside the range its plugin declared (Registry::addField) stops it.
 // Each kind of warning is reported once, with its time and figures, on the terminal and in
 // summary.json; a stop is the app's UNSTABLE error (exit 9), the last good output kept.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -41,6 +45,7 @@ class PhysicalCheck {
         const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
         const auto rho = s.template getValue<double>(sph::QuantityId::DENSITY);
         const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
+        checkRanges(s, t, comm);
         const Extremes none{0, rho0_, rho0_, s.size(), s.size(), s.size()};
         const Extremes e = sph::reduceChunks(
             scheduler, s.size(), 8192, none,
@@ -133,7 +138,41 @@ class PhysicalCheck {
 
     const std::vector<std::string>& warnings() const { return warnings_; }
 
+    /// A quantity with a physical range [lo, hi] (in its unit, named in messages): a value
+    /// outside it, on any particle, stops the run.
+    struct Range {
+        sph::QuantityId id;
+        std::string name, unit;
+        double lo, hi;
+        std::string hint;
+    };
+    /// Adds a range to those checked; temperature's (above absolute zero) is there from the start.
+    void addRange(Range r) { ranges_.push_back(std::move(r)); }
+
   private:
+    /// Stops (UNSTABLE) at the first quantity with a value outside its range, naming the lowest
+    /// or highest value over every process.
+    template <int Dim>
+    void checkRanges(const sph::Storage<Dim>& s, double t, const parallel::Communicator& comm) {
+        for (const Range& range : ranges_) {
+            double lo = range.lo, hi = range.hi;
+            if (s.has(range.id)) {
+                const auto q = s.template getValue<double>(range.id);
+                for (double x : q) lo = std::min(lo, x), hi = std::max(hi, x);
+            }
+            lo = comm.minimum(lo), hi = comm.maximum(hi);
+            if (lo >= range.lo && hi <= range.hi) continue;
+            const bool below = lo < range.lo;
+            const std::string unit = range.unit.empty() ? "" : " " + range.unit;
+            throw AppError(ExitCode::UNSTABLE,
+                           "at t = " + formatted("%.3g", t) + " s a particle's " + range.name +
+                               " reached " + formatted("%.6g", below ? lo : hi) + unit + ", " +
+                               (below ? "below " : "above ") +
+                               formatted("%.6g", below ? range.lo : range.hi) + unit +
+                               (range.hint.empty() ? "" : ": " + range.hint));
+        }
+    }
+
     /// The fastest, thinnest and densest fluid particles.
     struct Extremes {
         double vmax, rhoMin, rhoMax;
@@ -142,6 +181,11 @@ class PhysicalCheck {
     static constexpr double WARN_SPEED = 3, WARN_DENSITY = 0.2;
 
     double U_, c0_, rho0_;
+    std::vector<Range> ranges_{
+        {sph::QuantityId::TEMPERATURE, "temperature", "degC", -273.15, HUGE_VAL,
+         "nothing is colder than absolute zero (-273.15 degC): the scene draws more heat than the "
+         "water holds; lower a wall's heat_flux, a plugin's heat sink or the conductivity, or "
+         "lower time.cfl"}};
     bool speedWarned_ = false, densityWarned_ = false;
     std::vector<std::string> warnings_;
 };

@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 
+#include "elf_check.hpp"
 #include "io/formatted.hpp"
 #include "io/plugin.hpp"
 #include "json_check.hpp"
@@ -42,6 +44,11 @@ struct Library {
     std::map<std::string, plugin::TermFactory<2>> terms2;
     std::map<std::string, plugin::TermFactory<3>> terms3;
     std::map<std::string, sph::QuantityId> fields;
+    struct Range {
+        double lo, hi;
+        std::string unit;
+    };
+    std::map<std::string, Range> ranges;  ///< of fields, by name
 };
 
 class HostRegistry final : public plugin::Registry {
@@ -62,6 +69,14 @@ class HostRegistry final : public plugin::Registry {
             refuse("the field \"" + name + "\" with quantity id " + std::to_string(int(id)) +
                    ": expected a user id (negative or >= QuantityId::USER_FIRST = 1000)");
         lib_.fields[name] = id;
+    }
+    void addField(const std::string& name, sph::QuantityId id, double lo, double hi,
+                  const std::string& unit) override {
+        if (!(lo <= hi) || std::isnan(lo) || std::isnan(hi))
+            refuse("the field \"" + name + "\" with the range [" + formatted("%g", lo) + ", " +
+                   formatted("%g", hi) + "]: expected lo <= hi");
+        addField(name, id);
+        lib_.ranges[name] = {lo, hi, unit};
     }
 
   private:
@@ -106,6 +121,9 @@ Library openLibrary(const At& at, const std::string& path, const std::string& pr
         throw AppError(ExitCode::SCENE, at.file + ": " + at.path + ": no plugin library " + path +
                                             " (expected a file, the path relative to the scene "
                                             "file or absolute)");
+    if (const std::string problem = detail::elfProblem(path); !problem.empty())
+        throw AppError(ExitCode::PLUGIN,
+                       at.file + ": " + at.path + ": cannot load " + path + ": " + problem);
     Library lib;
     lib.path = path;
     dlerror();
@@ -131,6 +149,10 @@ Library openLibrary(const At& at, const std::string& path, const std::string& pr
         throw;
     } catch (const std::exception& e) {
         throw AppError(ExitCode::PLUGIN, path + ": the plugin failed to register: " + e.what());
+    } catch (...) {
+        throw AppError(ExitCode::PLUGIN, path +
+                                             ": the plugin failed to register: its entry point "
+                                             "threw something that is not a std::exception");
     }
     if (version != NUMERICS_PLUGIN_API_VERSION)
         throw AppError(ExitCode::PLUGIN, at.file + ": " + at.path + ": " + path +
@@ -188,6 +210,10 @@ std::shared_ptr<sph::IEquationTerm<Dim>> makeTerm(const Library& lib, const At& 
     } catch (const std::exception& e) {
         throw AppError(ExitCode::PLUGIN,
                        label + " failed when made from its parameters: " + std::string(e.what()));
+    } catch (...) {
+        throw AppError(ExitCode::PLUGIN, label +
+                                             " failed when made from its parameters: it threw "
+                                             "something that is not a std::exception");
     }
     if (!term) throw AppError(ExitCode::PLUGIN, label + ": its factory returned no term");
     // A key the factory neither allowed nor read is a mistake (a misspelt parameter).
@@ -239,6 +265,9 @@ ScenePlugins<Dim> loadPlugins(const SceneDocument& doc) {
         const std::string key = "plugin " + std::to_string(i);
         out.fingerprint += key + " library = " + path + "\n";
         out.fingerprint += key + " library content (FNV-1a) = " + fileHash(path) + "\n";
+        for (const auto& [name, r] : lib.ranges)
+            out.ranges.push_back({lib.fields.at(name), name, r.unit,
+                                  fs::path(path).filename().string(), r.lo, r.hi});
         const At terms = p["terms"];
         if (!terms.v.is_array() || terms.v.empty())
             terms.fail("a non-empty array of terms, each {\"term\": NAME, parameters...}");
@@ -276,6 +305,14 @@ FieldNames pluginFieldNames(const ScenePlugins<Dim>& plugins, const sph::Storage
                                                  "), but none of the scene's terms created it");
         names.add(f.id, f.name);
     }
+    for (const auto& r : plugins.ranges)
+        if (initial.has(r.id) && !initial.get(r.id).template holds<double>())
+            throw AppError(ExitCode::PLUGIN, r.library +
+                                                 ": the plugin declares a range for the "
+                                                 "field \"" +
+                                                 r.name +
+                                                 "\", which is not a scalar (a double per "
+                                                 "particle)");
     initial.forEach([&](sph::QuantityId id, const sph::Quantity<Dim>&) {
         if (userId(id) && names.name(id).empty()) names.hide(id);
     });

@@ -20,6 +20,13 @@ struct ScenePlugins {
         std::string name, path;
     };
     std::vector<Field> fields;
+    /// The ranges the plugins declared for their fields (Registry::addField with lo and hi).
+    struct Range {
+        sph::QuantityId id;
+        std::string name, unit, library;
+        double lo, hi;
+    };
+    std::vector<Range> ranges;
     /// "key = value" lines for the checkpoint's fingerprint: each library and its content.
     std::string fingerprint;
     bool empty() const { return terms.size() == 0; }

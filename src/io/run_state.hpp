@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "checkpoint_state.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/fields.hpp"
@@ -15,39 +16,6 @@
 #include "sph/solver.hpp"
 
 namespace num::io {
-
-template <int Dim>
-struct RunState {
-    double time = 0;
-    std::uint64_t steps = 0;
-    std::int64_t outputIndex = 0, checkpointCount = 0;
-    std::vector<std::uint64_t> emitterLayers;
-    std::uint64_t emitted = 0, removed = 0;
-    std::uint64_t emitterBlocked = 0;  ///< nozzle points left out: water was there
-    std::vector<double> start;         ///< conservation at t = 0 (see conservationVector)
-    std::vector<std::pair<double, std::string>> series;
-
-    void write(ByteWriter& w) const {
-        w.put(time), w.put(steps), w.put(outputIndex), w.put(checkpointCount);
-        w.putVector(emitterLayers), w.put(emitted), w.put(removed), w.put(emitterBlocked);
-        w.putVector(start);
-        w.put<std::uint64_t>(series.size());
-        for (const auto& [t, f] : series) w.put(t), w.putString(f);
-    }
-    void read(ByteReader& r) {
-        time = r.get<double>(), steps = r.get<std::uint64_t>();
-        outputIndex = r.get<std::int64_t>(), checkpointCount = r.get<std::int64_t>();
-        emitterLayers = r.getVector<std::uint64_t>();
-        emitted = r.get<std::uint64_t>(), removed = r.get<std::uint64_t>();
-        emitterBlocked = r.get<std::uint64_t>();
-        start = r.getVector<double>();
-        const auto n = r.get<std::uint64_t>();
-        for (std::uint64_t k = 0; k < n; ++k) {
-            const double t = r.get<double>();
-            series.emplace_back(t, r.getString());
-        }
-    }
-};
 
 /// mass, momentum (Dim values), kinetic, potential and thermal energy of the fluid.
 template <int Dim>

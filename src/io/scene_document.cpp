@@ -40,7 +40,8 @@ std::string jsonProblem(const nlohmann::json::exception& e) {
 }  // namespace
 
 SceneDocument SceneDocument::fromFile(const std::string& path) {
-    if (std::filesystem::is_directory(path))
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
         throw AppError(ExitCode::SCENE_FILE,
                        path + ": cannot read the scene file: it is a directory, not a JSON file");
     std::ifstream in(path, std::ios::binary);
@@ -50,10 +51,19 @@ SceneDocument SceneDocument::fromFile(const std::string& path) {
                                                  " (check the path; built-in scenes run when no "
                                                  "file is given)");
     }
-    std::ostringstream text;
-    text << in.rdbuf();
+    // At most kMaxSceneBytes are read: /dev/zero, or a large file given by mistake, is refused
+    // before it fills the memory.
+    std::string text(kMaxSceneBytes + 1, '\0');
+    in.read(text.data(), std::streamsize(text.size()));
+    text.resize(std::size_t(in.gcount()));
     if (in.bad()) throw AppError(ExitCode::SCENE_FILE, path + ": read error");
-    return fromText(text.str(), path);
+    if (text.size() > kMaxSceneBytes)
+        throw AppError(ExitCode::SCENE_FILE,
+                       path + ": cannot read the scene file: it is larger than " +
+                           std::to_string(kMaxSceneBytes >> 20) +
+                           " MiB, which no scene is (a scene file is a few kilobytes of JSON): "
+                           "check the path");
+    return fromText(text, path);
 }
 
 SceneDocument SceneDocument::fromText(const std::string& text, const std::string& file) {

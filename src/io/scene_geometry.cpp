@@ -134,11 +134,10 @@ void checkSceneGeometry(const Scene<Dim>& s) {
                          "add a block such as {\"material\": \"water\", \"shape\": \"box\", "
                          "\"min\": [...], \"max\": [...]}");
     if (estimate > 2e7)
-        throw sceneError(file, "particles.spacing",
-                         "a spacing giving at most 20 million fluid particles",
-                         formatted("%g", s.spacing) + " (about " + std::to_string(long(estimate)) +
-                             " particles)",
-                         "increase the spacing");
+        throw sceneError(
+            file, "particles.spacing", "a spacing giving at most 20 million fluid particles",
+            formatted("%g", s.spacing) + " (about " + formatted("%.3g", estimate) + " particles)",
+            "increase the spacing");
     const double support = 2.0 * s.hOverSpacing * s.spacing;  // largest kernel support: 2h
     for (int k = 0; k < Dim; ++k)
         if (s.sides[k][0].type == SideType::PERIODIC &&

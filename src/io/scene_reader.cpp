@@ -7,6 +7,7 @@
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
 #include "json_check.hpp"
+#include "sph/defaults.hpp"
 
 namespace num::io {
 
@@ -24,11 +25,22 @@ SceneVec<Dim> readVec(const At& a, const std::string& unit) {
 }
 
 template <int Dim>
-VectorField<Dim> readField(const At& a) {
+VectorField<Dim> readField(const At& a, const std::string& allowed, const std::string& meaning) {
     a.array(Dim, "numbers or expressions (one per axis of the " + std::to_string(Dim) + "D scene)");
     VectorField<Dim> f;
-    for (int k = 0; k < Dim; ++k) f[k] = a[std::size_t(k)].expression();
+    for (int k = 0; k < Dim; ++k) f[k] = a[std::size_t(k)].expression(allowed, meaning);
     return f;
+}
+
+/// The variables of an initial field: the position's coordinates (x, y in 2D; x, y, z in 3D)
+/// and t, which is 0 when the field is set.
+template <int Dim>
+const char* initialVariables() {
+    return Dim == 2 ? "xyt" : "xyzt";
+}
+template <int Dim>
+std::string initialMeaning() {
+    return Dim == 2 ? "a 2D scene has the coordinates x and y only" : "";
 }
 
 std::string materialName(const At& a, const std::map<std::string, MaterialSpec>& materials) {
@@ -53,7 +65,7 @@ MaterialSpec readMaterial(const At& a, const std::string& name) {
         !(a["sound_speed"].v.is_string() && a["sound_speed"].v.get<std::string>() == "auto")) {
         if (!a["sound_speed"].v.is_number())
             a["sound_speed"].fail("a positive number [m/s] or \"auto\"");
-        m.soundSpeed = a["sound_speed"].number(0, 1e6, true, "m/s");
+        m.soundSpeed = a["sound_speed"].number(0, kMaxSoundSpeed, true, "m/s");
     }
     m.viscosity = a.number("viscosity", m.viscosity, 0, 1e3, false, "m^2/s");
     if (a.has("artificial_viscosity") && !a["artificial_viscosity"].v.is_string())
@@ -256,12 +268,16 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     const At t = root["time"];
     t.object({"end", "cfl", "integrator", "dt_max"}, {"end"});
     s.endTime = t["end"].number(0, 1e300, true, "s");
-    s.cfl = t.number("cfl", s.cfl, 0, 1, true);
+    s.cfl = t.number("cfl", s.cfl, 1e-6, 1);  // the engine's range (sph/settings.hpp)
     s.dtMax = t.number("dt_max", 0, 0, 1e300, false, "s");
     if (t.has("integrator"))
         s.integrator = t["integrator"].choice({"leapfrog", "predictor_corrector", "euler"});
 
-    if (root.has("gravity")) s.gravity = readField<Dim>(root["gravity"]);
+    if (root.has("gravity"))
+        s.gravity = readField<Dim>(
+            root["gravity"], "t",
+            "gravity is uniform in space, a function of the time t only (a force that depends on "
+            "the position is a plugin's term)");
     if (root.has("numerics")) {
         const At nu = root["numerics"];
         nu.object({"backend"});
@@ -285,9 +301,11 @@ Scene<Dim> readScene(const SceneDocument& doc) {
             FluidBlock<Dim> blk;
             blk.material = materialName(b["material"], s.materials);
             readShape<Dim>(b, blk.shape, blk.min, blk.max, blk.center, blk.radius, true);
-            if (b.has("temperature")) blk.temperature = b["temperature"].expression();
-            if (b.has("pressure")) blk.pressure = b["pressure"].expression();
-            if (b.has("velocity")) blk.velocity = readField<Dim>(b["velocity"]);
+            const char* vars = initialVariables<Dim>();
+            const std::string meaning = initialMeaning<Dim>();
+            if (b.has("temperature")) blk.temperature = b["temperature"].expression(vars, meaning);
+            if (b.has("pressure")) blk.pressure = b["pressure"].expression(vars, meaning);
+            if (b.has("velocity")) blk.velocity = readField<Dim>(b["velocity"], vars, meaning);
             s.fluids.push_back(std::move(blk));
         }
     }
@@ -409,7 +427,8 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.freeSurfaceDensityFloor =
             ph.number("free_surface_density_floor", s.physics.freeSurfaceDensityFloor, 0, 1, true);
         s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
-        s.maxSpeed = ph.number("max_speed", 0, 0, 1e6, false, "m/s");
+        s.maxSpeed = ph.number("max_speed", 0, 0, kMaxSoundSpeed / sph::defaults::soundSpeedFactor,
+                               false, "m/s");
         if (ph.has("eos")) s.physics.eos = ph["eos"].choice({"tait", "linear"});
         s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
         s.physics.maxTension = ph.number("max_tension", s.physics.maxTension, 0, 1e12, true, "Pa");

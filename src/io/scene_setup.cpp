@@ -6,6 +6,7 @@
 #include <cmath>
 #include <mutex>
 
+#include "io/formatted.hpp"
 #include "sph/boundary/thermal_walls.hpp"
 
 namespace num::io {
@@ -176,6 +177,39 @@ bool filledClosedBox(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo
     return true;
 }
 
+/// Runs f; an engine setting it refuses (sph::SettingsError) becomes a scene error naming the
+/// scene's file and the key the setting comes from.
+template <class F>
+void asSceneError(const std::string& file, const std::string& key, F&& f) {
+    try {
+        f();
+    } catch (const sph::SettingsError& e) {
+        throw sceneError(file, key, "a value the engine accepts", "", e.what());
+    }
+}
+
+/// The sound speed derived by "auto" (10 U) within the limit of an explicit one. (A scale that
+/// is not finite comes from an initial velocity that is not: checkInitialState names it.)
+template <int Dim>
+void checkSoundSpeed(const Scene<Dim>& scene, const std::string& fluidName, double U) {
+    const MaterialSpec& fluid = scene.materials.at(fluidName);
+    const std::string key = "materials." + fluidName + ".sound_speed";
+    const double c0 = fluid.soundSpeed ? *fluid.soundSpeed : sph::defaults::soundSpeedFactor * U;
+    const std::string from = scene.maxSpeed > 0 ? "physics.max_speed"
+                                                : "the scene's speeds (initial velocities, moving "
+                                                  "walls, emitters, the height of a fall)";
+    if (!fluid.soundSpeed && std::isfinite(c0) && c0 > kMaxSoundSpeed)
+        throw sceneError(
+            scene.file, key, "a sound speed of at most " + formatted("%g", kMaxSoundSpeed) + " m/s",
+            formatted("\"auto\" = %g x U = %.3g m/s, from the velocity scale U = "
+                      "%.3g m/s of ",
+                      sph::defaults::soundSpeedFactor, c0, U) +
+                from,
+            "the weakly-compressible model is for flows far below the speed of "
+            "sound: lower those speeds, at most " +
+                formatted("%g", kMaxSoundSpeed / sph::defaults::soundSpeedFactor) + " m/s");
+}
+
 }  // namespace
 
 template <int Dim>
@@ -227,6 +261,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
                          "or give the material a sound_speed");
     if (!(U > 0)) U = *fluid.soundSpeed / sph::defaults::soundSpeedFactor;
     setup.velocityScale = U;
+    checkSoundSpeed(scene, fluidName, U);
 
     sph::FluidModel<Dim>& m = setup.model;
     m.restDensity = fluid.density;
@@ -249,7 +284,9 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         gravityOn |= !scene.gravity[k].isConstant() || scene.gravity[k](0, 0, 0, 0) != 0;
     if (gravityOn) m.bodyForce = setup.gravity;
     for (const auto& [name, spec] : scene.materials)
-        m.materials.push_back(makeMaterial(spec, m.c0(), m.artificialViscosity));
+        asSceneError(scene.file, "materials." + name, [&] {
+            m.materials.push_back(makeMaterial(spec, m.c0(), m.artificialViscosity));
+        });
     if (scene.physics.heat) {
         m.heat.conduction = true;
         m.heat.walls = sph::ThermalCondition::ADIABATIC;
@@ -261,12 +298,15 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
     m.extraTerms += extraTerms;
 
     sph::RunSettings& s = setup.settings;
-    s.set("kernel", scene.kernel);
-    s.set("evaluation", scene.evaluation);
-    s.set("smoothing_length", scene.hOverSpacing * dx);
-    s.set("threads", std::int64_t(threads));
-    s.set("cfl", scene.cfl);
-    if (scene.dtMax > 0) s.set("dt_max", scene.dtMax);
+    asSceneError(scene.file, "particles.kernel", [&] { s.set("kernel", scene.kernel); });
+    asSceneError(scene.file, "particles.evaluation",
+                 [&] { s.set("evaluation", scene.evaluation); });
+    asSceneError(scene.file, "particles.h_over_spacing",
+                 [&] { s.set("smoothing_length", scene.hOverSpacing * dx); });
+    asSceneError(scene.file, "--threads", [&] { s.set("threads", std::int64_t(threads)); });
+    asSceneError(scene.file, "time.cfl", [&] { s.set("cfl", scene.cfl); });
+    if (scene.dtMax > 0)
+        asSceneError(scene.file, "time.dt_max", [&] { s.set("dt_max", scene.dtMax); });
 
     sph::FluidGeometry<Dim>& geo = setup.geometry;
     geo.spacing = dx;

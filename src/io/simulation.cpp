@@ -40,7 +40,13 @@ using sph::Size;
 SceneDocument sceneOfCheckpoint(const std::string& path, int dimension) {
     const std::string payload = readCheckpointFile(path, dimension);
     ByteReader r(payload, path);
-    return SceneDocument::fromText(r.getString(), path + " (scene stored in the checkpoint)");
+    try {
+        return SceneDocument::fromText(r.getString(), path + " (scene stored in the checkpoint)");
+    } catch (const AppError& e) {
+        // The checksum matched: the file was edited and its checksum written again.
+        throw AppError(ExitCode::CHECKPOINT,
+                       std::string(e.what()) + "; it cannot be used for --restart");
+    }
 }
 
 /// The number of particles a process owns (those not yet assigned count on the root).
@@ -178,6 +184,12 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         onRoot(comm, [&] { outputs->resume(state.time, state.series); });
     } else {
         onRoot(comm, [&] { outputs->start(); });
+        if (root && !outputs->earlierRunNote().empty()) {
+            if (!opt.quiet)
+                std::fprintf(stderr, "%s: warning: %s\n", opt.program.c_str(),
+                             outputs->earlierRunNote().c_str());
+            scene.warnings.push_back(outputs->earlierRunNote());  // and in summary.json
+        }
         emit(0.0);
         decomposition.distribute(storage);
         if (comm.size() > 1) solver.setDecomposition(&decomposition);
@@ -219,6 +231,9 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
                                                  : Progress::Mode::PLAIN,
                       run.time(), scene.endTime);
     PhysicalCheck physical(setup.velocityScale, setup.model.c0(), setup.model.restDensity);
+    for (const auto& r : plugins.ranges)
+        physical.addRange({r.id, r.name, r.unit, r.lo, r.hi,
+                           "the range the plugin " + r.library + " declares for it"});
     std::vector<std::pair<double, std::string>> checkpoints;
     auto resumable = [&] {
         RunState<Dim> r = state;
@@ -357,6 +372,10 @@ int runSimulation(const SceneDocument& given, const RunOptions& opt) {
         // A plugin term that failed in a step stops the run as an instability does.
         if (e.code() != ExitCode::UNSTABLE && e.code() != ExitCode::PLUGIN) throw;
         status = e.code() == ExitCode::UNSTABLE ? "unstable" : "failed", message = e.what();
+        // The first step from a checkpoint: the checkpoint may hold a state no run reached.
+        if (opt.restart && e.code() == ExitCode::UNSTABLE && run.steps() <= startSteps + 1)
+            message += "; this was the first step from " + *opt.restart +
+                       ": if that checkpoint was edited, restart from one that was not";
         failure = e.code();
     }
     const std::int64_t particles = comm.sum(ownedParticles(storage, comm));

@@ -2,10 +2,12 @@
 // misspelt key) and its documented exit code (docs/scenes.md), never a crash or a hang.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "app_runner.hpp"
+#include "io/checkpoint.hpp"
 
 using namespace apptest;
 using nlohmann::json;
@@ -14,7 +16,7 @@ namespace {
 
 // Exit codes documented in docs/scenes.md.
 constexpr int kUsage = 2, kSceneFile = 3, kJson = 4, kScene = 5, kExpression = 6, kOutput = 7,
-              kCheckpoint = 8;
+              kCheckpoint = 8, kUnstable = 9, kResources = 11;
 
 json tiny() { return json::parse(readFile(scene("tiny_2d.json"))); }
 
@@ -219,4 +221,125 @@ TEST(BadInput, CorruptedAndTruncatedCheckpoints) {
                   {"other.chk", "not a numerics checkpoint"});
     expectMessage(run(FLUID_SIM_3D, "--quiet --restart out/checkpoint_0001.chk", dir), kCheckpoint,
                   {"2D checkpoint", "fluid_sim"});
+}
+
+// A checkpoint edited after it was written, its checksum written again to match, ended as an
+// internal error (issue 47): every such edit is a checkpoint error (8) naming the file.
+TEST(BadInput, EditedCheckpointsWithARewrittenChecksum) {
+    const std::string dir = freshDir("bad_checkpoint_edited");
+    const Result ok =
+        run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out out --checkpoint-every 0.01",
+            dir);
+    ASSERT_EQ(ok.code, 0) << ok.output;
+    const std::string path = dir + "/out/checkpoint_0001.chk";
+    const std::string payload = num::io::checkpointPayload(readFile(path), path, 2);
+    // The payload: the scene (8-byte length, text), the fingerprint, the run state, the particles.
+    std::uint64_t sceneBytes = 0;
+    std::memcpy(&sceneBytes, payload.data(), sizeof sceneBytes);
+    const std::size_t afterScene = 8 + sceneBytes;
+    const std::vector<std::pair<std::string, std::string>> edits = {
+        {"cut_end", payload.substr(0, payload.size() - 8)},
+        {"extra_bytes", payload + std::string(8, '\0')},
+        {"scene_not_json", std::string("\x01\0\0\0\0\0\0\0{", 9) + payload.substr(afterScene)},
+        {"huge_length", std::string(8, '\xff') + payload.substr(8)},
+    };
+    for (const auto& [name, edited] : edits) {
+        writeFile(dir + "/" + name + ".chk", num::io::checkpointBytes(2, edited));
+        const Result r = run(FLUID_SIM, "--quiet --out again --restart " + name + ".chk", dir);
+        expectMessage(r, kCheckpoint, {(name + ".chk").c_str()});
+        EXPECT_FALSE(contains(r.output, "internal error")) << name << ": " << r.output;
+    }
+    // Values that are finite but no run reached (1e304 in a quantity of the engine's own) pass
+    // every check of the file; the first step stops as unstable (9) and says where it started.
+    const std::string scrambled = payload.substr(0, payload.size() / 2) + std::string(64, '\x7f') +
+                                  payload.substr(payload.size() / 2 + 64);
+    writeFile(dir + "/scrambled.chk", num::io::checkpointBytes(2, scrambled));
+    const Result r = run(FLUID_SIM, "--quiet --out again --restart scrambled.chk", dir);
+    EXPECT_TRUE(r.code == kCheckpoint || r.code == kUnstable) << r.output;
+    if (r.code == kUnstable)
+        EXPECT_TRUE(contains(r.output,
+                             "this was the first step from scrambled.chk: if that "
+                             "checkpoint was edited"))
+            << r.output;
+    EXPECT_FALSE(contains(r.output, "internal error")) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+// Files that are not what their names say are refused before they are read whole (issue 47):
+// /dev/zero as a scene grew to gigabytes.
+TEST(BadInput, EndlessFilesAreNotReadWhole) {
+    const std::string dir = freshDir("bad_endless");
+    expectMessage(run(FLUID_SIM, "/dev/zero --quiet", dir), kSceneFile,
+                  {"/dev/zero", "larger than 16 MiB"});
+    expectMessage(run(FLUID_SIM, "--quiet --restart /dev/zero", dir), kCheckpoint,
+                  {"/dev/zero", "not a numerics checkpoint"});
+    // A header that promises more than the file holds: refused from the header.
+    std::string header("NUMSPHCK", 8);
+    const std::uint32_t version = 3, dim = 2, crc = 0, spare = 0;
+    const std::uint64_t size = std::uint64_t(1) << 60;
+    for (const auto& [p, n] : {std::pair<const void*, std::size_t>{&version, 4},
+                               {&dim, 4},
+                               {&size, 8},
+                               {&crc, 4},
+                               {&spare, 4}})
+        header.append(static_cast<const char*>(p), n);
+    writeFile(dir + "/promise.chk", header + "abc");
+    expectMessage(run(FLUID_SIM, "--quiet --restart promise.chk", dir), kCheckpoint,
+                  {"promise.chk", "truncated (35 bytes, expected 1152921504606847008)"});
+    std::filesystem::create_directory(dir + "/folder.chk");
+    expectMessage(run(FLUID_SIM, "--quiet --restart folder.chk", dir), kCheckpoint,
+                  {"folder.chk", "a directory"});
+}
+
+// The threads a run asks for may be refused by the system (a batch system's limit on processes
+// or memory): a documented exit code and one line, not an abort (issue 47). Each thread
+// reserves its stack (8 MiB here) of the address space that ulimit -v bounds to 4 GB.
+TEST(BadInput, ThreadsTheSystemRefuses) {
+    const std::string dir = freshDir("bad_threads");
+    const Result r = run("/bin/sh",
+                         "-c \"ulimit -s 8192; ulimit -v 4000000; exec '" + std::string(FLUID_SIM) +
+                             "' '" + scene("tiny_2d.json") + "' --quiet --out out --threads 1024\"",
+                         dir);
+    expectMessage(r, kResources, {"the system refused thread", "of 1024", "fewer --threads"});
+}
+
+// Water cooled through a wall below absolute zero ran on and reported success (issue 47).
+TEST(BadInput, TemperatureBelowAbsoluteZeroDuringTheRun) {
+    // No wall or body at a fixed temperature to feed heat back: 1 GW/m^2 leaves through the
+    // floor and the water reaches absolute zero at t = 0.15 s.
+    json j = tiny();
+    j["boundaries"]["y_min"]["thermal"] = {{"heat_flux", -1e9}};
+    j["boundaries"]["x_max"].erase("thermal");
+    j["bodies"] = json::array();
+    j["materials"]["water"]["conductivity"] = 1e6;
+    j["output"]["formats"] = {"csv"};
+    const Result r = runScene("below_absolute_zero", j.dump(), "--end-time 0.3");
+    expectMessage(r, kUnstable, {"temperature reached", "below -273.15 degC", "heat_flux"});
+    const json summary = json::parse(
+        readFile(std::string(APP_TEST_WORK) + "/bad_below_absolute_zero/out/summary.json"));
+    EXPECT_EQ(summary["status"], "unstable");
+}
+
+// A symbolic link in a loop (or to nothing) in ./scenes aborted --list-scenes (issue 47).
+TEST(BadInput, ListScenesPastBrokenLinks) {
+    const std::string dir = freshDir("bad_list_scenes");
+    std::filesystem::create_directories(dir + "/scenes");
+    std::filesystem::copy_file(scene("tiny_2d.json"), dir + "/scenes/tiny_2d.json");
+    std::filesystem::create_symlink("loop_b.json", dir + "/scenes/loop_a.json");
+    std::filesystem::create_symlink("loop_a.json", dir + "/scenes/loop_b.json");
+    std::filesystem::create_symlink("nowhere.json", dir + "/scenes/dangling.json");
+    std::filesystem::create_symlink("validation", dir + "/scenes/validation");  // a loop too
+    const Result r = run(FLUID_SIM, "--list-scenes", dir);
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "scenes/tiny_2d.json")) << r.output;
+    EXPECT_FALSE(contains(r.output, "loop_a")) << r.output;
+}
+
+// A spacing so fine that the particle count passes the range of a long was printed as a negative
+// count (issue 47).
+TEST(BadInput, ImpossibleParticleCountIsPrintedAsIs) {
+    const Result r = runScene("particle_count", tiny().dump(), "--set particles.spacing=1e-12");
+    expectMessage(r, kScene, {"particles.spacing", "at most 20 million", "particles)"});
+    EXPECT_FALSE(contains(r.output, "about -")) << r.output;
+    EXPECT_TRUE(contains(r.output, "e+2")) << r.output;  // about 1e+22
 }

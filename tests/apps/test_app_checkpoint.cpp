@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -166,4 +167,77 @@ TEST(Unstable, StopsWithTimeStepAndCause) {
         EXPECT_TRUE(contains(r.output, part)) << part << "\n" << r.output;
     EXPECT_TRUE(std::filesystem::exists(dir + "/out/particles_0000.vtu"));
     EXPECT_EQ(nlohmann::json::parse(readFile(dir + "/out/summary.json"))["status"], "unstable");
+}
+
+namespace {
+
+/// The frames of a movie (ffprobe counts them), or -1 without ffprobe.
+int movieFrames(const std::string& path) {
+    const Result r = run("/bin/sh",
+                         "-c 'command -v ffprobe >/dev/null || { echo none; exit 0; }; ffprobe -v "
+                         "error -count_frames -select_streams v:0 -show_entries "
+                         "stream=nb_read_frames -of csv=p=0 \"" +
+                             path + "\"'",
+                         ".");
+    return contains(r.output, "none") ? -1 : std::atoi(r.output.c_str());
+}
+
+bool anyFileStartingWith(const std::string& dir, const std::string& head) {
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+        if (e.path().filename().string().rfind(head, 0) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
+// A shorter run into a folder an earlier run used encoded the earlier run's pictures into its
+// movie and left its series and checkpoints beside the new ones (issue 47): a new run removes
+// the files an earlier run wrote under the names it writes, and says so.
+TEST(OutputFolder, ANewRunReplacesAnEarlierRunsFiles) {
+    const std::string dir = freshDir("output_folder_reused");
+    const std::string common = "'" + scene("tiny_2d.json") + "' --quiet --backend seq --out out ";
+    const Result first = run(FLUID_SIM, common + "--end-time 0.05 --checkpoint-every 0.02", dir);
+    ASSERT_EQ(first.code, 0) << first.output;
+    ASSERT_TRUE(std::filesystem::exists(dir + "/out/particles_0005.png"));
+    ASSERT_TRUE(std::filesystem::exists(dir + "/out/checkpoint_0002.chk"));
+    std::filesystem::copy_file(dir + "/out/checkpoint_0001.chk", dir + "/kept.chk");
+    writeFile(dir + "/out/notes.txt", "a file of the user's");
+
+    const Result second = run(FLUID_SIM, common + "--end-time 0.02", dir);
+    ASSERT_EQ(second.code, 0) << second.output;
+    for (const char* gone : {"particles_0003.vtu", "particles_0003.csv", "particles_0005.png",
+                             "checkpoint_0001.chk", "checkpoint_0002.chk"})
+        EXPECT_FALSE(std::filesystem::exists(dir + "/out/" + gone)) << gone;
+    for (const char* kept : {"particles_0002.vtu", "particles_0002.png", "notes.txt"})
+        EXPECT_TRUE(std::filesystem::exists(dir + "/out/" + kept)) << kept;
+    EXPECT_FALSE(anyFileStartingWith(dir + "/out", "checkpoint_"));
+    EXPECT_FALSE(contains(readFile(dir + "/out/particles.pvd"), "particles_0003.vtu"));
+    const auto summary = nlohmann::json::parse(readFile(dir + "/out/summary.json"));
+    bool said = false;
+    for (const auto& w : summary.at("warnings"))
+        said |= contains(w.get<std::string>(), "removed ") &&
+                contains(w.get<std::string>(), "files an earlier run wrote");
+    EXPECT_TRUE(said) << summary.at("warnings").dump();
+    if (const int frames = movieFrames(dir + "/out/particles.mp4"); frames >= 0)
+        EXPECT_EQ(frames, 3);
+    else
+        EXPECT_FALSE(std::filesystem::exists(dir + "/out/particles.mp4"));
+
+    // A restart into the folder continues it; its movie holds this run's pictures only, though
+    // the earlier run's later pictures stay in the folder.
+    const Result longer = run(FLUID_SIM, common + "--end-time 0.05 --checkpoint-every 0.02", dir);
+    ASSERT_EQ(longer.code, 0) << longer.output;
+    const Result restart = run(FLUID_SIM,
+                               "--quiet --backend seq --out out --end-time 0.03 --restart "
+                               "out/checkpoint_0001.chk",
+                               dir);
+    ASSERT_EQ(restart.code, 0) << restart.output;
+    EXPECT_TRUE(std::filesystem::exists(dir + "/out/particles_0003.vtu"));
+    EXPECT_FALSE(contains(readFile(dir + "/out/particles.pvd"), "particles_0004.vtu"));
+    if (const int frames = movieFrames(dir + "/out/particles.mp4"); frames >= 0)
+        EXPECT_EQ(frames, 4);
+    // The checkpoint copied away from the first run still restarts.
+    const Result kept =
+        run(FLUID_SIM, "--quiet --backend seq --out other --end-time 0.03 --restart kept.chk", dir);
+    EXPECT_EQ(kept.code, 0) << kept.output;
 }

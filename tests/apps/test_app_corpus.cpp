@@ -64,6 +64,71 @@ const std::vector<Case>& corpus() {
          },
          kExpression,
          {"gravity[1]", "finite", "ln(t-1)"}},
+        // Variables that parse but would be taken as 0 (issue 47): refused, naming them.
+        {"gravity_depends_on_position",
+         2,
+         [](json& j) {
+             j["gravity"] = {"0", "-9.81*(1+10*x)"};
+             return "";
+         },
+         kExpression,
+         {"gravity[1]", "an expression in t", "it uses 'x'", "uniform in space"}},
+        {"gravity_depends_on_position_3d",
+         3,
+         [](json& j) {
+             j["gravity"] = {0, "y", "-9.81"};
+             return "";
+         },
+         kExpression,
+         {"gravity[1]", "it uses 'y'"}},
+        {"set_gravity_depends_on_position",
+         3,
+         [](json&) { return std::string("--set 'gravity=[0,0,\"-9.81*(1+z)\"]'"); },
+         kExpression,
+         {"gravity[2]", "it uses 'z'"}},
+        {"initial_field_uses_z_in_2d",
+         2,
+         [](json& j) {
+             j["fluids"][0]["temperature"] = "20 + 10*z";
+             return "";
+         },
+         kExpression,
+         {"fluids[0].temperature", "an expression in x, y and t", "it uses 'z'",
+          "a 2D scene has the coordinates x and y only"}},
+        // Derived settings within the limits of those they come from (issue 47).
+        {"auto_sound_speed_beyond_the_limit",
+         2,
+         [](json& j) {
+             j["materials"]["water"]["sound_speed"] = "auto";
+             return "--set 'fluids.0.velocity=[1e6,0]'";
+         },
+         kScene,
+         {"materials.water.sound_speed", "at most 1e+06 m/s", "\"auto\" = 10 x U = 1e+07 m/s",
+          "at most 100000 m/s"}},
+        {"auto_sound_speed_from_max_speed",
+         3,
+         [](json& j) {
+             j["physics"]["max_speed"] = 2e5;
+             return "";
+         },
+         kScene,
+         {"physics.max_speed", "[0, 100000]", "found 200000"}},
+        {"cfl_below_the_engine_limit",
+         2,
+         [](json&) { return std::string("--set time.cfl=1e-7"); },
+         kScene,
+         {"time.cfl", "expected a number in [1e-06, 1]", "found 1e-07"}},
+        // A value just beyond a limit is printed in full, not rounded onto it.
+        {"cfl_just_above_one",
+         2,
+         [](json&) { return std::string("--set time.cfl=1.0000001"); },
+         kScene,
+         {"time.cfl", "[1e-06, 1]", "found 1.0000001"}},
+        {"coordinate_beyond_every_limit",
+         2,
+         [](json&) { return std::string("--set 'domain.max=[1e301,1]'"); },
+         kScene,
+         {"domain.max[0]", "a number in [-1e+300, 1e+300]", "found 1e+301"}},
         {"number_beyond_double",
          2,
          [](json&) { return std::string("RAW:1e400"); },

@@ -181,3 +181,45 @@ TEST(PhysicalCheck, DensityFarFromRestWarnsThenStops) {
     rho[fluid] = 2.5 * rho0;
     EXPECT_THROW(p.check.check(p.storage, 0.2), AppError);
 }
+
+// Water cooled below absolute zero (a wall's heat flux, a plugin's heat sink) ran on to the end
+// and reported success (issue 47): any particle below -273.15 degC stops the run.
+TEST(PhysicalCheck, TemperatureBelowAbsoluteZeroStopsTheRun) {
+    Physical p;
+    auto T = p.storage.getValue<double>(QuantityId::TEMPERATURE);
+    T[2] = -273.15;  // at absolute zero: still physical
+    EXPECT_EQ(p.check.check(p.storage, 0.1), "");
+    T[2] = -293.4;
+    try {
+        p.check.check(p.storage, 0.25);
+        FAIL() << "no stop";
+    } catch (const AppError& e) {
+        EXPECT_EQ(e.code(), ExitCode::UNSTABLE);
+        const std::string m = e.what();
+        EXPECT_NE(m.find("at t = 0.25 s a particle's temperature reached -293.4 degC, below "
+                         "-273.15 degC"),
+                  std::string::npos)
+            << m;
+        EXPECT_NE(m.find("heat_flux"), std::string::npos) << m;
+    }
+}
+
+// A quantity with a declared range (a plugin's, Registry::addField) is checked the same way.
+TEST(PhysicalCheck, DeclaredRangesAreChecked) {
+    Physical p;
+    const auto id = QuantityId(1234);
+    p.storage.insert<double>(id, num::sph::OrderEnum::ZERO, 0.5);
+    p.check.addRange({id, "concentration", "mol/m^3", 0, 1, "the test's hint"});
+    EXPECT_EQ(p.check.check(p.storage, 0.1), "");
+    p.storage.getValue<double>(id)[4] = 1.5;
+    try {
+        p.check.check(p.storage, 0.1);
+        FAIL() << "no stop";
+    } catch (const AppError& e) {
+        EXPECT_EQ(e.code(), ExitCode::UNSTABLE);
+        EXPECT_NE(std::string(e.what()).find("concentration reached 1.5 mol/m^3, above 1 mol/m^3: "
+                                             "the test's hint"),
+                  std::string::npos)
+            << e.what();
+    }
+}

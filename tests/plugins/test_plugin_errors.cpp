@@ -1,6 +1,7 @@
 // Bad plugins and bad plugin scenes: each a one-line error with its exit code
 // (docs/scenes.md), never a crash; and restarts with other plugins refused.
 #include <filesystem>
+#include <functional>
 
 #include "plugin_test_support.hpp"
 
@@ -46,7 +47,7 @@ TEST(PluginErrors, NotAPlugin) {
 
 TEST(PluginErrors, ApiVersionMismatch) {
     expectError("version", sceneWith(WRONG_VERSION_PLUGIN, kSpring), kPlugin,
-                "was built against plugin API version 999, fluid_sim has version 1");
+                "was built against plugin API version 1000, fluid_sim has version 2");
 }
 
 TEST(PluginErrors, UnknownTerm) {
@@ -122,6 +123,79 @@ TEST(PluginErrors, FieldTheLibraryDoesNotDeclare) {
     scene["plugins"][0]["fields"] = {"energy"};
     expectError("unknown_field", scene, kScene,
                 "plugins.0.fields.0: expected a field of libspring_plugin.so (it declares none)");
+}
+
+// A plugin's field that leaves the range the plugin declares stops the run as unstable (exit 9),
+// whether the scene writes the field or not (issue 47).
+TEST(PluginErrors, FieldLeavingItsDeclaredRange) {
+    json scene = sceneWith(SPRING_PLUGIN, kSpring);
+    scene["plugins"].push_back(
+        {{"library", FAULTY_PLUGIN},
+         {"terms", json::array({{{"term", "leaves_its_range"}, {"rate", 20}}})}});
+    const std::string dir = apptest::freshDir("plugin_error_leaves_its_range");
+    const auto r = plugintest::runScene(FLUID_SIM, scene, dir);
+    EXPECT_EQ(r.code, 9) << r.output;
+    const auto lines = plugintest::errorLines(r.output);
+    ASSERT_EQ(lines.size(), 1u) << r.output;
+    EXPECT_TRUE(contains(lines[0], "s a particle's level reached 1.")) << lines[0];
+    EXPECT_TRUE(contains(lines[0],
+                         ", above 1: the range the plugin libtest_faulty_plugin.so "
+                         "declares for it"))
+        << lines[0];
+    const json summary = json::parse(apptest::readFile(dir + "/out/summary.json"));
+    EXPECT_EQ(summary["status"], "unstable");
+}
+
+// Code that throws plain values (an int) is reported as a plugin failure, not an abort.
+TEST(PluginErrors, EntryPointOrFactoryThrowingSomethingElse) {
+    expectError("entry_throws_int", sceneWith(THROWING_ENTRY_PLUGIN, kSpring), kPlugin,
+                "the plugin failed to register: its entry point threw something that is not a "
+                "std::exception");
+    expectError("factory_throws_int",
+                sceneWith(FAULTY_PLUGIN, json::array({{{"term", "throws_int_when_made"}}})),
+                kPlugin,
+                "term \"throws_int_when_made\" (plugins.0.terms.0, libtest_faulty_plugin.so) "
+                "failed when made from its parameters: it threw something that is not a "
+                "std::exception");
+}
+
+/// A copy of a plugin library in the test's folder, changed by `edit`.
+std::string editedCopy(const std::string& name, const std::string& library,
+                       const std::function<void(std::string&)>& edit) {
+    const std::string dir = apptest::freshDir("plugin_copy_" + name);
+    std::string bytes = apptest::readFile(library);
+    edit(bytes);
+    const std::string copy = dir + "/lib" + name + ".so";
+    apptest::writeFile(copy, bytes);
+    return copy;
+}
+
+// An interrupted copy ended the app with SIGBUS inside dlopen (its segments reach past the end).
+TEST(PluginErrors, TruncatedLibrary) {
+    for (const double part : {0.5, 0.9}) {
+        const std::string copy = editedCopy("truncated", SPRING_PLUGIN,
+                                            [&](std::string& b) { b.resize(b.size() * part); });
+        expectError("truncated", sceneWith(copy, kSpring), kPlugin,
+                    "cannot load " + copy + ": the file is truncated (");
+    }
+    const std::string header =
+        editedCopy("header_only", SPRING_PLUGIN, [](std::string& b) { b.resize(40); });
+    expectError("header_only", sceneWith(header, kSpring), kPlugin,
+                "it is not a shared library (no ELF header");
+}
+
+// A library for another machine was reported by dlopen as a file it cannot open.
+TEST(PluginErrors, LibraryForAnotherMachine) {
+#if defined(__aarch64__)
+    const char machine = 62, *other = "x86-64";  // EM_X86_64
+#else
+    const char machine = char(183), *other = "AArch64 (64-bit ARM)";  // EM_AARCH64
+#endif
+    const std::string copy = editedCopy("other_machine", SPRING_PLUGIN, [&](std::string& b) {
+        b[18] = machine, b[19] = 0;  // e_machine, little-endian
+    });
+    expectError("other_machine", sceneWith(copy, kSpring), kPlugin,
+                std::string("it was built for ") + other + ", this program runs on ");
 }
 
 /// A checkpoint records the plugins and their parameters: a restart with others is refused.

@@ -2,7 +2,9 @@
 // model must leave out to run on the device, its FluidStepConfig, the copies between a Storage
 // and the device step, and DeviceRun, the run loop of sph::Run (timestepping.hpp) over a device
 // step: the adaptive step from the same criteria (the maxima reduced on the device, offered in
-// the CPU solver's order), the leapfrog, the post-step phase.
+// the CPU solver's order, the diffusion limit of conduction last), the leapfrog, the post-step
+// phase. The heat books of thermal_walls.hpp (heat delivered by fixed temperatures and
+// sources) are not kept on the device.
 #pragma once
 
 #include <memory>

@@ -4,15 +4,22 @@
 //
 // One evaluation at time t, as the CPU solver's (sph/solver.hpp with the fluid model's terms):
 //   wrap periodic positions -> cell keys, sort, permute every array, cell ranges
+//   -> viscosity pass (temperature-dependent viscosity): nu = nu(T) of every particle
 //   -> fluid pass:  p = max(p(rho), p_b - T_max); the tension limit at free surfaces
-//   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles gather fluid)
+//   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles, walls and
+//                   bodies, gather fluid); with conduction the temperature a fixed-temperature
+//                   boundary particle shows
 //   -> inputs pass: V = m / rho, the pair velocity, p / rho^2, mu = rho nu, 1 / W(V^(1/Dim)),
 //                   the free-surface flags of the previous kernel sum
 //   -> pair pass:   each fluid particle gathers its neighbours once: continuity + delta-SPH,
 //                   pressure gradient, artificial and laminar viscosity, kernel sums, the
-//                   shifting sums; then the body force. Boundary particles' rates are zero.
-// The leapfrog of sph/timestepping.hpp (kick-drift, evaluate, kick; Heun for the density) and
-// the post-step phase (particle shifting, containment in the box's walls) are passes too.
+//                   shifting sums; then the body force and Boussinesq buoyancy. Boundary
+//                   particles' rates are zero.
+//   -> heat pass:   conduction: every particle that is not adiabatic gathers its neighbours;
+//                   then the thermal conditions (fixed temperature, heat sources)
+// The leapfrog of sph/timestepping.hpp (kick-drift, evaluate, kick; Heun for the density and
+// the temperature) and the post-step phase (particle shifting, containment in the box's walls
+// and out of the bodies) are passes too.
 // Every formula is the shared one of sph/formulas/ (host and device).
 //
 // Order and round-off: a particle's neighbours come in the grid's order (device/

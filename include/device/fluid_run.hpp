@@ -2,7 +2,9 @@
 // model must leave out to run on the device, its FluidStepConfig, the copies between a Storage
 // and the device step, and DeviceRun, the run loop of sph::Run (timestepping.hpp) over a device
 // step: the adaptive step from the same criteria (the maxima reduced on the device, offered in
-// the CPU solver's order), the leapfrog, the post-step phase.
+// the CPU solver's order, the diffusion limit of conduction last), the leapfrog, the post-step
+// phase. The heat books of thermal_walls.hpp (heat delivered by fixed temperatures and
+// sources) are not kept on the device.
 #pragma once
 
 #include <memory>
@@ -20,11 +22,10 @@ namespace num::device {
 /// What of a fluid model the device step does not run yet, as "what (why)", or "" when it runs
 /// all of it. Checked before anything is uploaded.
 template <int Dim>
-std::string unsupported(const sph::FluidModel<Dim>& model, const sph::FluidGeometry<Dim>& geometry,
+std::string unsupported(const sph::FluidModel<Dim>& model,
+                        const sph::FluidGeometry<Dim>& /*geometry*/,
                         const sph::RunSettings& settings) {
-    if (model.heat.any()) return "heat (conduction, buoyancy, temperature-dependent viscosity)";
     if (model.extraTerms.size() > 0) return "extra equation terms (plugins' or users' terms)";
-    if (!geometry.bodies.empty()) return "solid bodies";
     if (model.density == sph::DensityMode::SUMMATION) return "density by summation";
     if (settings.get<std::string>("evaluation") == "symmetric") return "symmetric evaluation";
     return "";
@@ -63,7 +64,24 @@ FluidStepConfig<Dim> makeFluidStepConfig(const sph::FluidModel<Dim>& model,
     c.shiftingCoefficient = model.shiftingCoefficient;
     c.shiftingNormalToWalls = model.shiftingNormalToWalls;
     c.contain = model.containParticles && boundaries;
+    for (const sph::SolidBody<Dim>& body : geometry.bodies) c.bodies.push_back(body.shape);
     c.bodyForce = model.bodyForce;
+    c.conduction = model.heat.conduction;
+    c.buoyancy = model.heat.buoyancy && bool(model.bodyForce);  // as makeHeatEquations
+    c.temperatureViscosity = model.heat.temperatureViscosity;
+    c.viscosityLaw = model.heat.viscosityLaw;
+    if (c.heat()) {  // the storage's table: the model's materials (makeFluidStorage)
+        const auto materials = sph::fluidMaterials(model);
+        const std::vector<sph::ThermalMaterial> table = sph::thermalMaterials(materials);
+        for (std::size_t k = 0; k < table.size(); ++k) {
+            const sph::ThermalMaterial& t = table[k];
+            c.materials.push_back(DeviceMaterial{
+                t.conductivity, t.heatCapacity, t.density, t.expansion, t.referenceTemperature,
+                c.temperatureViscosity ? materials[k]->params().template get<double>("viscosity")
+                                       : 0.0});
+        }
+    }
+    c.diffusionFactor = settings.get<double>("diffusion_factor");
     c.dtFixed = settings.get<double>("dt_fixed"), c.dtMax = settings.get<double>("dt_max");
     c.accelerationFactor = settings.get<double>("acceleration_factor");
     c.cfl = settings.get<double>("cfl"), c.viscousFactor = settings.get<double>("viscous_factor");
@@ -109,6 +127,19 @@ ParticleArrays<Dim> particleArrays(const sph::Storage<Dim>& s) {
     if (s.has(QuantityId::WALL_VELOCITY))
         p.wallVelocity = detail::valuesOr<Vec>(s, QuantityId::WALL_VELOCITY, Vec{});
     p.pairVelocity = detail::valuesOr<Vec>(s, FluidId::PAIR_VELOCITY, Vec{});
+    if (s.has(QuantityId::TEMPERATURE) &&
+        s.order(QuantityId::TEMPERATURE) >= sph::OrderEnum::FIRST) {
+        p.T = detail::valuesOr<Float>(s, QuantityId::TEMPERATURE, 0.0);
+        const auto dT = s.template getDt<Float>(QuantityId::TEMPERATURE);
+        p.dT.assign(dT.begin(), dT.end());
+        p.Tb = s.has(sph::heat_ids::BOUNDARY_TEMPERATURE)
+                   ? detail::valuesOr<Float>(s, sph::heat_ids::BOUNDARY_TEMPERATURE, 0.0)
+                   : p.T;
+        p.heatSource = detail::valuesOr<Float>(s, sph::heat_ids::HEAT_SOURCE, 0.0);
+        p.material = detail::valuesOr<int>(s, QuantityId::MATERIAL, 0);
+        p.condition = detail::valuesOr<int>(s, sph::heat_ids::THERMAL_CONDITION,
+                                            int(sph::ThermalCondition::CONDUCTING));
+    }
     return p;
 }
 
@@ -134,6 +165,12 @@ void copyBack(const ParticleArrays<Dim>& p, sph::Storage<Dim>& s) {
     detail::store(s, FluidId::WALL_DIRECTION, p.wallDirection);
     for (int b = 0; b < Dim; ++b)
         detail::store(s, sph::velocityGradientId<Dim>(b), p.velocityGradient[b]);
+    if (!p.nu.empty()) detail::store(s, FluidId::KINEMATIC_VISCOSITY, p.nu);
+    if (!p.T.empty()) {
+        copy(p.T, s.template getValue<Float>(QuantityId::TEMPERATURE));
+        copy(p.dT, s.template getDt<Float>(QuantityId::TEMPERATURE));
+        detail::store(s, sph::heat_ids::BOUNDARY_TEMPERATURE, p.Tb);
+    }
 }
 
 /// The device step on the host execution (tests; a reference for the CUDA one).
@@ -239,6 +276,9 @@ class DeviceRun {
                      config_.cfl * config_.h / (config_.eos.c0 + std::sqrt(m.fluidSpeed2)));
         if (config_.laminar && m.viscosity > 0)
             limits.offer("viscous", config_.viscousFactor * config_.h * config_.h / m.viscosity);
+        if (config_.conduction && m.diffusivity > 0)
+            limits.offer("diffusion",
+                         config_.diffusionFactor * config_.h * config_.h / m.diffusivity);
         return limits;
     }
 

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "sph/formulas/equation_of_state.hpp"
+#include "sph/formulas/fluid_particles.hpp"
 #include "sph/kernel_choice.hpp"
+#include "sph/setup/shapes.hpp"
 #include "sph/types.hpp"
 
 namespace num::device {
@@ -18,6 +20,13 @@ namespace num::device {
 using sph::Float;
 template <int Dim>
 using Vector = num::Vec<double, Dim>;
+
+/// A material's parameters the heat passes read (terms/thermal_properties.hpp's
+/// ThermalMaterial and the material's viscosity), indexed by the particles' material index.
+struct DeviceMaterial {
+    Float conductivity = 0, heatCapacity = 1, density = 1, expansion = 0, referenceTemperature = 0,
+          viscosity = 0;
+};
 
 template <int Dim>
 struct FluidStepConfig {
@@ -42,7 +51,16 @@ struct FluidStepConfig {
     bool shiftingNormalToWalls = false;
     bool contain = false;                         ///< containment in the box's walls
     bool wallLow[Dim] = {}, wallHigh[Dim] = {};   ///< which box sides are walls
+    std::vector<sph::Shape<Dim>> bodies;          ///< the solid bodies' shapes (containment)
     std::function<Vector<Dim>(Float)> bodyForce;  ///< empty: none
+    // Heat (terms/heat_model.hpp).
+    bool conduction = false;  ///< conduction with the thermal conditions of walls and bodies
+    bool buoyancy = false;    ///< Boussinesq buoyancy with the body force as g
+    bool temperatureViscosity = false;
+    sph::ViscosityOfTemperature viscosityLaw{};
+    std::vector<DeviceMaterial> materials;  ///< the storage's material table
+    Float diffusionFactor = 0;              ///< RunSettings diffusion_factor
+    bool heat() const { return conduction || buoyancy || temperatureViscosity; }
     // Domain.
     Vector<Dim> domainMin{}, domainMax{};
     bool periodic[Dim] = {};
@@ -59,6 +77,10 @@ struct ParticleArrays {
     std::vector<Float> m, rho, drho, p, nu, kernelSum, surfaceNeighbours;
     std::vector<int> kind, slip;
     std::vector<Vec> wallVelocity;  ///< empty: every boundary is held
+    // Heat (empty without): temperature and its rate, the temperature shown to conduction
+    // (heat_ids::BOUNDARY_TEMPERATURE), heat source [W/kg], material, thermal condition.
+    std::vector<Float> T, dT, Tb, heatSource;
+    std::vector<int> material, condition;
     // What an evaluation leaves (downloaded with the state).
     std::vector<Float> volume;
     std::vector<Vec> pairVelocity, kernelSumGradient, densityGradient, wallDirection;
@@ -71,6 +93,7 @@ struct StepMaxima {
     Float acceleration2 = 0;  ///< max |a|^2 over every particle
     Float fluidSpeed2 = 0;    ///< max |v|^2 over the fluid
     Float viscosity = 0;      ///< max nu (laminar viscosity on)
+    Float diffusivity = 0;    ///< max k / (rho c) of the particles that conduct (conduction on)
 };
 
 }  // namespace num::device

@@ -4,15 +4,22 @@
 //
 // One evaluation at time t, as the CPU solver's (sph/solver.hpp with the fluid model's terms):
 //   wrap periodic positions -> cell keys, sort, permute every array, cell ranges
+//   -> viscosity pass (temperature-dependent viscosity): nu = nu(T) of every particle
 //   -> fluid pass:  p = max(p(rho), p_b - T_max); the tension limit at free surfaces
-//   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles gather fluid)
+//   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles, walls and
+//                   bodies, gather fluid); with conduction the temperature a fixed-temperature
+//                   boundary particle shows
 //   -> inputs pass: V = m / rho, the pair velocity, p / rho^2, mu = rho nu, 1 / W(V^(1/Dim)),
 //                   the free-surface flags of the previous kernel sum
 //   -> pair pass:   each fluid particle gathers its neighbours once: continuity + delta-SPH,
 //                   pressure gradient, artificial and laminar viscosity, kernel sums, the
-//                   shifting sums; then the body force. Boundary particles' rates are zero.
-// The leapfrog of sph/timestepping.hpp (kick-drift, evaluate, kick; Heun for the density) and
-// the post-step phase (particle shifting, containment in the box's walls) are passes too.
+//                   shifting sums; then the body force and Boussinesq buoyancy. Boundary
+//                   particles' rates are zero.
+//   -> heat pass:   conduction: every particle that is not adiabatic gathers its neighbours;
+//                   then the thermal conditions (fixed temperature, heat sources)
+// The leapfrog of sph/timestepping.hpp (kick-drift, evaluate, kick; Heun for the density and
+// the temperature) and the post-step phase (particle shifting, containment in the box's walls
+// and out of the bodies) are passes too.
 // Every formula is the shared one of sph/formulas/ (host and device).
 //
 // Order and round-off: a particle's neighbours come in the grid's order (device/
@@ -36,6 +43,7 @@
 #include "device/neighbour_grid.hpp"
 #include "sph/formulas/fluid_pairs.hpp"
 #include "sph/formulas/fluid_particles.hpp"
+#include "sph/formulas/heat_pairs.hpp"
 #include "sph/formulas/pair_geometry.hpp"
 #include "sph/formulas/post_step.hpp"
 #include "sph/formulas/wall_condition.hpp"
@@ -45,6 +53,8 @@ namespace num::device {
 namespace passes {
 constexpr int fluid = int(sph::ParticleKind::FLUID);
 constexpr int noSlip = 0;  // sph::WallSlip::NO_SLIP
+constexpr int fixedTemperature = int(sph::ThermalCondition::FIXED_TEMPERATURE);
+constexpr int adiabatic = int(sph::ThermalCondition::ADIABATIC);
 
 /// Every per-particle array of the device step. Persistent ones carry state between
 /// evaluations and are permuted with the cell sort; the others are rebuilt by each evaluation.
@@ -56,6 +66,11 @@ struct Arrays {
     Float *m, *rho, *drho, *drhoOld, *p, *nu, *kernelSum, *surfaceNeighbours;
     int *kind, *slip;
     Index* origin;  // the particle's index in the storage
+    // Heat (nullptr without): temperature, its rate (and the rate at the step's start), the
+    // temperature shown to conduction, heat source, material index, thermal condition.
+    Float *T, *dT, *dTOld, *Tb, *heatSource;
+    int *material, *condition;
+    const DeviceMaterial* materials;  // the material table
     // Rebuilt by each evaluation.
     Float *volume, *pOverRho2, *mu, *inverseWAtSpacing;
     char *active, *atSurface;
@@ -124,24 +139,41 @@ struct WallPass {
     sph::KernelValue<Kernel> kernelValue;
     sph::EquationOfState eos;
     Vector<Dim> g;
+    bool heat;  // the temperature a fixed-temperature wall shows to conduction
     NUMERICS_HD void operator()(Index w) const {
         if (d.kind[w] == fluid) return;
         sph::formulas::WallSums<Dim> sums;
-        forEachNeighbour<Dim>(grid, d.x, start, end, w,
-                              [&](Index f, const Vector<Dim>& dx, double r2) {
-                                  if (d.kind[f] != fluid) return;
-                                  const Float W = kernelValue.value(hd::sqrt(r2));
-                                  sums.add(d.p[f], d.rho[f], d.v[f], 0.0, false, dx, W);
-                              });
+        forEachNeighbour<Dim>(
+            grid, d.x, start, end, w, [&](Index f, const Vector<Dim>& dx, double r2) {
+                if (d.kind[f] != fluid) return;
+                const Float W = kernelValue.value(hd::sqrt(r2));
+                sums.add(d.p[f], d.rho[f], d.v[f], heat ? d.T[f] : 0.0, heat, dx, W);
+            });
         const Vector<Dim> wall = d.wallVelocity ? d.wallVelocity[w] : Vector<Dim>{};
         if (!sums.any()) {
             d.p[w] = eos.backgroundPressure;
             d.u[w] = wall;
+            if (heat) d.Tb[w] = d.T[w];
         } else {
             d.p[w] = sph::formulas::wallPressure(sums, g);
             d.u[w] = sph::formulas::wallVelocity(sums, wall, d.slip[w] == noSlip);
+            if (heat)
+                d.Tb[w] = sph::formulas::wallTemperature(sums, d.T[w],
+                                                         d.condition[w] == fixedTemperature);
         }
         d.rho[w] = eos.density(d.p[w]);
+    }
+};
+
+/// Temperature-dependent viscosity (terms/temperature_viscosity.hpp): every particle's nu from
+/// its temperature and its material, before the pair pass reads it.
+template <int Dim>
+struct TemperatureViscosityPass {
+    Arrays<Dim> d;
+    sph::ViscosityOfTemperature law;
+    NUMERICS_HD void operator()(Index i) const {
+        const DeviceMaterial& m = d.materials[d.material[i]];
+        d.nu[i] = law(d.T[i], m.viscosity, m.referenceTemperature, m.density);
     }
 };
 
@@ -178,6 +210,7 @@ struct PairPass {
     bool laminar;
     Vec gravityTerm;  // rho0 g / c0^2 of delta-SPH's hydrostatic part (or zero)
     Vec g;            // the body force
+    bool buoyancy;    // Boussinesq buoyancy -beta (T - T0) g
     NUMERICS_HD void operator()(Index i) const {
         if (d.kind[i] != fluid) {
             d.a[i] = Vec{}, d.drho[i] = 0, d.kernelSum[i] = 0, d.surfaceNeighbours[i] = 0;
@@ -232,10 +265,54 @@ struct PairPass {
         d.drho[i] = continuity + diffusion;
         Vec a = pressure + artificial + viscous;
         f::addBodyForce<Dim>(a, g);
+        if (buoyancy) {
+            const DeviceMaterial& m = d.materials[d.material[i]];
+            a += f::boussinesqAcceleration<Dim>(g, m.expansion, d.T[i], m.referenceTemperature);
+        }
         d.a[i] = a;
         d.kernelSum[i] = c, d.surfaceNeighbours[i] = near;
         d.gradC[i] = gradC, d.gradRho[i] = gradRho, d.wallDirection[i] = wallDirection;
         for (int b = 0; b < Dim; ++b) d.gradV[b][i] = gradV[b];
+    }
+};
+
+/// Heat conduction (terms/heat_conduction.hpp) of every particle that is not adiabatic, in one
+/// gather over its neighbours, then the thermal conditions (boundary/thermal_walls.hpp): a
+/// fixed temperature holds, a heat source adds s / c.
+template <int Dim, class Kernel>
+struct HeatPass {
+    Arrays<Dim> d;
+    GridShape<Dim> grid;
+    const Index *start, *end;
+    sph::GradientFactor<Kernel> gradient;
+    Float laplacianEta2;
+    NUMERICS_HD void operator()(Index a) const {
+        namespace f = sph::formulas;
+        const int condA = d.condition[a];
+        const DeviceMaterial& ma = d.materials[d.material[a]];
+        Float sum = 0;
+        if (condA != adiabatic) {
+            const Float ka = ma.conductivity, rhoA = d.rho[a], invCa = 1.0 / ma.heatCapacity;
+            const Float Ta = f::conductionTemperature(condA, d.T[a], d.Tb[a]);
+            forEachNeighbour<Dim>(
+                grid, d.x, start, end, a, [&](Index b, const Vector<Dim>& dx, double r2) {
+                    const int condB = d.condition[b];
+                    if (!sph::conductsHeat(condA, condB)) return;
+                    const Float kb = d.materials[d.material[b]].conductivity;
+                    if (!(ka + kb > 0)) return;
+                    const Float r = hd::sqrt(r2);
+                    const Float laplacian =
+                        f::pairLaplacian<Dim>(dx, dx * gradient.factor(r), r, laplacianEta2);
+                    const Float Tb = f::conductionTemperature(condB, d.T[b], d.Tb[b]);
+                    sum += f::heatRate(
+                        d.m[b], f::heatExchange(ka, kb, rhoA, d.rho[b], Ta, Tb, laplacian), invCa);
+                });
+        }
+        if (condA == fixedTemperature)
+            sum = 0;
+        else if (d.heatSource[a] != 0)
+            sum += d.heatSource[a] / ma.heatCapacity;
+        d.dT[a] = sum;
     }
 };
 
@@ -249,6 +326,10 @@ struct KickDrift {
         d.x[i] += d.v[i] * dt;
         d.drhoOld[i] = d.drho[i];
         d.rho[i] += d.drho[i] * dt;
+        if (d.T) {
+            d.dTOld[i] = d.dT[i];
+            d.T[i] += d.dT[i] * dt;
+        }
     }
 };
 
@@ -260,10 +341,12 @@ struct Kick {
     NUMERICS_HD void operator()(Index i) const {
         d.v[i] += d.a[i] * (0.5 * dt);
         d.rho[i] += (d.drho[i] - d.drhoOld[i]) * (0.5 * dt);
+        if (d.T) d.T[i] += (d.dT[i] - d.dTOld[i]) * (0.5 * dt);
     }
 };
 
-/// The post-step phase: particle shifting, then containment in the box's walls.
+/// The post-step phase: particle shifting, then containment in the box's walls and out of the
+/// solid bodies.
 template <int Dim>
 struct PostStep {
     Arrays<Dim> d;
@@ -271,6 +354,8 @@ struct PostStep {
     Float diffusion, cap, w0;  // A h c0 dt, 0.1 h, W(0)
     Vector<Dim> lo, hi;
     bool wallLow[Dim], wallHigh[Dim];
+    const sph::Shape<Dim>* bodies;
+    int bodyCount;
     NUMERICS_HD void operator()(Index i) const {
         if (d.kind[i] != fluid) return;
         if (shifting && !sph::atFreeSurface(d.kernelSum[i], d.volume[i], w0) &&
@@ -282,10 +367,13 @@ struct PostStep {
             sph::formulas::shiftParticle<Dim>(d.x[i], d.v[i], d.rho[i], continuity, dr,
                                               d.gradRho[i], columns);
         }
-        if (contain)
+        if (contain) {
             for (int k = 0; k < Dim; ++k)
                 sph::formulas::containInWalls(d.x[i][k], d.v[i][k], lo[k], hi[k], wallLow[k],
                                               wallHigh[k]);
+            for (int b = 0; b < bodyCount; ++b)
+                sph::formulas::containOutsideBody<Dim>(d.x[i], d.v[i], bodies[b]);
+        }
     }
 };
 
@@ -293,11 +381,18 @@ struct PostStep {
 template <int Dim>
 struct StepCriteria {
     Arrays<Dim> d;
-    double *acceleration2, *fluidSpeed2, *viscosity;
+    double *acceleration2, *fluidSpeed2, *viscosity, *diffusivity;
+    bool conduction;
     NUMERICS_HD void operator()(Index i) const {
         acceleration2[i] = normSqr(d.a[i]);
         fluidSpeed2[i] = d.kind[i] == fluid ? normSqr(d.v[i]) : 0.0;
         viscosity[i] = d.nu[i];
+        // k / (rho c): rounding is monotonic, so the largest is the CPU's k / (rho_min c).
+        if (conduction) {
+            const DeviceMaterial& m = d.materials[d.material[i]];
+            diffusivity[i] =
+                d.condition[i] != adiabatic ? m.conductivity / (d.rho[i] * m.heatCapacity) : 0.0;
+        }
     }
 };
 
@@ -334,7 +429,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
           mu_(exec),
           inverseWAtSpacing_(exec),
           maxima_{Buffer<double, Exec>(exec), Buffer<double, Exec>(exec),
-                  Buffer<double, Exec>(exec)},
+                  Buffer<double, Exec>(exec), Buffer<double, Exec>(exec)},
           kind_(exec),
           slip_(exec),
           origin_(exec),
@@ -343,8 +438,19 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
           tempVec_(exec),
           tempFloat_(exec),
           tempInt_(exec),
-          tempIndex_(exec) {
+          tempIndex_(exec),
+          bodies_(exec),
+          T_(exec),
+          dT_(exec),
+          dTOld_(exec),
+          Tb_(exec),
+          heatSource_(exec),
+          material_(exec),
+          condition_(exec),
+          materials_(exec) {
         for (int b = 0; b < Dim; ++b) gradV_.emplace_back(exec);
+        if (!c_.bodies.empty()) bodies_.upload(c_.bodies);
+        if (c_.heat() && !c_.materials.empty()) materials_.upload(c_.materials);
     }
 
     void upload(const ParticleArrays<Dim>& s) override {
@@ -361,8 +467,14 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         for (auto* b : {&gradC_, &gradRho_, &wallDirection_}) b->resize(n_);
         for (auto& b : gradV_) b.resize(n_);
         for (auto* b : {&drhoOld_, &volume_, &pOverRho2_, &mu_, &inverseWAtSpacing_}) b->resize(n_);
-        for (auto& b : maxima_) b.resize(n_);
+        for (int k = 0; k < 3; ++k) maxima_[k].resize(n_);
         active_.resize(n_), atSurface_.resize(n_);
+        heat_ = c_.heat() && !s.T.empty();
+        if (heat_) {
+            T_.upload(s.T), dT_.upload(s.dT), Tb_.upload(s.Tb), heatSource_.upload(s.heatSource);
+            material_.upload(s.material), condition_.upload(s.condition), dTOld_.resize(n_);
+        }
+        if (heat_ && c_.conduction) maxima_[3].resize(n_);
     }
 
     void download(ParticleArrays<Dim>& s) override {
@@ -377,6 +489,11 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         fetch(u_, s.pairVelocity), fetch(gradC_, s.kernelSumGradient);
         fetch(gradRho_, s.densityGradient), fetch(wallDirection_, s.wallDirection);
         for (int b = 0; b < Dim; ++b) fetch(gradV_[b], s.velocityGradient[b]);
+        s.nu.resize(n_), fetch(nu_, s.nu);
+        if (heat_) {
+            s.T.resize(n_), s.dT.resize(n_), s.Tb.resize(n_);
+            fetch(T_, s.T), fetch(dT_, s.dT), fetch(Tb_, s.Tb);
+        }
     }
 
     void evaluate(Float t) override {
@@ -388,6 +505,8 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         }
         sortByCell();
         d = arrays();
+        if (heat_ && c_.temperatureViscosity)
+            exec_.forEach(n_, passes::TemperatureViscosityPass<Dim>{d, c_.viscosityLaw});
         const Vec g = c_.bodyForce ? c_.bodyForce(t) : Vec{};
         const Vec gravityTerm =
             c_.deltaHydrostatic && c_.bodyForce
@@ -399,24 +518,32 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             using K = decltype(kernel);
             const sph::KernelValue<K> value(c_.h);
             if (c_.walls)
-                exec_.forEach(n_, passes::WallPass<Dim, K>{d, grid_.grid(), grid_.start(),
-                                                           grid_.end(), value, c_.eos, g});
+                exec_.forEach(
+                    n_, passes::WallPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(), value,
+                                                 c_.eos, g, heat_ && c_.conduction});
             exec_.forEach(n_, passes::InputsPass<Dim, K>{d, value, c_.w0});
             exec_.forEach(
                 n_, passes::PairPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(),
                                              sph::GradientFactor<K>(c_.h), value, c_.laplacianEta2,
                                              c_.inverseR2Eta2, c_.deltaCoefficient, c_.alphaC0h,
-                                             c_.laminar, gravityTerm, g});
+                                             c_.laminar, gravityTerm, g, heat_ && c_.buoyancy});
+            if (heat_ && c_.conduction)
+                exec_.forEach(
+                    n_, passes::HeatPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(),
+                                                 sph::GradientFactor<K>(c_.h), c_.laplacianEta2});
         });
     }
 
     StepMaxima maxima() override {
-        exec_.forEach(n_, passes::StepCriteria<Dim>{arrays(), maxima_[0].data(), maxima_[1].data(),
-                                                    maxima_[2].data()});
+        const bool conduction = heat_ && c_.conduction;
+        exec_.forEach(n_,
+                      passes::StepCriteria<Dim>{arrays(), maxima_[0].data(), maxima_[1].data(),
+                                                maxima_[2].data(), maxima_[3].data(), conduction});
         StepMaxima m;
         m.acceleration2 = std::max(0.0, exec_.maxOf(maxima_[0].data(), n_));
         m.fluidSpeed2 = std::max(0.0, exec_.maxOf(maxima_[1].data(), n_));
         m.viscosity = c_.laminar ? std::max(0.0, exec_.maxOf(maxima_[2].data(), n_)) : 0.0;
+        m.diffusivity = conduction ? std::max(0.0, exec_.maxOf(maxima_[3].data(), n_)) : 0.0;
         return m;
     }
 
@@ -428,11 +555,20 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
 
     void postStep(Float dt) override {
         if (!c_.shifting && !c_.contain) return;
-        passes::PostStep<Dim> post{
-            arrays(),     c_.shifting, c_.shiftingNormalToWalls,
-            true,         c_.contain,  c_.shiftingCoefficient * c_.h * c_.eos.c0 * dt,
-            0.1 * c_.h,   c_.w0,       c_.domainMin,
-            c_.domainMax, {},          {}};
+        passes::PostStep<Dim> post{arrays(),
+                                   c_.shifting,
+                                   c_.shiftingNormalToWalls,
+                                   true,
+                                   c_.contain,
+                                   c_.shiftingCoefficient * c_.h * c_.eos.c0 * dt,
+                                   0.1 * c_.h,
+                                   c_.w0,
+                                   c_.domainMin,
+                                   c_.domainMax,
+                                   {},
+                                   {},
+                                   bodies_.data(),
+                                   int(c_.bodies.size())};
         for (int k = 0; k < Dim; ++k)
             post.wallLow[k] = c_.wallLow[k], post.wallHigh[k] = c_.wallHigh[k];
         exec_.forEach(n_, post);
@@ -451,7 +587,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             b += f->bytes();
         for (const auto& f : maxima_) b += f.bytes();
         b += kind_.bytes() + slip_.bytes() + tempInt_.bytes() + origin_.bytes() +
-             tempIndex_.bytes() + active_.bytes() + atSurface_.bytes();
+             tempIndex_.bytes() + active_.bytes() + atSurface_.bytes() + bodies_.bytes();
+        for (const auto* f : {&T_, &dT_, &dTOld_, &Tb_, &heatSource_}) b += f->bytes();
+        b += material_.bytes() + condition_.bytes() + materials_.bytes();
         return b;
     }
     const char* execution() const override { return Exec::name(); }
@@ -476,6 +614,10 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         d.atSurface = atSurface_.data(), d.u = u_.data(), d.gradC = gradC_.data();
         d.gradRho = gradRho_.data(), d.wallDirection = wallDirection_.data();
         for (int b = 0; b < Dim; ++b) d.gradV[b] = gradV_[b].data();
+        d.T = heat_ ? T_.data() : nullptr, d.dT = dT_.data(), d.dTOld = dTOld_.data();
+        d.Tb = Tb_.data(), d.heatSource = heatSource_.data();
+        d.material = material_.data(), d.condition = condition_.data();
+        d.materials = materials_.data();
         return d;
     }
 
@@ -495,6 +637,10 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         for (auto* b : {&m_, &rho_, &drho_, &drhoOld_, &p_, &nu_, &kernelSum_, &surfaceNeighbours_})
             permute(*b, tempFloat_);
         permute(kind_, tempInt_), permute(slip_, tempInt_);
+        if (heat_) {
+            for (auto* b : {&T_, &dT_, &dTOld_, &Tb_, &heatSource_}) permute(*b, tempFloat_);
+            permute(material_, tempInt_), permute(condition_, tempInt_);
+        }
         permute(origin_, tempIndex_);
     }
 
@@ -518,7 +664,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     std::vector<Buffer<Vec, Exec>> gradV_;
     Buffer<Float, Exec> m_, rho_, drho_, drhoOld_, p_, nu_, kernelSum_, surfaceNeighbours_, volume_,
         pOverRho2_, mu_, inverseWAtSpacing_;
-    std::array<Buffer<double, Exec>, 3> maxima_;
+    std::array<Buffer<double, Exec>, 4> maxima_;
     Buffer<int, Exec> kind_, slip_;
     Buffer<Index, Exec> origin_;
     Buffer<char, Exec> active_, atSurface_;
@@ -526,6 +672,11 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     Buffer<Float, Exec> tempFloat_;
     Buffer<int, Exec> tempInt_;
     Buffer<Index, Exec> tempIndex_;
+    Buffer<sph::Shape<Dim>, Exec> bodies_;
+    bool heat_ = false;  // temperature on the device (the config's heat and the particles')
+    Buffer<Float, Exec> T_, dT_, dTOld_, Tb_, heatSource_;
+    Buffer<int, Exec> material_, condition_;
+    Buffer<DeviceMaterial, Exec> materials_;
     std::vector<unsigned char> tempHost_;
     std::vector<Index> originHost_;
 };

@@ -163,6 +163,20 @@ template <int Dim>
 EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
                                        const FluidGeometry<Dim>& geometry);
 
+/// The material table of a model's particles: its materials, or water of its rest density,
+/// sound speed and viscosities when it names none.
+template <int Dim>
+std::vector<std::shared_ptr<IMaterial>> fluidMaterials(const FluidModel<Dim>& model) {
+    if (!model.materials.empty()) return model.materials;
+    auto water = std::make_shared<Material>("water");
+    water->params()
+        .set("density", model.restDensity)
+        .set("sound_speed", model.c0())
+        .set("viscosity", model.viscosity)
+        .set("artificial_viscosity", model.artificialViscosity);
+    return {water};
+}
+
 /// The particles of a geometry with every quantity the fluid terms use. Masses are
 /// rho0 dx^Dim, densities rho0, pressures p(rho0), velocities from the fluid regions.
 template <int Dim>
@@ -209,17 +223,7 @@ Storage<Dim> makeFluidStorage(const FluidModel<Dim>& model, const FluidGeometry<
     s.template insert<int>(FluidId::WALL_SLIP, OrderEnum::ZERO, std::move(slip));
     s.template insert<Float>(FluidId::KINEMATIC_VISCOSITY, OrderEnum::ZERO, model.viscosity);
     ensureParticleIds(s);
-    if (model.materials.empty()) {
-        auto water = std::make_shared<Material>("water");
-        water->params()
-            .set("density", model.restDensity)
-            .set("sound_speed", model.c0())
-            .set("viscosity", model.viscosity)
-            .set("artificial_viscosity", model.artificialViscosity);
-        s.materials().push_back(water);
-    } else {
-        s.materials() = model.materials;
-    }
+    s.materials() = fluidMaterials(model);
     // Quantities of optional and extra terms (shifting, heat...), with their defaults.
     makeFluidEquations(model, geometry).create(s, *s.materials().front());
     return s;

@@ -45,9 +45,6 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
                                             " runs on the CPU back end only (--backend cpu)");
     };
     if (plugins) refuse("plugins", "a plugin's equation terms");
-    if (scene.physics.heat) refuse("physics.heat", "heat conduction");
-    if (setup.model.heat.any()) refuse("physics.heat", "heat transfer (buoyancy included)");
-    if (!scene.bodies.empty()) refuse("bodies", "a scene with solid bodies");
     if (!scene.emitters.empty()) refuse("emitters", "a scene with emitters");
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)

@@ -5,8 +5,9 @@
 
 --mode host (label device, every build): the device step runs on the host execution
   (NUMERICS_TEST_DEVICE_EXECUTION=host: the same functors the CUDA kernels run, in loops), so
-  the apps' use of it is tested without a GPU: short runs of the 2D and 3D dam breaks against the
-  CPU back end, two runs bitwise identical, a restart CPU -> cuda -> CPU, and the refusals.
+  the apps' use of it is tested without a GPU: short runs of the 2D and 3D dam breaks and of the
+  2D default scene (bodies and heat) against the CPU back end, two runs bitwise identical, a
+  restart CPU -> cuda -> CPU, and the refusals.
 --mode gpu (label gpu): the same on the GPU, longer, with the figures within 1 %; exits 77
   (ctest: skipped) with the reason when the build has no CUDA back end or there is no GPU.
 """
@@ -72,12 +73,20 @@ def compare_runs(gpu_dir, cpu_dir, tolerance, same_steps):
     scale = max(abs(x) for x in cc["momentum"]["end"] + [1e-300]) + 1e-3 * cc["mass"]["end"]
     for k, (a, b) in enumerate(zip(cg["momentum"]["end"], cc["momentum"]["end"])):
         ok &= close(f"momentum[{k}]", a, b, tolerance, scale)
+    tg, tc = cg["thermal_energy"], cc["thermal_energy"]
+    if tc["end"] != tc["start"]:  # heat: the change of the fluid's thermal energy
+        ok &= close("thermal energy change", tg["end"] - tg["start"], tc["end"] - tc["start"], tolerance)
     # The fluid's front: the largest x of a fluid particle (the dam break's surge).
     hg, pg = particles(gpu_dir, last_csv(gpu_dir))
     hc, pc = particles(cpu_dir, last_csv(cpu_dir))
     kind = hg.index("kind")
     front = lambda p: max(r[0] for r in p.values() if r[kind] == 0)
     ok &= close("front (largest fluid x)", front(pg), front(pc), tolerance)
+    if "temperature" in hc:  # every particle's temperature, against the range of temperatures
+        t = hc.index("temperature")
+        span = max(r[t] for r in pc.values()) - min(r[t] for r in pc.values())
+        worst = max(abs(pg[i][hg.index("temperature")] - pc[i][t]) for i in pc)
+        ok &= close("largest temperature difference", worst, 0.0, tolerance, span)
     return ok
 
 
@@ -98,6 +107,7 @@ def main():
              "--set", 'output.formats=["csv"]']
     s2 = os.path.join(a.scenes, "validation", "dam_break_martin_moyce.json")
     s3 = os.path.join(a.scenes, "dam_break_3d.json")
+    hot_cold = os.path.join(a.scenes, "dam_break_hot_cold_2d.json")  # fluid_sim's default
 
     if not host:
         version = run(a.fluid_sim, ["--version"]).stdout
@@ -118,11 +128,13 @@ def main():
     # on the GPU (its own pow and libm) within 1 %.
     cases = [("2D dam break (Martin & Moyce)", a.fluid_sim, s2, "0.05" if host else "0.5", []),
              ("3D dam break", a.fluid_sim_3d, s3, "0.05" if host else "0.5",
-              ["--set", "particles.spacing=0.08"] if host else [])]
+              ["--set", "particles.spacing=0.08"] if host else []),
+             ("2D default scene (bodies, heat)", a.fluid_sim, hot_cold, "0.01" if host else "0.2", [])]
     tolerance = 1e-6 if host else 1e-2
     for name, app, scene, end, extra in cases:
         print(name + ", t = " + end + " s:")
-        g, c = os.path.join(work, name[:2] + "_cuda"), os.path.join(work, name[:2] + "_cpu")
+        tag = name.split(" ")[0] + ("_default" if "default" in name else "")
+        g, c = os.path.join(work, tag + "_cuda"), os.path.join(work, tag + "_cpu")
         run(app, [scene, "--backend", "cuda", "--end-time", end, "--out", g] + quiet + extra, env)
         run(app, [scene, "--backend", "cpu", "--end-time", end, "--out", c] + quiet + extra)
         ok &= compare_runs(g, c, tolerance, same_steps=host)
@@ -154,10 +166,12 @@ def main():
     if host:
         # What the back end does not run: one line naming the scene key, exit 5.
         print("refusals:")
-        heat = run(a.fluid_sim, ["--backend", "cuda", "--out", os.path.join(work, "heat")] + quiet,
-                   env, check=False)
-        good = heat.returncode == 5 and "physics.heat" in heat.stderr and len(heat.stderr.strip().splitlines()) == 1
-        print(f"  {'ok  ' if good else 'FAIL'} heat: exit {heat.returncode}: {heat.stderr.strip()}")
+        tank = os.path.join(a.scenes, "validation", "hydrostatic_tank_2d.json")
+        opened = run(a.fluid_sim, [tank, "--backend", "cuda", "--out", os.path.join(work, "open")] + quiet,
+                     env, check=False)
+        good = (opened.returncode == 5 and "boundaries.y_max.type" in opened.stderr
+                and len(opened.stderr.strip().splitlines()) == 1)
+        print(f"  {'ok  ' if good else 'FAIL'} open side: exit {opened.returncode}: {opened.stderr.strip()}")
         ok &= good
         sym = run(a.fluid_sim, [s2, "--backend", "cuda", "--set", "particles.evaluation=symmetric",
                                 "--out", os.path.join(work, "sym")] + quiet, env, check=False)

@@ -33,14 +33,8 @@ class ParticleContainment : public IEquationTerm<Dim> {
                 for (int k = 0; k < Dim; ++k)
                     formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
                                              g.hasWall(k, 0), g.hasWall(k, 1));
-                for (const SolidBody<Dim>& body : g.bodies) {
-                    const Float d = body.shape.signedDistance(x[i]);
-                    if (d >= 0) continue;
-                    const Vec n = body.shape.outwardNormal(x[i]);
-                    x[i] -= n * (2 * d);
-                    const Float vn = dot(v[i], n);
-                    if (vn < 0) v[i] -= n * vn;
-                }
+                for (const SolidBody<Dim>& body : g.bodies)
+                    formulas::containOutsideBody<Dim>(x[i], v[i], body.shape);
             }
         });
     }

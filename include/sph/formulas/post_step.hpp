@@ -3,6 +3,7 @@
 #pragma once
 
 #include "sph/host_device.hpp"
+#include "sph/setup/shapes.hpp"
 #include "sph/types.hpp"
 
 namespace num::sph::formulas {
@@ -35,6 +36,18 @@ NUMERICS_HD_INLINE void containInWalls(Float& x, Float& v, Float lo, Float hi, b
         x = hd::max(2 * hi - x, lo);
         v = hd::min(v, 0.0);
     }
+}
+
+/// A fluid particle against a solid body's shape: a particle inside is reflected back across
+/// the nearest surface, the velocity component into the body removed.
+template <int Dim>
+NUMERICS_HD void containOutsideBody(Vector<Dim>& x, Vector<Dim>& v, const Shape<Dim>& body) {
+    const Float d = body.signedDistance(x);
+    if (d >= 0) return;
+    const Vector<Dim> n = body.outwardNormal(x);
+    x -= n * (2 * d);
+    const Float vn = dot(v, n);
+    if (vn < 0) v -= n * vn;
 }
 
 }  // namespace num::sph::formulas

@@ -1,11 +1,14 @@
 // Shapes for particle set-up and for keeping particles out of solids: an axis-aligned box and a
-// ball (a circle in 2D, a sphere in 3D), written once for every dimension.
+// ball (a circle in 2D, a sphere in 3D), written once for every dimension. The signed distance
+// and the outward normal are callable on host and device (containment in bodies, formulas/
+// post_step.hpp).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "sph/host_device.hpp"
 #include "sph/types.hpp"
 
 namespace num::sph {
@@ -32,20 +35,20 @@ struct Shape {
     }
 
     /// Signed distance to the surface: negative inside, positive outside.
-    Float signedDistance(const Vec& x) const {
+    NUMERICS_HD Float signedDistance(const Vec& x) const {
         if (type == Type::BALL) return norm(x - center) - radius;
         Float outside = 0, inside = -std::numeric_limits<Float>::infinity();
         for (int k = 0; k < Dim; ++k) {
-            const Float d = std::max(min[k] - x[k], x[k] - max[k]);
+            const Float d = hd::max(min[k] - x[k], x[k] - max[k]);
             outside += d > 0 ? d * d : 0;
-            inside = std::max(inside, d);
+            inside = hd::max(inside, d);
         }
-        return outside > 0 ? std::sqrt(outside) : inside;
+        return outside > 0 ? hd::sqrt(outside) : inside;
     }
-    bool contains(const Vec& x) const { return signedDistance(x) < 0; }
+    NUMERICS_HD bool contains(const Vec& x) const { return signedDistance(x) < 0; }
 
     /// Unit normal of the surface nearest to x, pointing out of the shape.
-    Vec outwardNormal(const Vec& x) const {
+    NUMERICS_HD Vec outwardNormal(const Vec& x) const {
         if (type == Type::BALL) {
             const Vec d = x - center;
             const Float r = norm(d);
@@ -55,7 +58,7 @@ struct Shape {
         }
         if (!contains(x)) {  // outside: direction from the nearest box point
             Vec d{};
-            for (int k = 0; k < Dim; ++k) d[k] = x[k] - std::clamp(x[k], min[k], max[k]);
+            for (int k = 0; k < Dim; ++k) d[k] = x[k] - hd::min(hd::max(x[k], min[k]), max[k]);
             return d / norm(d);
         }
         int best = 0;

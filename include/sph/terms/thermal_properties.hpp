@@ -6,6 +6,7 @@
 // "thermal_expansion" beta [1/K] and "reference_temperature" T0 of each material.
 #pragma once
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,16 +38,16 @@ struct ThermalMaterial {
     Float diffusivity() const { return conductivity / (density * heatCapacity); }
 };
 
-/// The thermal parameters of every material in the storage's table, indexed like it.
-template <int Dim>
-std::vector<ThermalMaterial> thermalMaterials(const Storage<Dim>& storage) {
-    if (storage.materials().empty())
+/// The thermal parameters of every material of a material table, indexed like it.
+inline std::vector<ThermalMaterial> thermalMaterials(
+    const std::vector<std::shared_ptr<IMaterial>>& materials) {
+    if (materials.empty())
         throw std::invalid_argument(
             "heat terms: the storage has no material table (add a Material to "
             "storage.materials(); QuantityId::MATERIAL indexes it)");
     std::vector<ThermalMaterial> out;
-    out.reserve(storage.materials().size());
-    for (const auto& m : storage.materials()) {
+    out.reserve(materials.size());
+    for (const auto& m : materials) {
         if (!m) throw std::invalid_argument("heat terms: empty entry in the material table");
         const ParameterSet& p = m->params();
         ThermalMaterial t;
@@ -58,6 +59,12 @@ std::vector<ThermalMaterial> thermalMaterials(const Storage<Dim>& storage) {
         out.push_back(t);
     }
     return out;
+}
+
+/// The thermal parameters of every material in the storage's table, indexed like it.
+template <int Dim>
+std::vector<ThermalMaterial> thermalMaterials(const Storage<Dim>& storage) {
+    return thermalMaterials(storage.materials());
 }
 
 /// Material index of every particle (0 when the storage has no QuantityId::MATERIAL), checked

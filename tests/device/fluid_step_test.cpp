@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 
 #include "device/fluid_run.hpp"
@@ -29,6 +30,12 @@ struct Case {
     FluidModel<Dim> model;
     FluidGeometry<Dim> geometry;
     RunSettings settings;
+    std::function<void(Storage<Dim>&)> prepare;  ///< changes to the particles made (or none)
+    Storage<Dim> storage() const {
+        Storage<Dim> s = makeFluidStorage(model, geometry, settings);
+        if (prepare) prepare(s);
+        return s;
+    }
 };
 
 /// A dam break: a block of water in the corner of a closed tank, gravity, the default numerics
@@ -164,7 +171,7 @@ void compareOneEvaluation(const Case<Dim>& c) {
     const bool periodicX = c.geometry.domain.periodic[0];
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
     ASSERT_EQ(device::unsupported(c.model, c.geometry, c.settings), "");
-    Storage<Dim> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    Storage<Dim> storage = c.storage();
     sortAsTheDevice(storage, config);
     SequentialScheduler scheduler;
     Solver<Dim> solver(scheduler, c.settings, makeFluidEquations(c.model, c.geometry),
@@ -240,6 +247,22 @@ TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithHeat2D) {
     compareOneEvaluation(heatedDamBreak<2>(ThermalCondition::FIXED_TEMPERATURE,
                                            ThermalCondition::FIXED_TEMPERATURE));
 }
+/// A heater plate on the floor (HEAT_FLUX: a heat source on the wall particles) and the
+/// temperature-dependent viscosity of water (Vogel's law).
+Case<2> heatedFromBelow() {
+    Case<2> c = heatedDamBreak<2>(ThermalCondition::ADIABATIC, ThermalCondition::FIXED_TEMPERATURE);
+    c.model.heat.viscosityLaw.law = ViscosityLaw::WATER_VOGEL;
+    c.prepare = [](Storage<2>& s) {
+        const auto x = s.getValue<Vector<2>>(QuantityId::POSITION);
+        const auto kind = s.getValue<int>(QuantityId::KIND);
+        ThermalBoundary<2>::setHeatFlux(
+            s, 5e4, 0.8, [&](Size i) { return kind[i] == int(ParticleKind::WALL) && x[i][1] < 0; });
+    };
+    return c;
+}
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithAHeaterAndWaterViscosity) {
+    compareOneEvaluation(heatedFromBelow());
+}
 TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithHeat3D) {
     compareOneEvaluation(
         heatedDamBreak<3>(ThermalCondition::ADIABATIC, ThermalCondition::CONDUCTING));
@@ -249,7 +272,7 @@ TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithHeat3D) {
 template <int Dim>
 void compareShortRun(const Case<Dim>& c, int steps) {
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
-    Storage<Dim> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    Storage<Dim> storage = c.storage();
     device::DeviceRun<Dim> deviceRun(std::make_unique<device::HostFluidStep<Dim>>(config), config);
     deviceRun.upload(storage, false);
     SequentialScheduler scheduler;
@@ -268,8 +291,7 @@ void compareShortRun(const Case<Dim>& c, int steps) {
     const ParticleArrays<Dim> cpu = stateOf(storage), dev = stateOf(fromDevice);
     const double dx = c.geometry.spacing;
     double moved = 0;
-    const ParticleArrays<Dim> start =
-        device::particleArrays(makeFluidStorage(c.model, c.geometry, c.settings));
+    const ParticleArrays<Dim> start = device::particleArrays(c.storage());
     moved = largestDifference(cpu.x, start.x);
     EXPECT_GT(moved, 1e-3 * dx);  // the particles moved
     // Round-off grows over the steps, but stays far below what the flow moved them.
@@ -304,13 +326,16 @@ TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRunWithHeat3D) {
     compareShortRun(heatedDamBreak<3>(ThermalCondition::ADIABATIC, ThermalCondition::CONDUCTING),
                     8);
 }
+TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRunWithAHeater) {
+    compareShortRun(heatedFromBelow(), 20);
+}
 /// Conduction fast enough that the diffusion limit sets the step: the same limit, the same
 /// steps.
 TEST(DeviceFluidStep, TheDiffusionLimitIsTheCpuRunsLimit) {
     const Case<2> c =
         heatedDamBreak<2>(ThermalCondition::FIXED_TEMPERATURE, ThermalCondition::CONDUCTING, true);
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
-    Storage<2> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    Storage<2> storage = c.storage();
     device::DeviceRun<2> deviceRun(std::make_unique<device::HostFluidStep<2>>(config), config);
     deviceRun.upload(storage, false);
     SequentialScheduler scheduler;
@@ -333,7 +358,7 @@ TEST(DeviceFluidStep, ContainmentKeepsFluidOutOfBodies) {
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
     ASSERT_EQ(config.bodies.size(), 1u);
     ASSERT_TRUE(config.contain);
-    Storage<2> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    Storage<2> storage = c.storage();
     const Shape<2>& ball = c.geometry.bodies[0].shape;
     auto x = storage.getValue<Vector<2>>(QuantityId::POSITION);
     auto v = storage.getDt<Vector<2>>(QuantityId::POSITION);
@@ -364,7 +389,7 @@ TEST(DeviceFluidStep, ContainmentKeepsFluidOutOfBodies) {
 template <int Dim>
 ParticleArrays<Dim> deviceRunOf(const Case<Dim>& c, int steps) {
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
-    Storage<Dim> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    Storage<Dim> storage = c.storage();
     device::DeviceRun<Dim> run(std::make_unique<device::HostFluidStep<Dim>>(config), config);
     run.upload(storage, false);
     for (int k = 0; k < steps; ++k) run.step();
@@ -387,7 +412,7 @@ TEST(DeviceFluidStep, TwoRunsAreBitwiseIdentical) {
 TEST(DeviceFluidStep, ARestartFromTheDownloadedStateContinuesBitwise) {
     const Case<2> c = damBreak<2>();
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
-    Storage<2> storage = makeFluidStorage(c.model, c.geometry, c.settings);
+    Storage<2> storage = c.storage();
     device::DeviceRun<2> first(std::make_unique<device::HostFluidStep<2>>(config), config);
     first.upload(storage, false);
     for (int k = 0; k < 6; ++k) first.step();

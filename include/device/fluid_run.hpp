@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "device/fluid_step.hpp"
+#include "device/fluid_step_on.hpp"
 #include "sph/defaults.hpp"
 #include "sph/fluid_model.hpp"
 #include "sph/scheduler.hpp"
@@ -175,23 +175,7 @@ void copyBack(const ParticleArrays<Dim>& p, sph::Storage<Dim>& s) {
 
 /// The device step on the host execution (tests; a reference for the CUDA one).
 template <int Dim>
-class HostFluidStep final : public IDeviceFluid<Dim> {
-  public:
-    explicit HostFluidStep(FluidStepConfig<Dim> config) : step_(std::move(config), exec_) {}
-    void upload(const ParticleArrays<Dim>& p) override { step_.upload(p); }
-    void download(ParticleArrays<Dim>& p) override { step_.download(p); }
-    void evaluate(Float t) override { step_.evaluate(t); }
-    StepMaxima maxima() override { return step_.maxima(); }
-    void advance(Float t, Float dt) override { step_.advance(t, dt); }
-    void postStep(Float dt) override { step_.postStep(dt); }
-    std::size_t size() const override { return step_.size(); }
-    std::size_t bytes() const override { return step_.bytes(); }
-    const char* execution() const override { return step_.execution(); }
-
-  private:
-    HostExecution exec_;
-    DeviceFluidStep<Dim, HostExecution> step_;
-};
+using HostFluidStep = FluidStepOn<Dim, HostExecution>;
 
 /// sph::Run's step over a device step: particles uploaded once, copied back only when asked
 /// (outputs, probes, checkpoints).

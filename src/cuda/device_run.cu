@@ -4,7 +4,7 @@
 
 #include "device/backend.hpp"
 #include "device/cuda_execution.cuh"
-#include "device/fluid_step.hpp"
+#include "device/fluid_step_on.hpp"
 
 namespace num::device {
 
@@ -25,33 +25,9 @@ std::string cudaDeviceName() {
            std::to_string(p.minor) + ")";
 }
 
-namespace {
-template <int Dim>
-class CudaFluidStep final : public IDeviceFluid<Dim> {
-  public:
-    explicit CudaFluidStep(const FluidStepConfig<Dim>& config) : step_(config, exec_) {}
-    void upload(const ParticleArrays<Dim>& p) override { step_.upload(p); }
-    void download(ParticleArrays<Dim>& p) override {
-        exec_.synchronize();
-        step_.download(p);
-    }
-    void evaluate(Float t) override { step_.evaluate(t); }
-    StepMaxima maxima() override { return step_.maxima(); }
-    void advance(Float t, Float dt) override { step_.advance(t, dt); }
-    void postStep(Float dt) override { step_.postStep(dt); }
-    std::size_t size() const override { return step_.size(); }
-    std::size_t bytes() const override { return step_.bytes(); }
-    const char* execution() const override { return step_.execution(); }
-
-  private:
-    CudaExecution exec_;
-    DeviceFluidStep<Dim, CudaExecution> step_;
-};
-}  // namespace
-
 template <int Dim>
 std::unique_ptr<IDeviceFluid<Dim>> makeCudaFluidStep(const FluidStepConfig<Dim>& config) {
-    return std::make_unique<CudaFluidStep<Dim>>(config);
+    return std::make_unique<FluidStepOn<Dim, CudaExecution>>(config);
 }
 
 template std::unique_ptr<IDeviceFluid<2>> makeCudaFluidStep<2>(const FluidStepConfig<2>&);

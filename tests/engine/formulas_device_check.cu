@@ -6,6 +6,7 @@
 #include "sph/formulas/fluid_particles.hpp"
 #include "sph/formulas/heat_pairs.hpp"
 #include "sph/formulas/pair_geometry.hpp"
+#include "sph/formulas/post_step.hpp"
 #include "sph/formulas/wall_condition.hpp"
 
 namespace {
@@ -61,6 +62,12 @@ __global__ void everyFormula(const double* in, double* out,
     if (sums.any())
         s += wallPressure(sums, vj) + wallVelocity(sums, vi, true)[0] +
              wallTemperature(sums, in[1], true);
+    Vec x = vi, v = vj;  // containment: the box's walls and a body (a ball)
+    containInWalls(x[0], v[0], 0.0, 1.0, true, true);
+    Shape<Dim> ball;
+    ball.type = Shape<Dim>::Type::BALL, ball.center = dx, ball.radius = 0.1;
+    containOutsideBody<Dim>(x, v, ball);
+    s += x[0] + v[0];
     out[0] = s + a[0];
 }
 

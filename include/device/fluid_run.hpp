@@ -16,6 +16,7 @@
 #include "sph/defaults.hpp"
 #include "sph/fluid_model.hpp"
 #include "sph/scheduler.hpp"
+#include "sph/timestepping.hpp"
 
 namespace num::device {
 
@@ -216,18 +217,12 @@ class DeviceRun {
     /// One step, at most up to tEnd (sph::Run::step). Returns the step taken.
     Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
         if (!primed_) prime();
-        const sph::TimeStepLimits limits = timeStepLimits();
-        Float dt = limits.dt();
-        criterion_ = limits.criterion();
-        if (!(dt < std::numeric_limits<Float>::infinity()))
-            throw std::runtime_error(
-                "no time-step criterion applies (no forces, no sound speed): set dt_fixed or "
-                "dt_max");
-        const bool last = time_ + dt >= tEnd;
-        if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
+        const sph::PlannedStep planned = sph::planStep(timeStepLimits(), time_, tEnd);
+        const Float dt = planned.dt;
+        criterion_ = planned.criterion;
         limits_.reset();
         fluid_->advance(time_, dt);
-        time_ = last ? tEnd : time_ + dt;
+        time_ = planned.last ? tEnd : time_ + dt;
         fluid_->postStep(dt);
         ++steps_;
         lastDt_ = dt;

@@ -179,6 +179,24 @@ void reorderByCell(Storage<Dim>& s, Solver<Dim>& solver) {
 /// (setTime, markPrimed) exist once.
 /// A step is: the integrator (its evaluations have no side effects on the state), then the
 /// post-step phase (Solver::postStep: particle shifting, containment, bookkeeping) once.
+/// The step a run takes from time t towards tEnd: the limits' dt, shortened to land on tEnd
+/// ("end time"); last when it reaches tEnd. Shared by sph::Run and the device run.
+struct PlannedStep {
+    Float dt;
+    bool last;
+    std::string criterion;
+};
+inline PlannedStep planStep(const TimeStepLimits& limits, Float t, Float tEnd) {
+    PlannedStep p{limits.dt(), false, limits.criterion()};
+    if (!(p.dt < std::numeric_limits<Float>::infinity()))
+        throw std::runtime_error(
+            "no time-step criterion applies (no forces, no sound speed): set dt_fixed or "
+            "dt_max");
+    p.last = t + p.dt >= tEnd;
+    if (t + p.dt > tEnd) p.dt = tEnd - t, p.criterion = "end time";
+    return p;
+}
+
 template <int Dim>
 class Run {
   public:
@@ -205,17 +223,11 @@ class Run {
             reorderByCell(storage_, solver_);
         }
         particlesChanged_ = false;
-        const TimeStepLimits limits = solver_.timeStepLimits(storage_);
-        Float dt = limits.dt();
-        criterion_ = limits.criterion();
-        if (!(dt < std::numeric_limits<Float>::infinity()))
-            throw std::runtime_error(
-                "no time-step criterion applies (no forces, no sound speed): set dt_fixed or "
-                "dt_max");
-        const bool last = time_ + dt >= tEnd;
-        if (time_ + dt > tEnd) dt = tEnd - time_, criterion_ = "end time";
+        const PlannedStep planned = planStep(solver_.timeStepLimits(storage_), time_, tEnd);
+        const Float dt = planned.dt;
+        criterion_ = planned.criterion;
         integrator_.step(solver_, storage_, time_, dt);
-        time_ = last ? tEnd : time_ + dt;
+        time_ = planned.last ? tEnd : time_ + dt;
         solver_.postStep(storage_, time_, dt);
         ++steps_;
         lastDt_ = dt;

@@ -2,7 +2,8 @@
 // one table per choice, from which its dispatch, the values settings and scenes allow and the
 // error texts that list them all come. A table is a std::tuple of entries when each alternative
 // is a type (kernels, integrators: the dispatch instantiates each at compile time), or a
-// std::array of Choice<Value> when it is a value; every entry has a `name` and a `help` line.
+// std::array of Choice<Value> when it is a value; every entry has a `name` and a `help` line
+// (which the setting's help lists).
 #pragma once
 
 #include <cstddef>
@@ -32,6 +33,27 @@ std::vector<std::string> choiceNames(const Table& table) {
         table);
 }
 
+/// "a, b or c": the names as an error text lists them.
+inline std::string choiceList(const std::vector<std::string>& names) {
+    std::string list;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+    return list;
+}
+
+/// "a (help of a), b (help of b) or c (help of c)": the names with their help, as a setting's
+/// help lists them.
+template <class Table>
+std::string choiceHelp(const Table& table) {
+    std::vector<std::string> lines = std::apply(
+        [](const auto&... entry) {
+            return std::vector<std::string>{std::string(entry.name) + " (" +
+                                            std::string(entry.help) + ")" ...};
+        },
+        table);
+    return choiceList(lines);
+}
+
 /// The position of `name` in the table, if it is there.
 template <class Table>
 constexpr std::optional<std::size_t> choiceIndex(const Table& table, std::string_view name) {
@@ -43,14 +65,6 @@ constexpr std::optional<std::size_t> choiceIndex(const Table& table, std::string
     };
     std::apply([&](const auto&... entry) { (visit(entry), ...); }, table);
     return found;
-}
-
-/// "a, b or c": the names as an error text lists them.
-inline std::string choiceList(const std::vector<std::string>& names) {
-    std::string list;
-    for (std::size_t i = 0; i < names.size(); ++i)
-        list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-    return list;
 }
 
 /// The position of `name` in the table; else a SettingsError "unknown <what> '<name>' (expected

@@ -166,14 +166,13 @@ class RunSettings : public ParameterSet {
     static std::vector<SettingSpec> schema() {
         const double inf = std::numeric_limits<double>::infinity();
         return {
-            {"kernel", std::string(defaults::kernel), "smoothing kernel", 0, 0,
-             choiceNames(kernelTable)},
+            {"kernel", std::string(defaults::kernel),
+             "smoothing kernel: " + choiceHelp(kernelTable), 0, 0, choiceNames(kernelTable)},
             {"smoothing_length", defaults::smoothingLength, "smoothing length h [m]", 1e-300, inf},
             {"threads", std::int64_t(defaults::threads), "worker threads of the parallel scheduler",
              1, 1024},
             {"evaluation", std::string(defaults::evaluation),
-             "pair evaluation: asymmetric (gather per particle) or symmetric (each pair once)", 0,
-             0, choiceNames(evaluationTable)},
+             "pair evaluation: " + choiceHelp(evaluationTable), 0, 0, choiceNames(evaluationTable)},
             {"blocks", std::int64_t(defaults::blocks),
              "particle blocks of the symmetric pair loop (at least 8 per thread when asymmetric); "
              "results may depend on it, never on threads",

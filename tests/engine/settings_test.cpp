@@ -110,6 +110,8 @@ TEST(Choices, EveryKernelDispatches) {
     RunSettings s;
     expectTheMessageListsTheTable(messageOf([&] { kernelFromName("gauss"); }), kernelTable);
     expectTheMessageListsTheTable(messageOf([&] { s.set("kernel", "gauss"); }), kernelTable);
+    expectTheMessageListsTheTable(s.specs().at("kernel").help, kernelTable);
+    expectTheMessageListsTheTable(s.specs().at("evaluation").help, evaluationTable);
 }
 
 TEST(Choices, EveryIntegratorDispatches) {

@@ -121,7 +121,10 @@ std::string At::string() const {
 }
 
 std::string At::choice(std::initializer_list<const char*> choices) const {
-    std::vector<std::string> names(choices.begin(), choices.end());
+    return choice(std::vector<std::string>(choices.begin(), choices.end()));
+}
+
+std::string At::choice(const std::vector<std::string>& names) const {
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
     if (!v.is_string()) fail("one of " + list);

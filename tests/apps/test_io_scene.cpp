@@ -3,7 +3,12 @@
 
 #include <filesystem>
 
+#include "io/density_choice.hpp"
 #include "io/scene_loader.hpp"
+#include "sph/equation_of_state_choice.hpp"
+#include "sph/evaluation_mode.hpp"
+#include "sph/integrator_choice.hpp"
+#include "sph/kernel_table.hpp"
 
 using namespace num::io;
 
@@ -86,4 +91,41 @@ TEST(SceneReader, PairLoopEvaluation) {
     EXPECT_EQ(readScene<2>(doc).evaluation, "symmetric");
     doc.set("particles.evaluation=\"pairs\"");
     EXPECT_THROW(readScene<2>(doc), AppError);
+}
+
+/// The message of readScene's refusal of `doc` (empty if it was accepted).
+std::string refusal(const SceneDocument& doc) {
+    try {
+        readScene<2>(doc);
+    } catch (const AppError& e) {
+        EXPECT_EQ(e.code(), ExitCode::SCENE);
+        return e.what();
+    }
+    ADD_FAILURE() << "accepted";
+    return "";
+}
+
+// Every choice's table (sph/choice_table.hpp) gives the values the reader accepts and lists them
+// all when it refuses one.
+template <class Table>
+void expectTheTableDrivesTheChoice(const std::string& key, const Table& table) {
+    SCOPED_TRACE(key);
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    for (const std::string& name : num::sph::choiceNames(table)) {
+        doc.set(key + "=\"" + name + "\"");
+        EXPECT_NO_THROW(readScene<2>(doc)) << name;
+    }
+    doc.set(key + "=\"no_such_choice\"");
+    const std::string message = refusal(doc);
+    EXPECT_NE(message.find(key), std::string::npos) << message;
+    for (const std::string& name : num::sph::choiceNames(table))
+        EXPECT_NE(message.find("\"" + name + "\""), std::string::npos) << message;
+}
+
+TEST(SceneReader, TheTablesDriveTheChoices) {
+    expectTheTableDrivesTheChoice("particles.kernel", num::sph::kernelTable);
+    expectTheTableDrivesTheChoice("particles.evaluation", num::sph::evaluationTable);
+    expectTheTableDrivesTheChoice("time.integrator", num::sph::integratorTable);
+    expectTheTableDrivesTheChoice("physics.eos", num::sph::eosTable);
+    expectTheTableDrivesTheChoice("physics.density", densityTable);
 }

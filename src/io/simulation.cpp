@@ -10,6 +10,7 @@
 #include "run_checks.hpp"
 #include "run_limits.hpp"
 #include "run_outputs.hpp"
+#include "sph/evaluation_mode.hpp"
 
 namespace num::io {
 
@@ -58,9 +59,10 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
     checkRunLimits(p.scene, setup, p.options.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(p.scene, setup);
     checkInitialState(p.scene, setup, initial);
-    if (p.comm.size() > 1 && setup.settings.template get<std::string>("evaluation") == "symmetric")
+    if (p.comm.size() > 1 && sph::evaluationFromName(setup.settings.template get<std::string>(
+                                 "evaluation")) == sph::Evaluation::SYMMETRIC)
         throw AppError(ExitCode::USAGE,
-                       "numerics.evaluation \"symmetric\" cannot run on several processes: "
+                       "particles.evaluation \"symmetric\" cannot run on several processes: "
                        "remove it (the default gathers) or run without mpirun");
     // The process that owns each particle (parallel/domain_decomposition.hpp); -1 until the
     // particles are distributed.

@@ -11,7 +11,8 @@
 // registers its writer under the name). A new format is its file there and its line here.
 #define NUMERICS_BUILT_IN_FORMATS(FORMAT) \
     FORMAT(vtu)                           \
-    FORMAT(csv)
+    FORMAT(csv)                           \
+    /* the end of the table */
 
 namespace num::io {
 

@@ -197,98 +197,106 @@ template void writeCsv<3>(const std::string&, const sph::Storage<3>&,
 
 namespace num::io {
 
-void writeParaviewScript(const std::string& path, const ParaviewView& v) {
-    // 2D: from +z onto the plane; 3D: from above and aside, the up axis upwards.
-    std::string camera = "[0, 0, 1]", up = "[0, 1, 0]";
-    if (v.dimension == 3) {
-        const int a1 = (v.upAxis + 1) % 3, a2 = (v.upAxis + 2) % 3;
-        double c[3], u[3] = {0, 0, 0};
-        c[v.upAxis] = 0.9, c[a1] = 1.0, c[a2] = -1.4, u[v.upAxis] = 1;
-        camera = "[" + formatted("%.17g", c[0]) + ", " + formatted("%.17g", c[1]) + ", " +
-                 formatted("%.17g", c[2]) + "]";
-        up = "[" + formatted("%.17g", u[0]) + ", " + formatted("%.17g", u[1]) + ", " +
-             formatted("%.17g", u[2]) + "]";
-    }
+namespace {
+
+/// "[x, y, z]" with every digit.
+std::string pythonList(const double (&a)[3]) {
+    return "[" + formatted("%.17g", a[0]) + ", " + formatted("%.17g", a[1]) + ", " +
+           formatted("%.17g", a[2]) + "]";
+}
+
+/// How to run the script, and the run's figures it uses.
+std::string paraviewHeader(const std::string& path, const ParaviewView& v) {
+    const std::string name = path.substr(path.rfind('/') + 1);
     std::ostringstream py;
     py << "# Opens this run in ParaView coloured by temperature, fluid and bodies drawn as "
           "spheres\n"
           "# of the particle spacing (walls hidden). Written by the app next to its series.\n"
           "#   paraview --script="
-       << path.substr(path.rfind('/') + 1)
+       << name
        << "        the ParaView window, ready to play\n"
           "#   pvpython "
-       << path.substr(path.rfind('/') + 1)
+       << name
        << " --screenshot   saves a picture of the last time instead\n"
           "import os\n"
           "import sys\n"
           "from paraview.simple import *\n\n"
           "here = os.path.dirname(os.path.abspath(__file__))\n"
           "series = \""
-       << v.pvdName
-       << "\"\n"
-          "dimension = "
-       << v.dimension
-       << "\n"
-          "spacing = "
-       << formatted("%.17g", v.spacing)
+       << v.pvdName << "\"\ndimension = " << v.dimension
+       << "\nspacing = " << formatted("%.17g", v.spacing)
        << "  # m\n"
           "temperature_range = ["
-       << formatted("%.17g", v.colorMin) << ", " << formatted("%.17g", v.colorMax)
-       << "]  # C\n\n"
-          "run = PVDReader(FileName=os.path.join(here, series))\n"
-          "view = GetActiveViewOrCreate(\"RenderView\")\n"
-          "lut = GetColorTransferFunction(\"temperature\")\n"
-          "lut.ApplyPreset(\"Cool to Warm\", True)\n"
+       << formatted("%.17g", v.colorMin) << ", " << formatted("%.17g", v.colorMax) << "]  # C\n\n";
+    return py.str();
+}
 
-          "for kind in (0, 2):  # 0 fluid, 2 bodies (1: walls)\n"
-          "    part = Threshold(Input=run, Scalars=[\"POINTS\", \"kind\"])\n"
-          "    try:  # ParaView 5.10 and later\n"
-          "        part.LowerThreshold, part.UpperThreshold = kind, kind\n"
-          "    except AttributeError:\n"
-          "        part.ThresholdRange = [kind, kind]\n"
-          "    shown = Show(part, view)\n"
-          "    shown.SetRepresentationType(\"Point Gaussian\")\n"
-          "    shown.GaussianRadius = 0.5 * spacing\n"
-          "    shown.ShaderPreset = \"Sphere\"\n"
-          "    ColorBy(shown, (\"POINTS\", \"temperature\"))\n"
-          "    shown.LookupTable = lut\n"
-          "    shown.SetScalarBarVisibility(view, True)\n"
-          "# The pictures' colour range, kept while the series plays.\n"
-          "lut.AutomaticRescaleRangeMode = \"Never\"\n"
-          "lut.RescaleTransferFunction(*temperature_range)\n"
-          "GetOpacityTransferFunction(\"temperature\").RescaleTransferFunction(*temperature_range)"
-          "\n"
-          "GetAnimationScene().UpdateAnimationUsingDataTimeSteps()\n"
-          "if dimension == 2:\n"
-          "    view.InteractionMode = \"2D\"\n"
-       << "view.CameraFocalPoint = [0, 0, 0]\n"
-          "view.CameraPosition = "
-       << camera
-       << "\n"
-          "view.CameraViewUp = "
-       << up
-       << "\n"
-          "# Frame the whole box: the series with its walls is shown while the camera is fitted.\n"
-          "box = Show(run, view)\n"
-          "view.ResetCamera()\n"
-          "Hide(run, view)\n"
-          "bounds = run.GetDataInformation().GetBounds()\n"
-          "if dimension == 2:  # a 16:9 window holds the box with a little margin\n"
-          "    view.CameraParallelScale = 0.55 * max(bounds[3] - bounds[2],\n"
-          "                                          (bounds[1] - bounds[0]) * 9 / 16)\n"
-          "else:  # the box's edges, and a closer look\n"
-          "    Show(Outline(Input=run), view)\n"
-          "    GetActiveCamera().Zoom(1.15)\n"
-          "bar = GetScalarBar(lut, view)\n"
-          "bar.WindowLocation = \"Upper Right Corner\"\n"
-          "bar.ScalarBarLength = 0.3\n"
-          "if \"--screenshot\" in getattr(sys, \"argv\", []):\n"
-          "    GetAnimationScene().GoToLast()\n"
-          "    SaveScreenshot(os.path.splitext(os.path.abspath(__file__))[0] + \".png\", view,\n"
-          "                   ImageResolution=[1280, 720])\n"
-          "else:\n"
-          "    Render()\n";
-    writeFileAtomically(path, py.str());
+/// Fluid and bodies as spheres coloured by temperature over the pictures' range.
+const char* const kParaviewColouring =
+    "run = PVDReader(FileName=os.path.join(here, series))\n"
+    "view = GetActiveViewOrCreate(\"RenderView\")\n"
+    "lut = GetColorTransferFunction(\"temperature\")\n"
+    "lut.ApplyPreset(\"Cool to Warm\", True)\n"
+    "for kind in (0, 2):  # 0 fluid, 2 bodies (1: walls)\n"
+    "    part = Threshold(Input=run, Scalars=[\"POINTS\", \"kind\"])\n"
+    "    try:  # ParaView 5.10 and later\n"
+    "        part.LowerThreshold, part.UpperThreshold = kind, kind\n"
+    "    except AttributeError:\n"
+    "        part.ThresholdRange = [kind, kind]\n"
+    "    shown = Show(part, view)\n"
+    "    shown.SetRepresentationType(\"Point Gaussian\")\n"
+    "    shown.GaussianRadius = 0.5 * spacing\n"
+    "    shown.ShaderPreset = \"Sphere\"\n"
+    "    ColorBy(shown, (\"POINTS\", \"temperature\"))\n"
+    "    shown.LookupTable = lut\n"
+    "    shown.SetScalarBarVisibility(view, True)\n"
+    "# The pictures' colour range, kept while the series plays.\n"
+    "lut.AutomaticRescaleRangeMode = \"Never\"\n"
+    "lut.RescaleTransferFunction(*temperature_range)\n"
+    "GetOpacityTransferFunction(\"temperature\").RescaleTransferFunction(*temperature_range)\n"
+    "GetAnimationScene().UpdateAnimationUsingDataTimeSteps()\n"
+    "if dimension == 2:\n"
+    "    view.InteractionMode = \"2D\"\n";
+
+/// The camera (2D: from +z onto the plane; 3D: from above and aside, the up axis upwards),
+/// framing the whole box; then the window or the screenshot.
+std::string paraviewCamera(const ParaviewView& v) {
+    double camera[3] = {0, 0, 1}, up[3] = {0, 1, 0};
+    if (v.dimension == 3) {
+        const int a1 = (v.upAxis + 1) % 3, a2 = (v.upAxis + 2) % 3;
+        camera[v.upAxis] = 0.9, camera[a1] = 1.0, camera[a2] = -1.4;
+        up[0] = up[1] = up[2] = 0, up[v.upAxis] = 1;
+    }
+    return "view.CameraFocalPoint = [0, 0, 0]\n"
+           "view.CameraPosition = " +
+           pythonList(camera) + "\nview.CameraViewUp = " + pythonList(up) +
+           "\n"
+           "# Frame the whole box: the series with its walls is shown while the camera is fitted.\n"
+           "box = Show(run, view)\n"
+           "view.ResetCamera()\n"
+           "Hide(run, view)\n"
+           "bounds = run.GetDataInformation().GetBounds()\n"
+           "if dimension == 2:  # a 16:9 window holds the box with a little margin\n"
+           "    view.CameraParallelScale = 0.55 * max(bounds[3] - bounds[2],\n"
+           "                                          (bounds[1] - bounds[0]) * 9 / 16)\n"
+           "else:  # the box's edges, and a closer look\n"
+           "    Show(Outline(Input=run), view)\n"
+           "    GetActiveCamera().Zoom(1.15)\n"
+           "bar = GetScalarBar(lut, view)\n"
+           "bar.WindowLocation = \"Upper Right Corner\"\n"
+           "bar.ScalarBarLength = 0.3\n"
+           "if \"--screenshot\" in getattr(sys, \"argv\", []):\n"
+           "    GetAnimationScene().GoToLast()\n"
+           "    SaveScreenshot(os.path.splitext(os.path.abspath(__file__))[0] + \".png\", view,\n"
+           "                   ImageResolution=[1280, 720])\n"
+           "else:\n"
+           "    Render()\n";
+}
+
+}  // namespace
+
+void writeParaviewScript(const std::string& path, const ParaviewView& v) {
+    writeFileAtomically(path, paraviewHeader(path, v) + kParaviewColouring + paraviewCamera(v));
 }
 
 }  // namespace num::io

@@ -355,10 +355,16 @@ class Solver {
                 }
             }
         });
+        countNeighbours(owned != nullptr);
+    }
+
+    /// The mean number of neighbours of the particles evaluated (over every process).
+    void countNeighbours(bool decomposed) {
         std::int64_t pairs = 0, evaluated = 0;
         for (const Scratch& sc : scratch_)
             pairs += std::int64_t(sc.pairs), evaluated += std::int64_t(sc.evaluated);
-        if (owned) pairs = decomposition_->sum(pairs), evaluated = decomposition_->sum(evaluated);
+        if (decomposed)
+            pairs = decomposition_->sum(pairs), evaluated = decomposition_->sum(evaluated);
         meanNeighbours_ =
             evaluated ? double(pairs) * (symmetric_ ? 2.0 : 1.0) / double(evaluated) : 0.0;
     }

@@ -7,7 +7,6 @@
 #include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
-#include "io/writer_registry.hpp"
 #include "json_check.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_of_state_choice.hpp"
@@ -369,9 +368,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
             // Names only: they are checked against the writers once the plugins have added
             // theirs (checkOutputFormats).
             const At f = o["formats"];
-            std::string names;
-            for (const auto& n : builtInWriters().names<Dim>()) names += "\"" + n + "\", ";
-            if (!f.v.is_array()) f.fail("an array of formats (" + names + "or a plugin's)");
+            if (!f.v.is_array()) f.fail("an array of output format names, e.g. [\"vtu\", \"csv\"]");
             out.formats.clear();
             for (std::size_t i = 0; i < f.v.size(); ++i) {
                 const std::string name = At{f.v.at(i), f.file, f.join(std::to_string(i))}.string();

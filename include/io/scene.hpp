@@ -28,7 +28,7 @@ using VectorField = std::array<Expression, Dim>;
 
 enum class SideType { WALL, PERIODIC, OPEN };
 
-struct ThermalCondition {
+struct ThermalSpec {
     enum class Kind { ADIABATIC, TEMPERATURE, HEAT_FLUX } kind = Kind::ADIABATIC;
     double value = 0;  ///< temperature [degC] or heat flux into the fluid [W/m^2]
 };
@@ -38,7 +38,7 @@ struct BoundarySide {
     SideType type = SideType::WALL;
     bool slip = false;
     SceneVec<Dim> velocity{};
-    ThermalCondition thermal;
+    ThermalSpec thermal;
 };
 
 struct MaterialSpec {
@@ -51,12 +51,12 @@ struct MaterialSpec {
     double referenceTemperature = sph::defaults::referenceTemperature;
 };
 
-enum class Shape { BOX, CIRCLE, SPHERE };
+enum class ShapeKind { BOX, CIRCLE, SPHERE };
 
 template <int Dim>
 struct FluidBlock {
     std::string material;
-    Shape shape = Shape::BOX;
+    ShapeKind shape = ShapeKind::BOX;
     SceneVec<Dim> min{}, max{}, center{};
     double radius = 0;
     Expression temperature{20.0}, pressure{0.0};
@@ -65,7 +65,7 @@ struct FluidBlock {
 
 template <int Dim>
 struct Body {
-    Shape shape = Shape::CIRCLE;
+    ShapeKind shape = ShapeKind::CIRCLE;
     SceneVec<Dim> min{}, max{}, center{};
     double radius = 0;
     double temperature = 20;

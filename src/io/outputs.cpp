@@ -57,7 +57,7 @@ Outputs<Dim>::Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std
             lo = std::min(lo, T[i]), hi = std::max(hi, T[i]);
     for (int k = 0; k < Dim; ++k)
         for (int h = 0; h < 2; ++h)
-            if (scene.sides[k][h].thermal.kind == ThermalCondition::Kind::TEMPERATURE)
+            if (scene.sides[k][h].thermal.kind == ThermalSpec::Kind::TEMPERATURE)
                 lo = std::min(lo, scene.sides[k][h].thermal.value),
                 hi = std::max(hi, scene.sides[k][h].thermal.value);
     for (const auto& e : scene.emitters)

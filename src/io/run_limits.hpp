@@ -55,9 +55,9 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
         lattice *= n + walls * layers, inside *= n;
     }
     double fluid = 0, bodies = 0, emitted = 0;
-    auto volume = [&](Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, double r) {
+    auto volume = [&](ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, double r) {
         double v = 1;
-        if (shape == Shape::BOX)
+        if (shape == ShapeKind::BOX)
             for (int k = 0; k < Dim; ++k) v *= (mx[k] - mn[k]) / dx;
         else
             v = Dim == 2 ? M_PI * r * r / (dx * dx) : 4.0 / 3 * M_PI * std::pow(r / dx, 3);

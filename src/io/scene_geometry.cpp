@@ -18,9 +18,9 @@ std::string text(const SceneVec<Dim>& v) {
 
 /// Bounding box of a box or a round shape.
 template <int Dim>
-void bounds(Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, const SceneVec<Dim>& c,
-            double r, SceneVec<Dim>& lo, SceneVec<Dim>& hi) {
-    if (shape == Shape::BOX)
+void bounds(ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
+            const SceneVec<Dim>& c, double r, SceneVec<Dim>& lo, SceneVec<Dim>& hi) {
+    if (shape == ShapeKind::BOX)
         lo = mn, hi = mx;
     else
         lo = c - SceneVec<Dim>::filled(r), hi = c + SceneVec<Dim>::filled(r);
@@ -40,7 +40,7 @@ double distanceToBox(const SceneVec<Dim>& p, const SceneVec<Dim>& lo, const Scen
 /// Whether two shapes overlap by more than `tol`.
 template <int Dim>
 bool overlap(const FluidBlock<Dim>& f, const Body<Dim>& b, double tol) {
-    const bool fBox = f.shape == Shape::BOX, bBox = b.shape == Shape::BOX;
+    const bool fBox = f.shape == ShapeKind::BOX, bBox = b.shape == ShapeKind::BOX;
     if (fBox && bBox) {
         for (int k = 0; k < Dim; ++k)
             if (std::min(f.max[k], b.max[k]) - std::max(f.min[k], b.min[k]) <= tol) return false;
@@ -80,7 +80,7 @@ void checkSceneGeometry(const Scene<Dim>& s) {
                              "a block spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
         double cells = 1;
         for (int k = 0; k < Dim; ++k) cells *= (hi[k] - lo[k]) / s.spacing;
-        if (f.shape != Shape::BOX && 2 * f.radius < s.spacing)
+        if (f.shape != ShapeKind::BOX && 2 * f.radius < s.spacing)
             throw sceneError(
                 file, path + ".radius",
                 "a radius of at least half the spacing (" + formatted("%g", s.spacing / 2) + " m)",

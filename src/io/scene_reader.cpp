@@ -149,8 +149,8 @@ void readSides(const At& a, Scene<Dim>& s) {
                     t.fail(
                         "an object with exactly one of \"temperature\" [degC] or "
                         "\"heat_flux\" [W/m^2]");
-                side.thermal.kind = t.has("temperature") ? ThermalCondition::Kind::TEMPERATURE
-                                                         : ThermalCondition::Kind::HEAT_FLUX;
+                side.thermal.kind = t.has("temperature") ? ThermalSpec::Kind::TEMPERATURE
+                                                         : ThermalSpec::Kind::HEAT_FLUX;
                 side.thermal.value = t.has("temperature")
                                          ? t["temperature"].number(-273.15, 1e4, false, "degC")
                                          : t["heat_flux"].number(-1e9, 1e9, false, "W/m^2");
@@ -171,15 +171,15 @@ void readSides(const At& a, Scene<Dim>& s) {
 }
 
 template <int Dim>
-void readShape(const At& a, Shape& shape, SceneVec<Dim>& mn, SceneVec<Dim>& mx,
+void readShape(const At& a, ShapeKind& shape, SceneVec<Dim>& mn, SceneVec<Dim>& mx,
                SceneVec<Dim>& center, double& radius, bool fluid) {
     const char* round = Dim == 2 ? "circle" : "sphere";
     const std::string name = a.required("shape").choice({"box", "circle", "sphere"});
     if (name != "box" && name != round)
         a["shape"].fail(std::string("\"box\" or \"") + round + "\" in a " + std::to_string(Dim) +
                         "D scene");
-    shape = name == "box" ? Shape::BOX : Dim == 2 ? Shape::CIRCLE : Shape::SPHERE;
-    if (shape == Shape::BOX) {
+    shape = name == "box" ? ShapeKind::BOX : Dim == 2 ? ShapeKind::CIRCLE : ShapeKind::SPHERE;
+    if (shape == ShapeKind::BOX) {
         mn = readVec<Dim>(a.required("min"), "m");
         mx = readVec<Dim>(a.required("max"), "m");
         for (int k = 0; k < Dim; ++k)

@@ -18,9 +18,9 @@ using sph::Size;
 namespace {
 
 template <int Dim>
-sph::Shape<Dim> shapeOf(Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
+sph::Shape<Dim> shapeOf(ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
                         const SceneVec<Dim>& c, double r) {
-    return shape == Shape::BOX ? sph::Shape<Dim>::box(mn, mx) : sph::Shape<Dim>::ball(c, r);
+    return shape == ShapeKind::BOX ? sph::Shape<Dim>::box(mn, mx) : sph::Shape<Dim>::ball(c, r);
 }
 
 template <int Dim>
@@ -55,7 +55,7 @@ template <int Dim, class Visit>
 void forEachBlockSample(const FluidBlock<Dim>& f, double dx, Visit&& visit) {
     const sph::Shape<Dim> shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
     SceneVec<Dim> lo = f.min, hi = f.max;
-    if (f.shape != Shape::BOX)
+    if (f.shape != ShapeKind::BOX)
         for (int k = 0; k < Dim; ++k)
             lo[k] = f.center[k] - f.radius, hi[k] = f.center[k] + f.radius;
     std::array<long, Dim> n{};
@@ -115,7 +115,7 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
         for (const auto& f : scene.fluids) {
             double v = 1;
             for (int k = 0; k < Dim; ++k) v *= f.max[k] - f.min[k];
-            if (f.shape != Shape::BOX)
+            if (f.shape != ShapeKind::BOX)
                 v = Dim == 2 ? M_PI * f.radius * f.radius : 4 / 3.0 * M_PI * std::pow(f.radius, 3);
             fluidVolume += v;
         }
@@ -136,7 +136,7 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
             for (const auto& b : scene.bodies) see(b.temperature);
             for (int k = 0; k < Dim; ++k)
                 for (const auto& side : scene.sides[k])
-                    if (side.thermal.kind == ThermalCondition::Kind::TEMPERATURE)
+                    if (side.thermal.kind == ThermalSpec::Kind::TEMPERATURE)
                         see(side.thermal.value);
             for (const auto& [name, m] : scene.materials) beta = std::max(beta, m.thermalExpansion);
             if (scene.physics.heat && scene.physics.buoyancy && tMax > tMin)
@@ -319,7 +319,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
             w.present = side.type == SideType::WALL;
             w.velocity = side.velocity;
             w.slip = side.slip ? sph::WallSlip::FREE_SLIP : sph::WallSlip::NO_SLIP;
-            w.temperature = side.thermal.kind == ThermalCondition::Kind::TEMPERATURE
+            w.temperature = side.thermal.kind == ThermalSpec::Kind::TEMPERATURE
                                 ? side.thermal.value
                                 : fluid.referenceTemperature;
             w.material = setup.fluidMaterial;
@@ -417,17 +417,16 @@ sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& s
             if (above > depth) depth = above, axis = k, hi = 1;
         }
         if (axis < 0) continue;
-        const ThermalCondition& tc = scene.sides[axis][hi].thermal;
-        cond[i] = int(tc.kind == ThermalCondition::Kind::TEMPERATURE ? TC::FIXED_TEMPERATURE
-                      : tc.kind == ThermalCondition::Kind::HEAT_FLUX ? TC::CONDUCTING
-                                                                     : TC::ADIABATIC);
-        if (tc.kind == ThermalCondition::Kind::HEAT_FLUX && depth < dx)
-            fluxLayer[axis][hi].push_back(i);
+        const ThermalSpec& tc = scene.sides[axis][hi].thermal;
+        cond[i] = int(tc.kind == ThermalSpec::Kind::TEMPERATURE ? TC::FIXED_TEMPERATURE
+                      : tc.kind == ThermalSpec::Kind::HEAT_FLUX ? TC::CONDUCTING
+                                                                : TC::ADIABATIC);
+        if (tc.kind == ThermalSpec::Kind::HEAT_FLUX && depth < dx) fluxLayer[axis][hi].push_back(i);
     }
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi) {
-            const ThermalCondition& tc = scene.sides[k][hi].thermal;
-            if (tc.kind != ThermalCondition::Kind::HEAT_FLUX || fluxLayer[k][hi].empty()) continue;
+            const ThermalSpec& tc = scene.sides[k][hi].thermal;
+            if (tc.kind != ThermalSpec::Kind::HEAT_FLUX || fluxLayer[k][hi].empty()) continue;
             double area = 1;
             for (int j = 0; j < Dim; ++j)
                 if (j != k) area *= scene.domainMax[j] - scene.domainMin[j];

@@ -17,7 +17,7 @@ TEST(SceneReader, DefaultsAndOverrides) {
     EXPECT_EQ(s.fluids[0].velocity[0](0, 0, 0, 0), 1.0);
     EXPECT_EQ(s.fluids[0].velocity[1](0, 0, 0, 0.5), 1.0);
     EXPECT_EQ(s.gravity[1](0, 0, 0, 0.005), -9.81 * 0.5);  // "-9.81*min(t/0.01, 1)"
-    EXPECT_EQ(s.sides[0][1].thermal.kind, ThermalCondition::Kind::TEMPERATURE);
+    EXPECT_EQ(s.sides[0][1].thermal.kind, ThermalSpec::Kind::TEMPERATURE);
     EXPECT_EQ(s.sides[1][1].type, SideType::OPEN);
     EXPECT_THROW(doc.set("fluids.7.temperature=3"), AppError);
 }

@@ -57,10 +57,10 @@ void At::failAt(const std::string& key, const std::string& expected) const {
     throw sceneError(file, join(key), expected, "nothing (the key is missing)");
 }
 
-void At::object(std::initializer_list<const char*> allowed,
-                std::initializer_list<const char*> required) const {
+void At::object(const std::vector<std::string>& allowed,
+                const std::vector<std::string>& required) const {
     if (!v.is_object()) fail("an object");
-    std::vector<std::string> names(allowed.begin(), allowed.end());
+    const std::vector<std::string>& names = allowed;
     for (const auto& [key, value] : v.items()) {
         if (std::find(names.begin(), names.end(), key) != names.end()) continue;
         const std::string guess = closest(key, names);
@@ -70,7 +70,7 @@ void At::object(std::initializer_list<const char*> allowed,
                          "the unknown key '" + key + "'",
                          guess.empty() ? "" : "did you mean '" + guess + "'?");
     }
-    for (const char* r : required)
+    for (const std::string& r : required)
         if (!v.contains(r)) failAt(r, "this required key");
 }
 
@@ -120,8 +120,8 @@ std::string At::string() const {
     return v.get<std::string>();
 }
 
-std::string At::choice(std::initializer_list<const char*> choices) const {
-    std::vector<std::string> names(choices.begin(), choices.end());
+std::string At::choice(const std::vector<std::string>& choices) const {
+    const std::vector<std::string>& names = choices;
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
     if (!v.is_string()) fail("one of " + list);

@@ -51,7 +51,7 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
     for (int k = 0; k < Dim; ++k) {
         const double n = (scene.domainMax[k] - scene.domainMin[k]) / dx;
         int walls = 0;
-        for (int hi = 0; hi < 2; ++hi) walls += scene.sides[k][hi].type == SideType::WALL;
+        for (int hi = 0; hi < 2; ++hi) walls += setup.geometry.hasWall(k, hi);
         lattice *= n + walls * layers, inside *= n;
     }
     double fluid = 0, bodies = 0, emitted = 0;

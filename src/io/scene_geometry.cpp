@@ -140,16 +140,14 @@ void checkSceneGeometry(const Scene<Dim>& s) {
             "increase the spacing");
     const double support = 2.0 * s.hOverSpacing * s.spacing;  // largest kernel support: 2h
     for (int k = 0; k < Dim; ++k)
-        if (s.sides[k][0].type == SideType::PERIODIC &&
-            s.domainMax[k] - s.domainMin[k] < 2 * support)
+        if (s.sides[k][0]->wraps() && s.domainMax[k] - s.domainMin[k] < 2 * support)
             throw sceneError(file, std::string("boundaries.") + sideName(k, 0),
                              "a periodic axis at least twice the kernel support (" +
                                  std::to_string(2 * support) + " m) long",
                              std::to_string(s.domainMax[k] - s.domainMin[k]) + " m");
     for (int k = 0; k < Dim; ++k) {
         const double cells = (s.domainMax[k] - s.domainMin[k]) / s.spacing;
-        if (s.sides[k][0].type == SideType::PERIODIC &&
-            std::abs(cells - std::round(cells)) > 1e-6 * cells)
+        if (s.sides[k][0]->wraps() && std::abs(cells - std::round(cells)) > 1e-6 * cells)
             throw sceneError(file, "particles.spacing",
                              "a spacing that divides the periodic length " +
                                  std::to_string(s.domainMax[k] - s.domainMin[k]) + " m of axis " +

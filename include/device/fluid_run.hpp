@@ -28,7 +28,9 @@ std::string unsupported(const sph::FluidModel<Dim>& model,
                         const sph::RunSettings& settings) {
     if (model.extraTerms.size() > 0) return "extra equation terms (plugins' or users' terms)";
     if (model.density == sph::DensityMode::SUMMATION) return "density by summation";
-    if (settings.get<std::string>("evaluation") == "symmetric") return "symmetric evaluation";
+    if (sph::evaluationFromName(settings.get<std::string>("evaluation")) ==
+        sph::Evaluation::SYMMETRIC)
+        return "symmetric evaluation";
     return "";
 }
 

@@ -31,7 +31,7 @@ struct DeviceMaterial {
 template <int Dim>
 struct FluidStepConfig {
     // Kernel.
-    sph::KernelType kernel = sph::KernelType::WENDLAND_C2;
+    sph::KernelType kernel = sph::defaultKernel;
     Float h = 0, supportRadius = 0;
     Float w0 = 0;                                ///< W(0), for the free-surface test
     Float laplacianEta2 = 0, inverseR2Eta2 = 0;  ///< eta^2 of the two pair factors [m^2]

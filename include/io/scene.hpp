@@ -51,7 +51,7 @@ struct FluidBlock {
     ShapeKind shape = ShapeKind::BOX;
     SceneVec<Dim> min{}, max{}, center{};
     double radius = 0;
-    Expression temperature{20.0}, pressure{0.0};
+    Expression temperature{sph::defaults::temperature}, pressure{0.0};
     VectorField<Dim> velocity{};
 };
 
@@ -60,7 +60,7 @@ struct Body {
     ShapeKind shape = ShapeKind::CIRCLE;
     SceneVec<Dim> min{}, max{}, center{};
     double radius = 0;
-    double temperature = 20;
+    double temperature = sph::defaults::temperature;
     std::string material;  ///< empty: held at `temperature`; else conducting with this material
 };
 
@@ -68,7 +68,8 @@ template <int Dim>
 struct Emitter {
     std::string name, material;
     SceneVec<Dim> position{}, direction{};
-    double speed = 1, radius = 0.05, temperature = 20, start = 0, end = 1e300;
+    double speed = sph::defaults::emitterSpeed, radius = sph::defaults::emitterRadius;
+    double temperature = sph::defaults::temperature, start = 0, end = 1e300;
 };
 
 template <int Dim>
@@ -92,7 +93,7 @@ struct PhysicsSpec {
     /// auto, continuity or summation; auto: summation under gravity in a box that is closed by
     /// walls on every side and filled with fluid (no free surface, bodies or emitters), else
     /// continuity
-    std::string density = "auto";
+    std::string density = sph::defaults::densityMode;
     double densityDiffusion = sph::defaults::densityDiffusion;  ///< delta-SPH's delta
     bool shifting = sph::defaults::shifting;
     bool shiftingNormalToWalls = sph::defaults::shiftingNormalToWalls;
@@ -110,12 +111,13 @@ struct Scene {
     std::string name;
     SceneVec<Dim> domainMin{}, domainMax{};
     std::array<std::array<SideBoundary<Dim>, 2>, Dim> sides{};  ///< [axis][0 = low, 1 = high]
-    double spacing = 0.02, hOverSpacing = sph::defaults::hOverSpacing;
+    double spacing = sph::defaults::spacing, hOverSpacing = sph::defaults::hOverSpacing;
     std::string kernel = sph::defaults::kernel;
     std::string evaluation = sph::defaults::evaluation;  ///< the pair loop: asymmetric or symmetric
-    double endTime = 1, cfl = sph::defaults::cfl, dtMax = 0;
-    std::string integrator = "leapfrog";
-    std::string backend = "cpu";  ///< numerics.backend: cpu or cuda (--backend overrides it)
+    double endTime = sph::defaults::endTime, cfl = sph::defaults::cfl, dtMax = 0;
+    std::string integrator = sph::defaults::integrator;
+    std::string backend =
+        sph::defaults::backend;  ///< numerics.backend: cpu or cuda (--backend overrides it)
     VectorField<Dim> gravity{};
     std::map<std::string, MaterialSpec> materials;
     std::vector<FluidBlock<Dim>> fluids;

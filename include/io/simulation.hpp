@@ -1,14 +1,23 @@
-// A run of a scene from start (or a checkpoint) to its end time: the time loop with outputs,
-// emitters, open boundaries, health checks, checkpoints, Ctrl-C, progress and summary.json.
+// One run of a scene, from its start (or a checkpoint) to its end time: the object every front
+// end drives (the apps through runSimulation, the tests). A step is the engine's (sph::Run, or
+// the CUDA back end's), then the observers in the order added: health checks, open boundaries
+// and emitters, progress, outputs, checkpoints. Each observer owns its trigger and its
+// reductions over the processes of an MPI run.
 #pragma once
 
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "io/errors.hpp"
 #include "io/fields.hpp"
 #include "io/scene_loader.hpp"
 #include "parallel/communicator.hpp"
+#include "sph/storage.hpp"
 
 namespace num::io {
 
@@ -27,7 +36,85 @@ struct RunOptions {
     const parallel::Communicator* communicator = nullptr;
 };
 
-/// Runs the scene; returns the exit code (0, INTERRUPTED). Errors are AppErrors.
+template <int Dim>
+class Simulation;
+/// Everything a run holds (internal to numerics_io: src/io/run_parts.hpp).
+template <int Dim>
+struct RunParts;
+
+/// How a run ended, as summary.json and the exit code tell it.
+struct RunEnd {
+    std::string status = "completed";  ///< completed, interrupted, unstable or failed
+    std::string message;
+    ExitCode failure = ExitCode::OK;  ///< of an unstable or failed run
+    bool abandoned = false;           ///< a signal stopped the run in the middle of a step
+    nlohmann::json summary;
+    std::vector<std::string> warnings;  ///< those of the run, after the scene's
+};
+
+/// Acts after steps, each on its own trigger.
+template <int Dim>
+class IStepObserver {
+  public:
+    virtual ~IStepObserver() = default;
+    /// A time the steps land on exactly (an output time); infinity: none.
+    virtual double landingTime() const { return std::numeric_limits<double>::infinity(); }
+    /// Whether afterStep needs the particles on the host (the CUDA back end copies them back).
+    virtual bool needsParticles(const Simulation<Dim>&) const { return false; }
+    /// Before a step; `endStep`: the step is cut short to land on an end time that is not a
+    /// landing time (a longer run would not take it).
+    virtual void beforeStep(Simulation<Dim>&, bool /*endStep*/) {}
+    virtual void afterStep(Simulation<Dim>&) = 0;
+    /// When the steps are over (the run completed or was interrupted, not failed).
+    virtual void afterRun(Simulation<Dim>&, const RunEnd&) {}
+    /// Adds to summary.json and its warnings.
+    virtual void summarize(Simulation<Dim>&, RunEnd&) {}
+};
+
+template <int Dim>
+class Simulation {
+  public:
+    /// Reads the scene, sets up the particles (or reads the checkpoint of options.restart) and
+    /// writes the first output. Errors are AppErrors (io/errors.hpp).
+    Simulation(const SceneDocument& doc, const RunOptions& options);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    /// One step towards the end time, landing on the observers' times; returns its dt.
+    double step();
+    /// Steps until time t (landing on it), the end time or a stop request (Ctrl-C).
+    void advanceTo(double t);
+    /// The whole run: advanceTo(end time), the last output, summary.json and the report.
+    /// Returns the exit code (0 or INTERRUPTED); a failed run throws its AppError.
+    int run();
+
+    double time() const;
+    double endTime() const;
+    std::uint64_t steps() const;
+    /// This process's particles, up to date (copied back from the GPU when needed).
+    const sph::Storage<Dim>& particles();
+    /// Whether a process asked to stop (a signal on any process stops all of them).
+    bool stopRequested() const;
+
+    void addObserver(std::unique_ptr<IStepObserver<Dim>> observer);
+    RunParts<Dim>& parts() { return *parts_; }
+    const RunParts<Dim>& parts() const { return *parts_; }
+
+  private:
+    /// One step towards limit (at most the end time), landing on the observers' times.
+    double stepTowards(double limit);
+    void copyParticlesToHost();
+    void reportAbandonedStep(RunEnd& end);
+    /// summary.json, the report and the exit code.
+    int finishRun(RunEnd end);
+
+    std::unique_ptr<RunParts<Dim>> parts_;
+    std::vector<std::unique_ptr<IStepObserver<Dim>>> observers_;
+};
+
+/// Runs the scene through a Simulation; returns the exit code (0, INTERRUPTED). Errors are
+/// AppErrors.
 template <int Dim>
 int runSimulation(const SceneDocument& doc, const RunOptions& options);
 

@@ -95,5 +95,63 @@ inline constexpr double viscosity = 1.0e-6;         // m^2/s
 inline constexpr double conductivity = 0.6;         // W/(m K)
 inline constexpr double heatCapacity = 4186;        // J/(kg K)
 inline constexpr double referenceTemperature = 20;  // degC
+// b [1/K] in nu = nu0 exp(-b (T - T0)), the exponential law of viscosity (Reynolds 1886): about
+// 0.02 for water near 20 degC.
+inline constexpr double viscosityTemperatureCoefficient = 0.02;
+// No thermal expansion [1/K]: buoyancy only where a material states it.
+inline constexpr double thermalExpansion = 0;
+// The temperature of fluid, bodies and emitted particles a scene does not give [degC]: the
+// reference temperature, so that a scene without heat is at its rest density.
+inline constexpr double temperature = referenceTemperature;
+
+// The engine's material (sph::Material) where a program states nothing. Its sound speed is a
+// number, 10 m/s (c0 = 10 U for flows up to 1 m/s), where the apps derive "auto" from the flow
+// (soundSpeedFactor); its artificial viscosity is 0 (off) where the apps use "auto"
+// (artificialViscosityFor): a program that builds its own model adds dissipation knowingly.
+inline constexpr double flowSpeed = 1;  // U [m/s] of a FluidModel that states none
+inline constexpr double materialSoundSpeed = soundSpeedFactor * flowSpeed;  // m/s
+inline constexpr double materialArtificialViscosity = 0;                    // Monaghan's alpha
+
+// The run's settings (RunSettings) a program or scene does not set.
+// h [m] of a program that sets none: 1.3 times a spacing of 0.01 m (the apps set h =
+// hOverSpacing times the scene's spacing).
+inline constexpr double smoothingLength = 0.013;
+// Worker threads of the parallel scheduler (the apps: --threads).
+inline constexpr int threads = 1;
+// Particle blocks of the symmetric pair loop: each block sums into its own buffers and the
+// blocks are added in a fixed order, so results depend on the blocks, never on the threads.
+inline constexpr int blocks = 4;
+// Time-step factors besides the CFL: dt <= 0.25 sqrt(h / |a|) (the force limit of Monaghan
+// 1992), dt <= 0.125 h^2 / nu (viscous diffusion, Morris et al. 1997), dt <= 0.1 h^2 / alpha
+// (heat conduction: 0.2 is already unstable for a 2D lattice, cubic spline, h = 1.3 dx).
+inline constexpr double accelerationFactor = 0.25;
+inline constexpr double viscousFactor = 0.125;
+inline constexpr double diffusionFactor = 0.1;
+// Steps between reorderings of the particles by cell (neighbours near in memory); 0: never.
+inline constexpr int reorderEvery = 25;
+// Skin of the neighbour lists, a fraction of the support radius. 0.1: fluid_sim on the 2D dam
+// break's first steps (slow flow) ran 10 % faster than with the cell grid at 0.1 and 0.2 alike,
+// slower at 0.3; in 3D the candidates grow as (1 + skin)^3. In fast flow the lists then lasted
+// 1.9 steps: the skin grows up to neighbourSkinMax (0.3: the default 2D scene's fast half 0.91x
+// the time, 0.5 no faster than 0.3, and the lists' memory grows as (1 + skin)^Dim).
+inline constexpr double neighbourSkin = 0.1;
+inline constexpr double neighbourSkinMax = 0.3;
+
+// Choices of a scene (the tables: sph/kernel_table.hpp, sph/integrator_choice.hpp,
+// sph/evaluation_mode.hpp, sph/equation_of_state_choice.hpp, io/density_choice.hpp).
+// Leapfrog (kick-drift-kick): second order and symplectic, one evaluation per step.
+inline constexpr const char* integrator = "leapfrog";
+// Density by summation in a full box closed by walls under gravity, else by continuity
+// (docs/physics.md, "Closed boxes").
+inline constexpr const char* densityMode = "auto";
+// The CPU back end: every build has it (numerics.backend, --backend).
+inline constexpr const char* backend = "cpu";
+
+// A Scene built in code (a scene file must state these): its particle spacing [m] and end time
+// [s], and an emitter's speed [m/s] and radius [m].
+inline constexpr double spacing = 0.02;
+inline constexpr double endTime = 1;
+inline constexpr double emitterSpeed = 1;
+inline constexpr double emitterRadius = 0.05;
 
 }  // namespace num::sph::defaults

@@ -59,6 +59,7 @@
 #include "sph/boundary/particle_containment.hpp"
 #include "sph/boundary/wall_temperature.hpp"
 #include "sph/defaults.hpp"
+#include "sph/equation_of_state_choice.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/particle_order.hpp"
@@ -106,10 +107,10 @@ struct FluidModel {
 
     // Equation of state.
     Float restDensity = defaults::density;  ///< rho0 [kg/m^3]
-    Float soundSpeed = 0;   ///< c0 [m/s]; 0 derives c0 = soundSpeedFactor * maxVelocity
-    Float maxVelocity = 1;  ///< the largest expected flow speed U [m/s]
+    Float soundSpeed = 0;  ///< c0 [m/s]; 0 derives c0 = soundSpeedFactor * maxVelocity
+    Float maxVelocity = defaults::flowSpeed;  ///< the largest expected flow speed U [m/s]
     Float soundSpeedFactor = defaults::soundSpeedFactor;  ///< c0 = 10 U: density varies ~1 %
-    EosType eos = EosType::TAIT;
+    EosType eos = defaultEos;
     Float taitExponent = defaults::taitExponent;
     Float backgroundPressure = 0;             ///< p_b [Pa], added to the equation of state
     Float maxTension = defaults::maxTension;  ///< [Pa]: p >= p_b - maxTension (cavitation)

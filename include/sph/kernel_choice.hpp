@@ -1,38 +1,35 @@
-// The kernel of a run, chosen by name at run time and dispatched once into templated loops.
+// The kernel of a run, chosen by name at run time (sph/kernel_table.hpp) and dispatched once into
+// templated loops.
 #pragma once
 
 #include <string>
 
-#include "spatial/kernels.hpp"
+#include "sph/defaults.hpp"
+#include "sph/kernel_table.hpp"
 #include "sph/settings.hpp"
 #include "sph/types.hpp"
 
 namespace num::sph {
 
-enum class KernelType { CUBIC_SPLINE, WENDLAND_C2, WENDLAND_C4, QUINTIC_SPLINE };
+/// A kernel of kernelTable, by its position there.
+struct KernelType {
+    std::size_t index;
+    friend bool operator==(KernelType, KernelType) = default;
+};
 
 inline KernelType kernelFromName(const std::string& name) {
-    if (name == "cubic_spline") return KernelType::CUBIC_SPLINE;
-    if (name == "wendland_c2") return KernelType::WENDLAND_C2;
-    if (name == "wendland_c4") return KernelType::WENDLAND_C4;
-    if (name == "quintic_spline") return KernelType::QUINTIC_SPLINE;
-    throw SettingsError("unknown kernel '" + name +
-                        "' (expected cubic_spline, wendland_c2, wendland_c4 or quintic_spline)");
+    return {chooseIndex(kernelTable, "kernel", name)};
 }
+
+/// The default kernel (defaults::kernel), checked against the table when compiled.
+inline constexpr KernelType defaultKernel{*choiceIndex(kernelTable, defaults::kernel)};
 
 /// Calls f(Kernel{}) with the kernel type for `type`; f is instantiated for every kernel.
 template <int Dim, class F>
 decltype(auto) withKernel(KernelType type, F&& f) {
-    switch (type) {
-        case KernelType::CUBIC_SPLINE:
-            return f(kernels::CubicSpline<Dim, Float>{});
-        case KernelType::WENDLAND_C4:
-            return f(kernels::WendlandC4<Dim, Float>{});
-        case KernelType::QUINTIC_SPLINE:
-            return f(kernels::QuinticSpline<Dim, Float>{});
-        default:
-            return f(kernels::WendlandC2<Dim, Float>{});
-    }
+    return withChoice(kernelTable, type.index, [&](auto entry) {
+        return f(typename decltype(entry)::template type<Dim>{});
+    });
 }
 
 /// The run's kernel with its smoothing length, for per-particle (not per-pair) use.

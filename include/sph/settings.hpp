@@ -17,13 +17,12 @@
 #include <vector>
 
 #include "sph/defaults.hpp"
+#include "sph/evaluation_mode.hpp"
+#include "sph/kernel_table.hpp"
+#include "sph/settings_error.hpp"
 #include "sph/suggest.hpp"
 
 namespace num::sph {
-
-struct SettingsError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
 
 using SettingValue = std::variant<bool, std::int64_t, double, std::string>;
 
@@ -167,43 +166,33 @@ class RunSettings : public ParameterSet {
     static std::vector<SettingSpec> schema() {
         const double inf = std::numeric_limits<double>::infinity();
         return {
-            {"kernel",
-             std::string(defaults::kernel),
-             "smoothing kernel",
-             0,
-             0,
-             {"cubic_spline", "wendland_c2", "wendland_c4", "quintic_spline"}},
-            {"smoothing_length", 0.013, "smoothing length h [m]", 1e-300, inf},
-            {"threads", std::int64_t(1), "worker threads of the parallel scheduler", 1, 1024},
-            {"evaluation",
-             std::string(defaults::evaluation),
-             "pair evaluation: asymmetric (gather per particle) or symmetric (each pair once)",
-             0,
-             0,
-             {"asymmetric", "symmetric"}},
-            {"blocks", std::int64_t(4),
+            {"kernel", std::string(defaults::kernel),
+             "smoothing kernel: " + choiceHelp(kernelTable), 0, 0, choiceNames(kernelTable)},
+            {"smoothing_length", defaults::smoothingLength, "smoothing length h [m]", 1e-300, inf},
+            {"threads", std::int64_t(defaults::threads), "worker threads of the parallel scheduler",
+             1, 1024},
+            {"evaluation", std::string(defaults::evaluation),
+             "pair evaluation: " + choiceHelp(evaluationTable), 0, 0, choiceNames(evaluationTable)},
+            {"blocks", std::int64_t(defaults::blocks),
              "particle blocks of the symmetric pair loop (at least 8 per thread when asymmetric); "
              "results may depend on it, never on threads",
              1, 4096},
             {"cfl", defaults::cfl, "Courant factor C in dt <= C h / (c + |v|)", 1e-6, 1.0},
-            {"acceleration_factor", 0.25, "factor in dt <= f sqrt(h / |a|)", 1e-6, 1.0},
-            {"viscous_factor", 0.125, "factor in dt <= f h^2 / nu", 1e-6, 1.0},
-            {"diffusion_factor", 0.1, "factor in dt <= f h^2 / alpha", 1e-6, 1.0},
+            {"acceleration_factor", defaults::accelerationFactor, "factor in dt <= f sqrt(h / |a|)",
+             1e-6, 1.0},
+            {"viscous_factor", defaults::viscousFactor, "factor in dt <= f h^2 / nu", 1e-6, 1.0},
+            {"diffusion_factor", defaults::diffusionFactor, "factor in dt <= f h^2 / alpha", 1e-6,
+             1.0},
             {"dt_max", inf, "largest time step [s]", 1e-300, inf},
             {"dt_fixed", 0.0, "fixed time step [s]; 0 selects the adaptive step", 0.0, inf},
-            {"reorder_every", std::int64_t(25), "steps between reorderings by cell (0: never)", 0,
-             1e9},
-            // 0.1: fluid_sim on the 2D dam break's first steps (slow flow) ran 10 % faster than
-            // with the cell grid at 0.1 and 0.2 alike, slower at 0.3; in 3D the candidates grow as
-            // (1 + skin)^3. In fast flow the lists then lasted 1.9 steps: the skin grows up to
-            // neighbour_skin_max (0.3: the default 2D scene's fast half 0.91x the time, 0.5 no
-            // faster than 0.3, and the lists' memory grows as (1 + skin)^Dim).
-            {"neighbour_skin", 0.1,
+            {"reorder_every", std::int64_t(defaults::reorderEvery),
+             "steps between reorderings by cell (0: never)", 0, 1e9},
+            {"neighbour_skin", defaults::neighbourSkin,
              "skin of the neighbour lists, a fraction of the support radius: they are rebuilt when "
              "a particle moved more than half of it (0: at every evaluation); the smallest skin "
              "when it adapts to the flow (neighbour_skin_max); results do not depend on it",
              0.0, 10.0},
-            {"neighbour_skin_max", 0.3,
+            {"neighbour_skin_max", defaults::neighbourSkinMax,
              "largest skin of the neighbour lists: each build takes the skin with which they "
              "would last 8 evaluations at the speed the fastest particle moved since the last "
              "build, within [neighbour_skin, neighbour_skin_max] (at most neighbour_skin: a fixed "
@@ -235,14 +224,16 @@ class Material : public IMaterial {
         const double inf = std::numeric_limits<double>::infinity();
         return {
             {"density", defaults::density, "rest density rho0 [kg/m^3]", 1e-300, inf},
-            {"sound_speed", 10.0, "artificial sound speed c0 [m/s]", 1e-300, inf},
+            {"sound_speed", defaults::materialSoundSpeed, "artificial sound speed c0 [m/s]", 1e-300,
+             inf},
             {"viscosity", defaults::viscosity, "kinematic viscosity nu [m^2/s]", 0.0, inf},
-            {"artificial_viscosity", 0.0, "Monaghan's alpha (the apps' default: defaults.hpp)", 0.0,
-             10.0},
+            {"artificial_viscosity", defaults::materialArtificialViscosity,
+             "Monaghan's alpha (the apps' default: defaults.hpp)", 0.0, 10.0},
             {"conductivity", defaults::conductivity, "thermal conductivity k [W/(m K)]", 0.0, inf},
             {"heat_capacity", defaults::heatCapacity, "specific heat capacity c [J/(kg K)]", 1e-300,
              inf},
-            {"thermal_expansion", 0.0, "volumetric thermal expansion beta [1/K]", 0.0, inf},
+            {"thermal_expansion", defaults::thermalExpansion,
+             "volumetric thermal expansion beta [1/K]", 0.0, inf},
             {"reference_temperature", defaults::referenceTemperature,
              "temperature of the rest density", -inf, inf},
         };

@@ -124,6 +124,116 @@ int quietUnlessRoot(const parallel::Communicator& comm) {
     return error;
 }
 
+namespace {
+
+/// What the command line asks for.
+struct CommandLine {
+    std::string sceneFile, out, restart;
+    std::vector<std::string> sets;
+    RunOptions options;
+    double endTime = 0;
+    bool printScene = false, list = false;
+};
+
+void addOptions(CLI::App& app, CommandLine& c, const AppInfo& info) {
+    app.add_option(
+        "scene", c.sceneFile,
+        "scene file (JSON); without it the built-in scene " + info.defaultSceneName + " runs");
+    app.add_option("--out", c.out, "output directory (default: the scene's output.directory)");
+    app.add_option("--threads", c.options.threads,
+                   "threads of the omp and threads backends (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--backend", c.options.backend,
+                   "seq (one thread), omp (OpenMP), threads or cpu (default: a pool of threads\n"
+                   "that sleep when idle, faster than omp on a machine busy with other work), or\n"
+                   "cuda (the steps on an NVIDIA GPU; needs a build with CUDA: see --version);\n"
+                   "replaces the scene's numerics.backend")
+        ->check(CLI::IsMember({"seq", "omp", "threads", "cpu", "cuda"}));
+    // Finite and positive: CLI::PositiveNumber lets "nan" through.
+    const CLI::Validator finitePositive(
+        [](std::string& text) {
+            double v = 0;
+            return CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v > 0
+                       ? std::string()
+                       : "a finite number > 0 is required, found " + text;
+        },
+        "POSITIVE");
+    app.add_option("--end-time", c.endTime, "end time [s] (default: the scene's time.end)")
+        ->check(finitePositive);
+    app.add_option("--set", c.sets,
+                   "override a scene value by its dotted path, e.g.\n"
+                   "--set particles.spacing=0.01 --set fluids.0.temperature=30 "
+                   "(repeatable)");
+    app.add_option("--restart", c.restart, "continue from a checkpoint file");
+    app.add_option("--checkpoint-every", c.options.checkpointEvery,
+                   "write a checkpoint every T simulated seconds")
+        ->check(finitePositive);
+    app.add_flag("-q,--quiet", c.options.quiet, "print nothing but errors");
+    app.add_flag("--print-scene", c.printScene, "print the scene (after --set) as JSON and exit");
+    app.add_flag("--list-scenes", c.list,
+                 "list the shipped scenes (./scenes, else the source tree's) with the program that "
+                 "runs each, and exit");
+    app.set_version_flag("--version", info.name +
+                                          " (numerics) 0.1.0\nCUDA back end (--backend cuda): " +
+                                          (device::cudaBuilt() ? std::string("built")
+                                                               : std::string("not built (no CUDA "
+                                                                             "compiler at build "
+                                                                             "time)")));
+}
+
+/// The scene to run: the file given, else the checkpoint's, else the built-in one; --set applied.
+template <int Dim>
+SceneDocument sceneToRun(const CommandLine& c, const AppInfo& info) {
+    SceneDocument doc = !c.sceneFile.empty() ? SceneDocument::fromFile(c.sceneFile)
+                        : c.options.restart
+                            ? sceneOfCheckpoint(*c.options.restart, Dim)
+                            : SceneDocument::fromText(info.defaultScene, info.defaultSceneName);
+    for (const std::string& s : c.sets) doc.set(s);
+    const int dim = doc.dimension();
+    if (dim != Dim)
+        throw AppError(ExitCode::SCENE,
+                       doc.file() + ": dimension: this is a " + std::to_string(dim) + "D scene, " +
+                           info.name + " runs " + std::to_string(Dim) + "D scenes: run it with " +
+                           (dim == 2 ? "fluid_sim" : "fluid_sim_3d"));
+    return doc;
+}
+
+/// Runs f and returns its exit code; an error becomes one line and its exit code. `alone`
+/// reports an error this process alone met (and ends every process).
+template <class F, class Alone>
+int reportingErrors(const std::string& program, F&& f, Alone&& alone) {
+    try {
+        return f();
+    } catch (const LoneFailure& e) {
+        return alone(std::string("error: ") + e.what(), e.code());
+    } catch (const AppError& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
+        return int(e.code());
+    } catch (const ExpressionError& e) {
+        std::fprintf(stderr, "%s: error: expression: %s\n", program.c_str(), e.what());
+        return int(ExitCode::EXPRESSION);
+    } catch (const sph::SettingsError& e) {
+        std::fprintf(stderr, "%s: error: scene setting: %s\n", program.c_str(), e.what());
+        return int(ExitCode::SCENE);
+    } catch (const sph::ThreadStartError& e) {
+        return alone(std::string("error: ") + e.what() +
+                         ": run with fewer --threads, or raise the limit on processes or memory "
+                         "(ulimit -u, ulimit -v, the batch system's request)",
+                     ExitCode::RESOURCES);
+    } catch (const std::bad_alloc&) {
+        return alone(
+            "error: out of memory (try a larger particles.spacing, fewer --threads, or "
+            "raise the memory limit: ulimit -v, the batch system's request)",
+            ExitCode::RESOURCES);
+    } catch (const std::exception& e) {
+        return alone(std::string("internal error: ") + e.what() + " (please report it)",
+                     ExitCode::INTERNAL);
+    }
+}
+
+}  // namespace
+
 template <int Dim>
 int runApp(int argc, char** argv, const AppInfo& info) {
     // A closed stdout (`fluid_sim | head -1`) must not end the run before its outputs: writes to
@@ -151,58 +261,8 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     CLI::App app{"Smoothed Particle Hydrodynamics of water with heat transfer in " +
                      std::to_string(Dim) + "D (numerics 0.1.0).",
                  info.name};
-    std::string sceneFile;
-    std::vector<std::string> sets;
-    RunOptions opt;
-    opt.program = info.name;
-    opt.communicator = comm.get();
-    opt.fieldNames = info.fieldNames;
-    std::string out, restart;
-    double endTime = 0;
-    bool printScene = false, list = false;
-    app.add_option(
-        "scene", sceneFile,
-        "scene file (JSON); without it the built-in scene " + info.defaultSceneName + " runs");
-    app.add_option("--out", out, "output directory (default: the scene's output.directory)");
-    app.add_option("--threads", opt.threads,
-                   "threads of the omp and threads backends (default: all cores)")
-        ->check(CLI::Range(1, 1024));
-    app.add_option("--backend", opt.backend,
-                   "seq (one thread), omp (OpenMP), threads or cpu (default: a pool of threads\n"
-                   "that sleep when idle, faster than omp on a machine busy with other work), or\n"
-                   "cuda (the steps on an NVIDIA GPU; needs a build with CUDA: see --version);\n"
-                   "replaces the scene's numerics.backend")
-        ->check(CLI::IsMember({"seq", "omp", "threads", "cpu", "cuda"}));
-    // Finite and positive: CLI::PositiveNumber lets "nan" through.
-    const CLI::Validator finitePositive(
-        [](std::string& text) {
-            double v = 0;
-            return CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v > 0
-                       ? std::string()
-                       : "a finite number > 0 is required, found " + text;
-        },
-        "POSITIVE");
-    app.add_option("--end-time", endTime, "end time [s] (default: the scene's time.end)")
-        ->check(finitePositive);
-    app.add_option("--set", sets,
-                   "override a scene value by its dotted path, e.g.\n"
-                   "--set particles.spacing=0.01 --set fluids.0.temperature=30 "
-                   "(repeatable)");
-    app.add_option("--restart", restart, "continue from a checkpoint file");
-    app.add_option("--checkpoint-every", opt.checkpointEvery,
-                   "write a checkpoint every T simulated seconds")
-        ->check(finitePositive);
-    app.add_flag("-q,--quiet", opt.quiet, "print nothing but errors");
-    app.add_flag("--print-scene", printScene, "print the scene (after --set) as JSON and exit");
-    app.add_flag("--list-scenes", list,
-                 "list the shipped scenes (./scenes, else the source tree's) with the program that "
-                 "runs each, and exit");
-    app.set_version_flag("--version", info.name +
-                                          " (numerics) 0.1.0\nCUDA back end (--backend cuda): " +
-                                          (device::cudaBuilt() ? std::string("built")
-                                                               : std::string("not built (no CUDA "
-                                                                             "compiler at build "
-                                                                             "time)")));
+    CommandLine c;
+    addOptions(app, c, info);
     app.footer(examples(info.name, Dim));
     try {
         app.parse(argc, argv);
@@ -215,59 +275,26 @@ int runApp(int argc, char** argv, const AppInfo& info) {
                      info.name.c_str(), e.what(), info.name.c_str());
         return int(ExitCode::USAGE);
     }
-    if (list) {
+    if (c.list) {
         std::error_code ec;
         return listScenes(std::filesystem::is_directory("scenes", ec) ? "scenes" : info.scenesDir,
                           info);
     }
+    RunOptions& opt = c.options;
+    opt.program = info.name, opt.communicator = comm.get(), opt.fieldNames = info.fieldNames;
     opt.backendGiven = app.count("--backend") > 0;
-    if (!out.empty()) opt.outDir = out;
-    if (endTime > 0) opt.endTime = endTime;
-    if (!restart.empty()) opt.restart = restart;
-    try {
-        SceneDocument doc = !sceneFile.empty() ? SceneDocument::fromFile(sceneFile)
-                            : opt.restart
-                                ? sceneOfCheckpoint(*opt.restart, Dim)
-                                : SceneDocument::fromText(info.defaultScene, info.defaultSceneName);
-        for (const std::string& s : sets) doc.set(s);
-        const int dim = doc.dimension();
-        if (dim != Dim)
-            throw AppError(ExitCode::SCENE, doc.file() + ": dimension: this is a " +
-                                                std::to_string(dim) + "D scene, " + info.name +
-                                                " runs " + std::to_string(Dim) +
-                                                "D scenes: run it with " +
-                                                (dim == 2 ? "fluid_sim" : "fluid_sim_3d"));
-        if (printScene) {
+    if (!c.out.empty()) opt.outDir = c.out;
+    if (c.endTime > 0) opt.endTime = c.endTime;
+    if (!c.restart.empty()) opt.restart = c.restart;
+    return reportingErrors(
+        info.name,
+        [&] {
+            const SceneDocument doc = sceneToRun<Dim>(c, info);
+            if (!c.printScene) return runSimulation<Dim>(doc, opt);
             std::cout << doc.dump() << "\n";
             return 0;
-        }
-        return runSimulation<Dim>(doc, opt);
-    } catch (const LoneFailure& e) {
-        return alone(std::string("error: ") + e.what(), e.code());
-    } catch (const AppError& e) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "%s: error: %s\n", info.name.c_str(), e.what());
-        return int(e.code());
-    } catch (const ExpressionError& e) {
-        std::fprintf(stderr, "%s: error: expression: %s\n", info.name.c_str(), e.what());
-        return int(ExitCode::EXPRESSION);
-    } catch (const sph::SettingsError& e) {
-        std::fprintf(stderr, "%s: error: scene setting: %s\n", info.name.c_str(), e.what());
-        return int(ExitCode::SCENE);
-    } catch (const sph::ThreadStartError& e) {
-        return alone(std::string("error: ") + e.what() +
-                         ": run with fewer --threads, or raise the limit on processes or memory "
-                         "(ulimit -u, ulimit -v, the batch system's request)",
-                     ExitCode::RESOURCES);
-    } catch (const std::bad_alloc&) {
-        return alone(
-            "error: out of memory (try a larger particles.spacing, fewer --threads, or "
-            "raise the memory limit: ulimit -v, the batch system's request)",
-            ExitCode::RESOURCES);
-    } catch (const std::exception& e) {
-        return alone(std::string("internal error: ") + e.what() + " (please report it)",
-                     ExitCode::INTERNAL);
-    }
+        },
+        alone);
 }
 
 template int runApp<2>(int, char**, const AppInfo&);

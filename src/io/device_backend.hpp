@@ -54,7 +54,7 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
                        "an open side");
     if (scene.integrator != "leapfrog")
         refuse("time.integrator \"" + scene.integrator + "\"", "this integrator");
-    if (scene.evaluation == "symmetric")
+    if (sph::evaluationFromName(scene.evaluation) == sph::Evaluation::SYMMETRIC)
         refuse("particles.evaluation \"symmetric\"", "the symmetric evaluation");
     if (setup.model.density == sph::DensityMode::SUMMATION)
         refuse("physics.density \"" + scene.physics.density + "\" (density by summation here)",

@@ -120,8 +120,11 @@ std::string At::string() const {
     return v.get<std::string>();
 }
 
-std::string At::choice(const std::vector<std::string>& choices) const {
-    const std::vector<std::string>& names = choices;
+std::string At::choice(std::initializer_list<const char*> choices) const {
+    return choice(std::vector<std::string>(choices.begin(), choices.end()));
+}
+
+std::string At::choice(const std::vector<std::string>& names) const {
     std::string list;
     for (const auto& n : names) list += (list.empty() ? "" : ", ") + ("\"" + n + "\"");
     if (!v.is_string()) fail("one of " + list);

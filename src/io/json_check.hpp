@@ -56,10 +56,9 @@ struct At {
         return has(key) ? (*this)[key].boolean() : fallback;
     }
     std::string string() const;
-    std::string choice(const std::vector<std::string>& choices) const;
-    std::string choice(std::initializer_list<const char*> choices) const {
-        return choice(std::vector<std::string>(choices.begin(), choices.end()));
-    }
+    std::string choice(std::initializer_list<const char*> choices) const;
+    /// One of `names` (a choice's table: sph/choice_table.hpp), else fails listing them.
+    std::string choice(const std::vector<std::string>& names) const;
     /// A number or an expression string in the variables `allowed` (of "xyzt"); one that uses
     /// another variable is refused (exit code 6), naming it: it would be taken as 0.
     /// `meaning` says why the others are not allowed ("gravity is uniform in space").

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,89 +42,28 @@ class PhysicalCheck {
     template <int Dim>
     std::string check(const sph::Storage<Dim>& s, double t, const parallel::Communicator& comm,
                       sph::IScheduler& scheduler) {
-        const auto r = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
-        const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
-        const auto rho = s.template getValue<double>(sph::QuantityId::DENSITY);
-        const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
         checkRanges(s, t, comm);
-        const Extremes none{0, rho0_, rho0_, s.size(), s.size(), s.size()};
-        const Extremes e = sph::reduceChunks(
-            scheduler, s.size(), 8192, none,
-            [&](sph::Size b, sph::Size end, Extremes& x) {
-                for (sph::Size i = b; i < end; ++i) {
-                    if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
-                    if (const double speed = norm(v[i]); speed > x.vmax)
-                        x.vmax = speed, x.fastest = i;
-                    if (rho[i] < x.rhoMin) x.rhoMin = rho[i], x.thinnest = i;
-                    if (rho[i] > x.rhoMax) x.rhoMax = rho[i], x.densest = i;
-                }
-            },
-            [](Extremes& x, const Extremes& p) {
-                if (p.vmax > x.vmax) x.vmax = p.vmax, x.fastest = p.fastest;
-                if (p.rhoMin < x.rhoMin) x.rhoMin = p.rhoMin, x.thinnest = p.thinnest;
-                if (p.rhoMax > x.rhoMax) x.rhoMax = p.rhoMax, x.densest = p.densest;
-            });
-        double vmax = e.vmax, rhoMin = e.rhoMin, rhoMax = e.rhoMax;
-        const sph::Size fastest = e.fastest, densest = e.densest, thinnest = e.thinnest;
-        const double localVmax = vmax, localRhoMin = rhoMin, localRhoMax = rhoMax;
-        vmax = comm.maximum(vmax), rhoMin = comm.minimum(rhoMin), rhoMax = comm.maximum(rhoMax);
-        // Where the extreme particle is (the processes agree on whether to ask, so all take
-        // part): the position held by the lowest rank whose own extreme is the global one.
-        const auto where = [&](sph::Size i, bool holds) {
-            parallel::Bytes mine;
-            if (holds) {
-                const auto* bytes = reinterpret_cast<const char*>(&r[i]);
-                mine.assign(bytes, bytes + sizeof(sph::Vector<Dim>));
+        const Extremes local = findExtremes(s, scheduler);
+        Extremes all = local;
+        all.vmax = comm.maximum(local.vmax), all.rhoMin = comm.minimum(local.rhoMin);
+        all.rhoMax = comm.maximum(local.rhoMax);
+        // Where each extreme particle is: the processes agree on whether to ask, so all take part.
+        const auto positions = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+        const Where where{[&, positions](Extreme which) {
+            switch (which) {
+                case Extreme::FASTEST:
+                    return position<Dim>(positions, local.fastest, local.vmax == all.vmax, comm);
+                case Extreme::THINNEST:
+                    return position<Dim>(positions, local.thinnest, local.rhoMin == all.rhoMin,
+                                         comm);
+                default:
+                    return position<Dim>(positions, local.densest, local.rhoMax == all.rhoMax,
+                                         comm);
             }
-            for (const parallel::Bytes& b : comm.allGather(mine)) {
-                if (b.size() != sizeof(sph::Vector<Dim>)) continue;
-                sph::Vector<Dim> x;
-                std::memcpy(&x, b.data(), sizeof x);
-                std::string text = " at (";
-                for (int d = 0; d < Dim; ++d) text += (d ? ", " : "") + formatted("%.3g", x[d]);
-                return text + ") m";
-            }
-            return std::string();
-        };
+        }};
         const std::string at = "at t = " + formatted("%.3g", t) + " s ";
-        if (vmax >= c0_)
-            throw AppError(ExitCode::UNSTABLE,
-                           at + "a fluid particle" + where(fastest, localVmax == vmax) +
-                               " moves at " + formatted("%.3g", vmax) +
-                               " m/s, at or above the sound speed " + formatted("%.3g", c0_) +
-                               " m/s: the run left the weakly-compressible model; raise the "
-                               "material's sound_speed or physics.max_speed, or lower time.cfl");
-        if (rhoMin < 0.5 * rho0_ || rhoMax > 2 * rho0_) {
-            const bool low = rhoMin < 0.5 * rho0_;
-            throw AppError(ExitCode::UNSTABLE,
-                           at + "the fluid density reached " +
-                               formatted("%.3g", low ? rhoMin : rhoMax) + " kg/m^3" +
-                               (low ? where(thinnest, localRhoMin == rhoMin)
-                                    : where(densest, localRhoMax == rhoMax)) +
-                               " against the rest density " + formatted("%.3g", rho0_) +
-                               ": the run is lost; raise the sound speed or refine the spacing");
-        }
-        std::string warning;
-        if (!speedWarned_ && vmax > WARN_SPEED * U_) {
-            speedWarned_ = true;
-            warning = at + "a fluid particle" + where(fastest, localVmax == vmax) + " moves at " +
-                      formatted("%.3g", vmax) + " m/s, " + formatted("%.3g", vmax / U_) +
-                      " times the velocity scale U = " + formatted("%.3g", U_) +
-                      " m/s the sound speed was set for: spray this fast is not physical; set "
-                      "physics.max_speed to the speed you expect";
-        } else if (!densityWarned_ &&
-                   (rhoMax > rho0_ * (1 + WARN_DENSITY) || rhoMin < rho0_ * (1 - WARN_DENSITY))) {
-            densityWarned_ = true;
-            // Named: the particle furthest from rest, below or above.
-            const bool thin = rho0_ - rhoMin >= rhoMax - rho0_;
-            warning = at + "the fluid density ranges over " + formatted("%.3g", rhoMin) + " to " +
-                      formatted("%.3g", rhoMax) + " kg/m^3 (" +
-                      (thin ? "the lowest" : "the highest") +
-                      (thin ? where(thinnest, localRhoMin == rhoMin)
-                            : where(densest, localRhoMax == rhoMax)) +
-                      "), more than 20 % from the rest density " + formatted("%.3g", rho0_) +
-                      ": the fluid is far from incompressible; raise the sound speed";
-        }
+        stopIfLost(all, at, where);
+        const std::string warning = warnOnce(all, at, where);
         if (!warning.empty()) warnings_.push_back(warning);
         return warning;
     }
@@ -178,6 +118,99 @@ class PhysicalCheck {
         double vmax, rhoMin, rhoMax;
         sph::Size fastest, thinnest, densest;
     };
+    enum class Extreme { FASTEST, THINNEST, DENSEST };
+    /// " at (x, y) m": where an extreme particle is, on whichever process holds it.
+    using Where = std::function<std::string(Extreme)>;
+
+    /// This process's extremes, each at the first particle in storage order that reaches it.
+    template <int Dim>
+    Extremes findExtremes(const sph::Storage<Dim>& s, sph::IScheduler& scheduler) const {
+        const auto v = s.template getDt<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+        const auto rho = s.template getValue<double>(sph::QuantityId::DENSITY);
+        const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
+        const Extremes none{0, rho0_, rho0_, s.size(), s.size(), s.size()};
+        return sph::reduceChunks(
+            scheduler, s.size(), 8192, none,
+            [&](sph::Size b, sph::Size end, Extremes& x) {
+                for (sph::Size i = b; i < end; ++i) {
+                    if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
+                    if (const double speed = norm(v[i]); speed > x.vmax)
+                        x.vmax = speed, x.fastest = i;
+                    if (rho[i] < x.rhoMin) x.rhoMin = rho[i], x.thinnest = i;
+                    if (rho[i] > x.rhoMax) x.rhoMax = rho[i], x.densest = i;
+                }
+            },
+            [](Extremes& x, const Extremes& p) {
+                if (p.vmax > x.vmax) x.vmax = p.vmax, x.fastest = p.fastest;
+                if (p.rhoMin < x.rhoMin) x.rhoMin = p.rhoMin, x.thinnest = p.thinnest;
+                if (p.rhoMax > x.rhoMax) x.rhoMax = p.rhoMax, x.densest = p.densest;
+            });
+    }
+
+    /// The position held by the lowest rank whose own extreme is the global one (`holds`).
+    template <int Dim>
+    static std::string position(sph::ArrayView<const sph::Vector<Dim>> r, sph::Size i, bool holds,
+                                const parallel::Communicator& comm) {
+        parallel::Bytes mine;
+        if (holds) {
+            const auto* bytes = reinterpret_cast<const char*>(&r[i]);
+            mine.assign(bytes, bytes + sizeof(sph::Vector<Dim>));
+        }
+        for (const parallel::Bytes& b : comm.allGather(mine)) {
+            if (b.size() != sizeof(sph::Vector<Dim>)) continue;
+            sph::Vector<Dim> x;
+            std::memcpy(&x, b.data(), sizeof x);
+            std::string text = " at (";
+            for (int d = 0; d < Dim; ++d) text += (d ? ", " : "") + formatted("%.3g", x[d]);
+            return text + ") m";
+        }
+        return std::string();
+    }
+
+    /// Throws UNSTABLE where the run left the model: supersonic flow or a density off by 2x.
+    void stopIfLost(const Extremes& e, const std::string& at, const Where& where) const {
+        if (e.vmax >= c0_)
+            throw AppError(ExitCode::UNSTABLE,
+                           at + "a fluid particle" + where(Extreme::FASTEST) + " moves at " +
+                               formatted("%.3g", e.vmax) + " m/s, at or above the sound speed " +
+                               formatted("%.3g", c0_) +
+                               " m/s: the run left the weakly-compressible model; raise the "
+                               "material's sound_speed or physics.max_speed, or lower time.cfl");
+        if (e.rhoMin < 0.5 * rho0_ || e.rhoMax > 2 * rho0_) {
+            const bool low = e.rhoMin < 0.5 * rho0_;
+            throw AppError(ExitCode::UNSTABLE,
+                           at + "the fluid density reached " +
+                               formatted("%.3g", low ? e.rhoMin : e.rhoMax) + " kg/m^3" +
+                               where(low ? Extreme::THINNEST : Extreme::DENSEST) +
+                               " against the rest density " + formatted("%.3g", rho0_) +
+                               ": the run is lost; raise the sound speed or refine the spacing");
+        }
+    }
+
+    /// The first warning of each kind (spray too fast, density far from rest), else "".
+    std::string warnOnce(const Extremes& e, const std::string& at, const Where& where) {
+        if (!speedWarned_ && e.vmax > WARN_SPEED * U_) {
+            speedWarned_ = true;
+            return at + "a fluid particle" + where(Extreme::FASTEST) + " moves at " +
+                   formatted("%.3g", e.vmax) + " m/s, " + formatted("%.3g", e.vmax / U_) +
+                   " times the velocity scale U = " + formatted("%.3g", U_) +
+                   " m/s the sound speed was set for: spray this fast is not physical; set "
+                   "physics.max_speed to the speed you expect";
+        }
+        if (!densityWarned_ &&
+            (e.rhoMax > rho0_ * (1 + WARN_DENSITY) || e.rhoMin < rho0_ * (1 - WARN_DENSITY))) {
+            densityWarned_ = true;
+            // Named: the particle furthest from rest, below or above.
+            const bool thin = rho0_ - e.rhoMin >= e.rhoMax - rho0_;
+            return at + "the fluid density ranges over " + formatted("%.3g", e.rhoMin) + " to " +
+                   formatted("%.3g", e.rhoMax) + " kg/m^3 (" +
+                   (thin ? "the lowest" : "the highest") +
+                   where(thin ? Extreme::THINNEST : Extreme::DENSEST) +
+                   "), more than 20 % from the rest density " + formatted("%.3g", rho0_) +
+                   ": the fluid is far from incompressible; raise the sound speed";
+        }
+        return "";
+    }
     static constexpr double WARN_SPEED = 3, WARN_DENSITY = 0.2;
 
     double U_, c0_, rho0_;

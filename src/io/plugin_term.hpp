@@ -5,6 +5,7 @@
 
 #include <exception>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -14,12 +15,30 @@
 
 namespace num::io {
 
+/// The first failure of a plugin's term in a step. On several processes it is kept until the
+/// step ends (a process that left mid-step would leave the others waiting in an exchange): the
+/// plugins' hooks are skipped for the rest of the step, and the processes agree on the failure
+/// at its end (Simulation), so that it is reported once.
+struct PluginFailure {
+    bool keepUntilStepEnd = false;
+    std::optional<AppError> pending;
+
+    /// Throws the pending failure, if any.
+    void rethrow() {
+        if (!pending) return;
+        const AppError e = *pending;
+        pending.reset();
+        throw e;
+    }
+};
+
 template <int Dim>
 class PluginTerm final : public sph::IEquationTerm<Dim> {
   public:
     /// `label` names the term in messages, e.g. `term "spring" (plugins.0.terms.1, libx.so)`.
-    PluginTerm(std::shared_ptr<sph::IEquationTerm<Dim>> term, std::string label)
-        : term_(std::move(term)), label_(std::move(label)) {}
+    PluginTerm(std::shared_ptr<sph::IEquationTerm<Dim>> term, std::string label,
+               std::shared_ptr<PluginFailure> failure)
+        : term_(std::move(term)), label_(std::move(label)), failure_(std::move(failure)) {}
 
     void setDerivatives(sph::DerivativeHolder<Dim>& d, const sph::RunSettings& s) override {
         guard("setDerivatives", -1, [&] { term_->setDerivatives(d, s); });
@@ -56,18 +75,24 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
   private:
     /// Runs f; an exception from it becomes an AppError naming the term and the hook (and the
     /// time t when t >= 0). AppErrors (e.g. an instability found by the term) pass unchanged.
+    /// The error is thrown, or kept in `failure_` until the step ends.
     template <class F>
     void guard(const char* hook, double t, F&& f) const {
+        if (failure_->pending) return;
         try {
             f();
-        } catch (const AppError&) {
-            throw;
+        } catch (const AppError& e) {
+            fail(e);
         } catch (const std::exception& e) {
-            throw AppError(ExitCode::PLUGIN, where(hook, t) + ": " + e.what());
+            fail(AppError(ExitCode::PLUGIN, where(hook, t) + ": " + e.what()));
         } catch (...) {
-            throw AppError(ExitCode::PLUGIN,
-                           where(hook, t) + ": it threw something that is not a std::exception");
+            fail(AppError(ExitCode::PLUGIN,
+                          where(hook, t) + ": it threw something that is not a std::exception"));
         }
+    }
+    void fail(const AppError& e) const {
+        if (!failure_->keepUntilStepEnd) throw e;
+        failure_->pending = e;
     }
     std::string where(const char* hook, double t) const {
         std::string text = label_ + " failed in " + hook;
@@ -77,6 +102,7 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
 
     std::shared_ptr<sph::IEquationTerm<Dim>> term_;
     std::string label_;
+    std::shared_ptr<PluginFailure> failure_;
 };
 
 }  // namespace num::io

@@ -180,7 +180,8 @@ std::string names(const std::vector<std::string>& list) {
 
 template <int Dim>
 std::shared_ptr<sph::IEquationTerm<Dim>> makeTerm(const Library& lib, const At& t,
-                                                  const std::string& program) {
+                                                  const std::string& program,
+                                                  const std::shared_ptr<PluginFailure>& failure) {
     if (!t.v.is_object()) t.fail("an object {\"term\": NAME, parameters...}");
     const At nameAt = t.required("term");
     const std::string name = nameAt.string();
@@ -228,7 +229,7 @@ std::shared_ptr<sph::IEquationTerm<Dim>> makeTerm(const Library& lib, const At& 
                          "the unknown key '" + unnamed[0] + "'",
                          guess.empty() ? "" : "did you mean '" + guess + "'?");
     }
-    return std::make_shared<PluginTerm<Dim>>(std::move(term), label);
+    return std::make_shared<PluginTerm<Dim>>(std::move(term), label, failure);
 }
 
 }  // namespace
@@ -272,7 +273,8 @@ ScenePlugins<Dim> loadPlugins(const SceneDocument& doc) {
         if (!terms.v.is_array() || terms.v.empty())
             terms.fail("a non-empty array of terms, each {\"term\": NAME, parameters...}");
         for (std::size_t k = 0; k < terms.v.size(); ++k)
-            out.terms += sph::EquationHolder<Dim>(makeTerm<Dim>(lib, element(terms, k), program));
+            out.terms += sph::EquationHolder<Dim>(
+                makeTerm<Dim>(lib, element(terms, k), program, out.failure));
         if (!p.has("fields")) continue;
         const At fields = p["fields"];
         if (!fields.v.is_array()) fields.fail("an array of field names");

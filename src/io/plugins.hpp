@@ -2,11 +2,13 @@
 // order listed, before the run is set up; their terms join the fluid model (extraTerms).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/fields.hpp"
 #include "io/scene_loader.hpp"
+#include "plugin_term.hpp"
 #include "sph/equation_term.hpp"
 
 namespace num::io {
@@ -29,6 +31,8 @@ struct ScenePlugins {
     std::vector<Range> ranges;
     /// "key = value" lines for the checkpoint's fingerprint: each library and its content.
     std::string fingerprint;
+    /// Where the terms keep a failure until the step ends (plugin_term.hpp).
+    std::shared_ptr<PluginFailure> failure = std::make_shared<PluginFailure>();
     bool empty() const { return terms.size() == 0; }
 };
 

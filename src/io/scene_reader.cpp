@@ -5,10 +5,15 @@
 #include <set>
 
 #include "boundary_types.hpp"
+#include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
 #include "json_check.hpp"
 #include "sph/defaults.hpp"
+#include "sph/equation_of_state_choice.hpp"
+#include "sph/evaluation_mode.hpp"
+#include "sph/integrator_choice.hpp"
+#include "sph/kernel_table.hpp"
 
 namespace num::io {
 
@@ -225,10 +230,9 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     p.object({"spacing", "h_over_spacing", "kernel", "evaluation"}, {"spacing"});
     s.spacing = p["spacing"].number(0, 1e300, true, "m");
     s.hOverSpacing = p.number("h_over_spacing", s.hOverSpacing, 0.8, 3.0);
-    if (p.has("kernel"))
-        s.kernel =
-            p["kernel"].choice({"cubic_spline", "wendland_c2", "wendland_c4", "quintic_spline"});
-    if (p.has("evaluation")) s.evaluation = p["evaluation"].choice({"asymmetric", "symmetric"});
+    if (p.has("kernel")) s.kernel = p["kernel"].choice(sph::choiceNames(sph::kernelTable));
+    if (p.has("evaluation"))
+        s.evaluation = p["evaluation"].choice(sph::choiceNames(sph::evaluationTable));
 
     const At t = root["time"];
     t.object({"end", "cfl", "integrator", "dt_max"}, {"end"});
@@ -236,7 +240,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     s.cfl = t.number("cfl", s.cfl, 1e-6, 1);  // the engine's range (sph/settings.hpp)
     s.dtMax = t.number("dt_max", 0, 0, 1e300, false, "s");
     if (t.has("integrator"))
-        s.integrator = t["integrator"].choice({"leapfrog", "predictor_corrector", "euler"});
+        s.integrator = t["integrator"].choice(sph::choiceNames(sph::integratorTable));
 
     if (root.has("gravity"))
         s.gravity = readField<Dim>(
@@ -381,7 +385,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.heat = ph.boolean("heat", s.physics.heat);
         s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
         if (ph.has("density"))
-            s.physics.density = ph["density"].choice({"auto", "continuity", "summation"});
+            s.physics.density = ph["density"].choice(sph::choiceNames(densityTable));
         s.physics.densityDiffusion =
             ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
         s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
@@ -394,7 +398,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
         s.maxSpeed = ph.number("max_speed", 0, 0, kMaxSoundSpeed / sph::defaults::soundSpeedFactor,
                                false, "m/s");
-        if (ph.has("eos")) s.physics.eos = ph["eos"].choice({"tait", "linear"});
+        if (ph.has("eos")) s.physics.eos = ph["eos"].choice(sph::choiceNames(sph::eosTable));
         s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
         s.physics.maxTension = ph.number("max_tension", s.physics.maxTension, 0, 1e12, true, "Pa");
     }

@@ -4,7 +4,12 @@
 #include <filesystem>
 
 #include "boundary_types.hpp"
+#include "io/density_choice.hpp"
 #include "io/scene_loader.hpp"
+#include "sph/equation_of_state_choice.hpp"
+#include "sph/evaluation_mode.hpp"
+#include "sph/integrator_choice.hpp"
+#include "sph/kernel_table.hpp"
 
 using namespace num::io;
 
@@ -89,34 +94,61 @@ TEST(SceneReader, PairLoopEvaluation) {
     EXPECT_THROW(readScene<2>(doc), AppError);
 }
 
-/// The message of the AppError that reading the scene throws ("" if none).
-std::string readError(const SceneDocument& doc) {
+/// The message of readScene's refusal of `doc` (empty if it was accepted).
+std::string refusal(const SceneDocument& doc) {
     try {
         readScene<2>(doc);
     } catch (const AppError& e) {
+        EXPECT_EQ(e.code(), ExitCode::SCENE);
         return e.what();
     }
+    ADD_FAILURE() << "accepted";
     return "";
+}
+
+// Every choice's table (sph/choice_table.hpp) gives the values the reader accepts and lists them
+// all when it refuses one.
+template <class Table>
+void expectTheTableDrivesTheChoice(const std::string& key, const Table& table) {
+    SCOPED_TRACE(key);
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    for (const std::string& name : num::sph::choiceNames(table)) {
+        doc.set(key + "=\"" + name + "\"");
+        EXPECT_NO_THROW(readScene<2>(doc)) << name;
+    }
+    doc.set(key + "=\"no_such_choice\"");
+    const std::string message = refusal(doc);
+    EXPECT_NE(message.find(key), std::string::npos) << message;
+    for (const std::string& name : num::sph::choiceNames(table))
+        EXPECT_NE(message.find("\"" + name + "\""), std::string::npos) << message;
+}
+
+TEST(SceneReader, TheTablesDriveTheChoices) {
+    expectTheTableDrivesTheChoice("particles.kernel", num::sph::kernelTable);
+    expectTheTableDrivesTheChoice("particles.evaluation", num::sph::evaluationTable);
+    expectTheTableDrivesTheChoice("time.integrator", num::sph::integratorTable);
+    expectTheTableDrivesTheChoice("physics.eos", num::sph::eosTable);
+    expectTheTableDrivesTheChoice("physics.density", densityTable);
 }
 
 TEST(SceneReader, BoundaryTypesComeFromTheTable) {
     const std::string tiny = std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json";
     SceneDocument doc = SceneDocument::fromFile(tiny);
     doc.set("boundaries.x_min.type=sloshing");
-    const std::string unknown = readError(doc);
+    const std::string unknown = refusal(doc);
     for (const BoundaryType<2>& type : boundaryTypes<2>())
         EXPECT_NE(unknown.find("\"" + type.name + "\""), std::string::npos) << unknown;
 
     nlohmann::json j = SceneDocument::fromFile(tiny).json();
     j["boundaries"].erase("x_min");
-    const std::string missing = readError(SceneDocument::fromText(j.dump(), "tiny_2d.json"));
+    const std::string missing = refusal(SceneDocument::fromText(j.dump(), "tiny_2d.json"));
     EXPECT_NE(missing.find(boundaryTypeChoices<2>()), std::string::npos) << missing;
 
     // A key of one type on a side of another names the types it applies to.
     doc = SceneDocument::fromFile(tiny);
     doc.set("boundaries.y_max.type=open");
     doc.set("boundaries.y_max.slip=true");
-    const std::string other = readError(doc);
+    const std::string other = refusal(doc);
     EXPECT_NE(other.find("boundaries.y_max.slip"), std::string::npos) << other;
     EXPECT_NE(other.find("no 'slip' on an open side (it applies to wall sides only)"),
               std::string::npos)

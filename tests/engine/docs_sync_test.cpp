@@ -1,14 +1,20 @@
 // docs/extending.md shows the full code of the three examples: it must be the code that is built
 // and tested, character for character. docs/scenes.md states the numerical defaults: they must
-// be those of sph/defaults.hpp, the ones the scene reader uses.
+// be those of sph/defaults.hpp, the ones the scene reader uses; and it lists every name of each
+// choice's table (sph/choice_table.hpp).
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 #include <string>
 
+#include "io/density_choice.hpp"
 #include "io/scene.hpp"
 #include "sph/defaults.hpp"
+#include "sph/equation_of_state_choice.hpp"
+#include "sph/evaluation_mode.hpp"
+#include "sph/integrator_choice.hpp"
+#include "sph/kernel_table.hpp"
 
 namespace {
 
@@ -76,6 +82,26 @@ TEST(Docs, ScenesStateTheDefaults) {
     EXPECT_EQ(scene.physics.freeSurfaceTensionLimit, d::freeSurfaceTensionLimit);
     EXPECT_EQ(scene.physics.freeSurfaceDensityFloor, d::freeSurfaceDensityFloor);
     EXPECT_EQ(scene.physics.maxTension, d::maxTension);
+}
+
+/// Every name of `table` is in the row of `key`, as `name` or `"name"`.
+template <class Table>
+void expectTheRowListsTheTable(const std::string& doc, const std::string& key, const Table& table) {
+    const std::string row = docRow(doc, key);
+    for (const std::string& name : num::sph::choiceNames(table))
+        EXPECT_TRUE(row.find("`" + name + "`") != std::string::npos ||
+                    row.find("`\"" + name + "\"`") != std::string::npos)
+            << key << ": docs/scenes.md does not list " << name;
+}
+
+TEST(Docs, ScenesListEveryChoice) {
+    const std::string doc = readFile(std::string(NUMERICS_SOURCE_DIR) + "/docs/scenes.md");
+    expectTheRowListsTheTable(doc, "kernel", num::sph::kernelTable);
+    expectTheRowListsTheTable(doc, "evaluation", num::sph::evaluationTable);
+    expectTheRowListsTheTable(doc, "integrator", num::sph::integratorTable);
+    expectTheRowListsTheTable(doc, "eos", num::sph::eosTable);
+    const std::string physics = doc.substr(doc.find("### `physics`"));
+    expectTheRowListsTheTable(physics, "density", num::io::densityTable);
 }
 
 }  // namespace

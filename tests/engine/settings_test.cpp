@@ -5,6 +5,10 @@
 #include <string>
 
 #include "numerics.hpp"
+#include "sph/equation_of_state_choice.hpp"
+#include "sph/evaluation_mode.hpp"
+#include "sph/integrator_choice.hpp"
+#include "sph/kernel_choice.hpp"
 
 namespace {
 
@@ -76,6 +80,60 @@ TEST(Settings, UnknownNamesOfKernelIntegratorAndBackend) {
     EXPECT_THROW(makeScheduler("cuda", 2), std::invalid_argument);
     EXPECT_EQ(makeScheduler("omp", 3)->threadCount(), 3u);
     EXPECT_EQ(makeScheduler("seq", 3)->threadCount(), 1u);
+}
+
+// Every table's entry dispatches to its own alternative, and an unknown name is refused with a
+// message that lists every name of the table.
+template <class Table>
+void expectTheMessageListsTheTable(const std::string& message, const Table& table) {
+    for (const std::string& name : choiceNames(table))
+        EXPECT_NE(message.find(name), std::string::npos) << message;
+}
+
+template <int Dim>
+void expectEveryKernelDispatches() {
+    for (std::size_t i = 0; i < std::tuple_size_v<decltype(kernelTable)>; ++i)
+        withChoice(kernelTable, i, [&](auto entry) {
+            const KernelType type = kernelFromName(std::string(entry.name));
+            EXPECT_EQ(type.index, i) << entry.name;
+            withKernel<Dim>(type, [&](auto kernel) {
+                using Expected = typename decltype(entry)::template type<Dim>;
+                EXPECT_TRUE((std::is_same_v<decltype(kernel), Expected>)) << entry.name;
+            });
+        });
+}
+
+TEST(Choices, EveryKernelDispatches) {
+    expectEveryKernelDispatches<1>();
+    expectEveryKernelDispatches<2>();
+    expectEveryKernelDispatches<3>();
+    RunSettings s;
+    expectTheMessageListsTheTable(messageOf([&] { kernelFromName("gauss"); }), kernelTable);
+    expectTheMessageListsTheTable(messageOf([&] { s.set("kernel", "gauss"); }), kernelTable);
+    expectTheMessageListsTheTable(s.specs().at("kernel").help, kernelTable);
+    expectTheMessageListsTheTable(s.specs().at("evaluation").help, evaluationTable);
+}
+
+TEST(Choices, EveryIntegratorDispatches) {
+    for (const std::string& name : choiceNames(integratorTable)) {
+        EXPECT_EQ(makeIntegrator<2>(name)->name(), name);
+        EXPECT_EQ(makeIntegrator<3>(name)->name(), name);
+    }
+    expectTheMessageListsTheTable(messageOf([&] { makeIntegrator<2>("rk4"); }), integratorTable);
+}
+
+TEST(Choices, EveryEvaluationAndEquationOfStateDispatches) {
+    for (const auto& choice : evaluationTable)
+        EXPECT_EQ(evaluationFromName(std::string(choice.name)), choice.value);
+    for (const auto& choice : eosTable)
+        EXPECT_EQ(eosFromName(std::string(choice.name)), choice.value);
+    RunSettings s;
+    expectTheMessageListsTheTable(messageOf([&] { evaluationFromName("pairs"); }), evaluationTable);
+    expectTheMessageListsTheTable(messageOf([&] { s.set("evaluation", "pairs"); }),
+                                  evaluationTable);
+    expectTheMessageListsTheTable(messageOf([&] { eosFromName("ideal_gas"); }), eosTable);
+    EXPECT_EQ(defaultKernel, kernelFromName(defaults::kernel));
+    EXPECT_EQ(defaultEos, eosFromName(defaults::eos));
 }
 
 }  // namespace

@@ -98,8 +98,9 @@ def restart(mpiexec, flags, app, scene_args, work):
     return failures
 
 
-def errors(mpiexec, flags, app, scene, work):
-    """Under 4 processes: each error ends the run with its exit code and one line."""
+def errors(mpiexec, flags, app, scene, work, faulty_plugin=None):
+    """Under 4 processes: each error ends the run with its exit code and one line. With the
+    test's faulty plugin: a plugin term that fails on every process in the same step."""
     bad = f"{work}/bad.json"
     with open(bad, "w") as f:
         f.write('{"dimension": 2, "particles": {"spacing": 0.02,}}\n')
@@ -112,6 +113,12 @@ def errors(mpiexec, flags, app, scene, work):
              # A sound speed of 2 m/s: the falling water passes it at t = 0.15 s.
              ("unstable run", [scene] + quick + ["--set", "materials.water.sound_speed=2",
                                                  "--end-time", "0.5", "--out", f"{work}/u"], 9)]
+    if faulty_plugin:
+        plugins = json.dumps([{"library": faulty_plugin,
+                               "terms": [{"term": "throws_in_step", "after": 0.01}]}])
+        cases.append(("plugin failing on every process",
+                      [scene] + quick + ["--set", f"plugins={plugins}", "--end-time", "0.05",
+                                         "--out", f"{work}/p"], 10))
     failures = []
     for name, args, code in cases:
         done = run(mpi(mpiexec, flags, 4, app) + args, expect=None)
@@ -124,6 +131,10 @@ def errors(mpiexec, flags, app, scene, work):
     with open(f"{work}/u/summary.json") as f:
         if json.load(f)["status"] != "unstable":
             failures.append("unstable run: summary.json does not say unstable")
+    if faulty_plugin:
+        with open(f"{work}/p/summary.json") as f:
+            if json.load(f)["status"] != "failed":
+                failures.append("plugin failure: summary.json does not say failed")
     return failures
 
 
@@ -136,7 +147,7 @@ def main():
         elif mode == "restart":
             failures = restart(mpiexec, flags, app, sys.argv[5:], work)
         else:
-            failures = errors(mpiexec, flags, app, sys.argv[5], work)
+            failures = errors(mpiexec, flags, app, sys.argv[5], work, *sys.argv[6:7])
     for f in failures:
         print("FAIL:", f)
     print("PASS" if not failures else f"{len(failures)} failures")

@@ -6,6 +6,7 @@
 // p_b is an optional background pressure. Both have the sound speed c0 at rho = rho0.
 #pragma once
 
+#include "sph/defaults.hpp"
 #include "sph/host_device.hpp"
 #include "sph/types.hpp"
 
@@ -27,9 +28,9 @@ NUMERICS_HD_INLINE Float power(Float x, Float gamma) {
 
 struct EquationOfState {
     EosType type = EosType::TAIT;
-    Float rho0 = 1000;
-    Float c0 = 10;
-    Float gamma = 7;
+    Float rho0 = defaults::density;
+    Float c0 = defaults::materialSoundSpeed;
+    Float gamma = defaults::taitExponent;
     Float backgroundPressure = 0;
 
     NUMERICS_HD Float stiffness() const { return rho0 * c0 * c0 / gamma; }

@@ -2,6 +2,7 @@
 // compute once per particle before or after the pair loop (terms/*.hpp name the sources).
 #pragma once
 
+#include "sph/defaults.hpp"
 #include "sph/host_device.hpp"
 #include "sph/types.hpp"
 
@@ -24,7 +25,7 @@ enum class ViscosityLaw { EXPONENTIAL, WATER_VOGEL };
 ///       A = 2.939e-5 Pa s, B = 507.88 K, C = 149.3 K.
 struct ViscosityOfTemperature {
     ViscosityLaw law = ViscosityLaw::EXPONENTIAL;
-    Float coefficient = 0.02;  ///< b of the exponential law [1/K] (water near 20 degC: ~0.02)
+    Float coefficient = defaults::viscosityTemperatureCoefficient;  ///< b [1/K]
 
     /// nu at temperature T for a material with viscosity nu0 at T0 and rest density rho0.
     NUMERICS_HD Float operator()(Float T, Float nu0, Float T0, Float rho0) const {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "spatial/cell_grid.hpp"
+#include "sph/defaults.hpp"
 #include "sph/setup/shapes.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
@@ -19,20 +20,21 @@ struct WallSide {
     bool present = true;     ///< false: an open side (e.g. a free surface tank top)
     Vector<Dim> velocity{};  ///< prescribed surface velocity (a Couette or cavity lid)
     WallSlip slip = WallSlip::NO_SLIP;
-    Float temperature = 20;  ///< initial (or fixed, for thermal walls) temperature
-    int material = 0;        ///< index into FluidModel::materials
+    Float temperature =
+        defaults::temperature;  ///< initial (or fixed, for thermal walls) temperature
+    int material = 0;           ///< index into FluidModel::materials
 };
 
 /// Fluid filling a shape (the part inside the box and outside every body).
 template <int Dim>
 struct FluidRegion {
     Shape<Dim> shape;
-    Float temperature = 20;
+    Float temperature = defaults::temperature;
     int material = 0;
     /// Initial velocity at a position; empty means at rest.
     std::function<Vector<Dim>(const Vector<Dim>&)> velocity;
 
-    static FluidRegion filling(const Shape<Dim>& s, Float temperature = 20) {
+    static FluidRegion filling(const Shape<Dim>& s, Float temperature = defaults::temperature) {
         FluidRegion r;
         r.shape = s, r.temperature = temperature;
         return r;
@@ -43,7 +45,7 @@ struct FluidRegion {
 template <int Dim>
 struct SolidBody {
     Shape<Dim> shape;
-    Float temperature = 20;
+    Float temperature = defaults::temperature;
     int material = 0;
     WallSlip slip = WallSlip::NO_SLIP;
     /// Thickness of the particle shell below the surface; 0 fills the whole body.

@@ -36,7 +36,7 @@ template <int Dim>
 struct GeneratedParticle {
     Vector<Dim> x{}, v{};
     ParticleKind kind = ParticleKind::FLUID;
-    Float temperature = 20;
+    Float temperature = defaults::temperature;
     int material = 0;
     Vector<Dim> wallVelocity{};
     WallSlip slip = WallSlip::NO_SLIP;

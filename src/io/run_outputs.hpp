@@ -1,0 +1,116 @@
+// The observers that write the run's files (internal to numerics_io): the outputs every
+// output.every simulated seconds, and checkpoints every --checkpoint-every seconds and on Ctrl-C.
+// The root writes every file, from the particles of every process gathered.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/formatted.hpp"
+#include "run_parts.hpp"
+
+namespace num::io {
+
+/// Outputs fall on multiples of output.every, and the steps land on them. The slot is the next
+/// multiple, the file index (RunState::outputIndex) counts the files written: they differ only
+/// after a restart with another output.every, whose outputs go on from the first multiple after
+/// the checkpoint's time and whose files from the next free index, so no file is overwritten.
+template <int Dim>
+class OutputObserver final : public IStepObserver<Dim> {
+  public:
+    explicit OutputObserver(const RunParts<Dim>& p) : every_(p.scene.output.every) {
+        if (!p.options.restart) return;  // a new run writes its output at t = 0 first
+        const double t = p.state.time;
+        slot_ = std::max<std::int64_t>(0, std::int64_t(t / every_) - 1);
+        while (reached(t, double(slot_) * every_)) ++slot_;
+    }
+    double landingTime() const override { return double(slot_) * every_; }
+    bool needsParticles(const Simulation<Dim>& sim) const override { return due(sim); }
+    void afterStep(Simulation<Dim>& sim) override {
+        if (due(sim)) write(sim);
+    }
+    void afterRun(Simulation<Dim>& sim, const RunEnd& end) override {
+        if (!end.abandoned && sim.time() != sim.parts().lastOutput) write(sim);
+    }
+
+    /// Writes the particles at the present time.
+    void write(Simulation<Dim>& sim) {
+        RunParts<Dim>& p = sim.parts();
+        p.everyParticle(p.storage, [&](const sph::Storage<Dim>& all) {
+            onRoot(p.comm, [&] { p.outputs->write(all, sim.time(), int(p.state.outputIndex)); });
+        });
+        ++p.state.outputIndex, ++slot_;
+        p.lastOutput = sim.time();
+    }
+
+  private:
+    bool due(const Simulation<Dim>& sim) const { return reached(sim.time(), landingTime()); }
+    double every_;
+    std::int64_t slot_ = 0;
+};
+
+/// A checkpoint holds the scene, the run's fingerprint, its state and every particle, so that a
+/// restart continues bitwise.
+template <int Dim>
+class CheckpointObserver final : public IStepObserver<Dim> {
+  public:
+    explicit CheckpointObserver(double every) : every_(every) {}
+    bool needsParticles(const Simulation<Dim>& sim) const override { return due(sim); }
+    /// A step cut short by an unaligned end time leaves the trajectory a longer run follows: a
+    /// checkpoint then holds the state before that step.
+    void beforeStep(Simulation<Dim>& sim, bool endStep) override {
+        if (endStep) beforeEndStep_.emplace(resumable(sim), sim.particles());
+    }
+    void afterStep(Simulation<Dim>& sim) override {
+        if (!due(sim)) return;
+        std::int64_t& count = sim.parts().state.checkpointCount;
+        while (reached(sim.time(), double(count + 1) * every_)) ++count;
+        write(sim, formatted("checkpoint_%04.0f.chk", double(count)));
+    }
+    void afterRun(Simulation<Dim>& sim, const RunEnd& end) override {
+        if (end.status == "interrupted" && !end.abandoned) write(sim, "checkpoint_interrupted.chk");
+    }
+    void summarize(Simulation<Dim>&, RunEnd& end) override {
+        for (const auto& [t, f] : written_)
+            end.summary["checkpoints"].push_back({{"time", t}, {"file", f}});
+    }
+
+  private:
+    bool due(const Simulation<Dim>& sim) const {
+        return every_ > 0 &&
+               reached(sim.time(), double(sim.parts().state.checkpointCount + 1) * every_);
+    }
+    /// The run's state as a restart needs it.
+    static RunState<Dim> resumable(Simulation<Dim>& sim) {
+        RunParts<Dim>& p = sim.parts();
+        RunState<Dim> r = p.state;
+        r.time = sim.time(), r.steps = sim.steps();
+        r.emitterLayers = p.emitters->layers(), r.emitted = p.emitters->emitted();
+        r.emitterBlocked = p.emitters->blocked();
+        if (p.root()) r.series = p.outputs->series().entries();
+        return r;
+    }
+    void write(Simulation<Dim>& sim, const std::string& name) {
+        RunParts<Dim>& p = sim.parts();
+        const RunState<Dim> r = beforeEndStep_ ? beforeEndStep_->first : resumable(sim);
+        const sph::Storage<Dim>& s = beforeEndStep_ ? beforeEndStep_->second : sim.particles();
+        p.everyParticle(s, [&](const sph::Storage<Dim>& all) {
+            onRoot(p.comm, [&] {
+                ByteWriter w;
+                w.putString(p.doc.dump());
+                w.putString(p.fingerprint);
+                r.write(w);
+                writeStorage(w, all);
+                writeCheckpointFile(p.outputs->path(name), Dim, w.bytes());
+            });
+        });
+        written_.emplace_back(r.time, name);
+    }
+
+    double every_;  ///< simulated seconds between checkpoints; 0: only on Ctrl-C
+    std::optional<std::pair<RunState<Dim>, sph::Storage<Dim>>> beforeEndStep_;
+    std::vector<std::pair<double, std::string>> written_;
+};
+
+}  // namespace num::io

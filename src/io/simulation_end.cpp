@@ -1,0 +1,95 @@
+// The end of a Simulation's run: summary.json (with what each observer adds), the report on
+// the terminal and the exit code.
+#include "device_backend.hpp"
+#include "io/file.hpp"
+#include "run_parts.hpp"
+#include "run_report.hpp"
+#include "run_state.hpp"
+
+namespace num::io {
+
+namespace {
+
+/// The decomposition's figures, summed over the processes.
+template <int Dim>
+nlohmann::json decompositionJson(const RunParts<Dim>& p, std::uint64_t runSteps) {
+    const parallel::DomainDecomposition<Dim>& d = *p.decomposition;
+    const std::int64_t haloParticles = p.comm.sum(d.haloParticles());
+    const std::int64_t haloBytes = p.comm.sum(std::int64_t(d.haloBytes()));
+    const auto exchanges = std::int64_t(d.exchanges());
+    return {
+        {"load_imbalance", d.imbalance()},
+        {"repartitions", d.repartitions()},
+        {"halo_particles", haloParticles},
+        {"halo_bytes_per_exchange", exchanges > 0 ? double(haloBytes) / double(exchanges) : 0.0},
+        {"halo_bytes_per_step", runSteps > 0 ? double(haloBytes) / double(runSteps) : 0.0},
+        {"note",
+         "load_imbalance: the most loaded process's fluid particles over the mean, less one, "
+         "at the last redistribution; halo figures summed over the processes, at the end"}};
+}
+
+/// What the engine tells of the run: the device, the neighbour lists, the passes.
+template <int Dim>
+void addEngineFigures(const RunParts<Dim>& p, nlohmann::json& summary) {
+    summary["processes"] = p.comm.size();
+    if (p.gpu) {
+        summary["device"] = cudaDeviceText();
+        summary["device_bytes"] = p.gpu->fluid().bytes();
+        summary["device_bytes_per_particle"] =
+            double(p.gpu->fluid().bytes()) / double(std::max<std::size_t>(1, p.storage.size()));
+    }
+    summary["neighbour_list_builds"] = p.solver->neighbours().builds();
+    // The passes of an evaluation, each with its terms in the order they run.
+    const std::vector<std::string> termNames = p.solver->equations().names();
+    for (const auto& pass : p.solver->schedule().passes) {
+        nlohmann::json names = nlohmann::json::array();
+        for (std::size_t t : pass.terms) names.push_back(termNames[t]);
+        summary["passes"].push_back(names);
+    }
+}
+
+}  // namespace
+
+template <int Dim>
+int Simulation<Dim>::finishRun(RunEnd end) {
+    RunParts<Dim>& p = *parts_;
+    const double lastDt = p.gpu ? p.gpu->lastDt() : p.run->lastDt();
+    p.progress->finish(time(), lastDt, sph::Size(p.comm.sum(p.owned())), steps());
+    p.state.emitted = p.emitters->emitted();
+    p.state.emitterBlocked = p.emitters->blocked();
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - p.wallStart).count();
+    const std::uint64_t runSteps = steps() - p.startSteps;
+    const nlohmann::json decomposition = decompositionJson(p, runSteps);
+    EndOfRun files;
+    p.everyParticle(p.storage, [&](const sph::Storage<Dim>& all) {
+        onRoot(p.comm, [&] {
+            files = p.outputs->finish(end.status == "completed");
+            end.summary =
+                summaryJson(p.scene, all, *p.setup, p.state, time(), steps(), runSteps, wall,
+                            p.particleSteps, p.threads, p.gpu ? "cuda" : p.cpuBackend, end.status,
+                            end.message, p.solver->meanNeighbours());
+        });
+    });
+    addEngineFigures(p, end.summary);
+    end.summary["decomposition"] = decomposition;
+    end.warnings = p.scene.warnings;
+    for (auto& o : observers_) o->summarize(*this, end);
+    onRoot(p.comm, [&] {
+        addEndOfRun(end.summary, files, end.warnings);
+        writeFileAtomically(p.outputs->path("summary.json"), end.summary.dump(2) + "\n");
+    });
+    // Until here a first signal only sets the flag: the video and the summary are still made.
+    stop::restoreDefaults();
+    if (end.status == "unstable" || end.status == "failed")
+        throw AppError(end.failure, end.message + " (last good output kept in " +
+                                        p.scene.output.directory + ")");
+    if (!p.options.quiet && p.root())
+        printRunReport(p.options.program, *p.outputs, p.scene, files, end.summary);
+    return end.status == "interrupted" ? int(ExitCode::INTERRUPTED) : 0;
+}
+
+template int Simulation<2>::finishRun(RunEnd);
+template int Simulation<3>::finishRun(RunEnd);
+
+}  // namespace num::io

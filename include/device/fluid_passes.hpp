@@ -81,21 +81,35 @@ struct Scatter {  // to[origin[k]] = from[k]: back to the storage's order
     NUMERICS_HD void operator()(Index k) const { to[origin[k]] = from[k]; }
 };
 
-/// The equation of state and the tension limit at free surfaces (fluid particles).
+/// The density floor at free surfaces (fluid particles), a constraint on the state before
+/// every evaluation (sph::FreeSurfaceTensionLimit::constrain).
+template <int Dim>
+struct DensityFloorPass {
+    Arrays<Dim> d;
+    Float w0, surfaceRhoMin;
+    NUMERICS_HD void operator()(Index i) const {
+        if (d.kind[i] != fluid ||
+            !sph::atFreeSurface(d.kernelSum[i], sph::formulas::particleVolume(d.m[i], d.rho[i]),
+                                w0))
+            return;
+        d.rho[i] = sph::formulas::surfaceDensityFloor(d.rho[i], surfaceRhoMin);
+    }
+};
+
+/// The equation of state and the pressure floor at free surfaces (fluid particles).
 template <int Dim>
 struct FluidPass {
     Arrays<Dim> d;
     sph::EquationOfState eos;
-    Float pMin, w0, surfacePMin, surfaceRhoMin;
+    Float pMin, w0, surfacePMin;
     bool tensionLimit;
     NUMERICS_HD void operator()(Index i) const {
         if (d.kind[i] != fluid) return;
         Float p = sph::formulas::fluidPressure(eos, d.rho[i], pMin);
-        Float rho = d.rho[i];
         if (tensionLimit &&
-            sph::atFreeSurface(d.kernelSum[i], sph::formulas::particleVolume(d.m[i], rho), w0))
-            sph::formulas::limitSurfaceTension(p, rho, surfacePMin, surfaceRhoMin);
-        d.p[i] = p, d.rho[i] = rho;
+            sph::atFreeSurface(d.kernelSum[i], sph::formulas::particleVolume(d.m[i], d.rho[i]), w0))
+            p = sph::formulas::surfacePressureFloor(p, surfacePMin);
+        d.p[i] = p;
     }
 };
 

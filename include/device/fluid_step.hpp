@@ -3,9 +3,10 @@
 // execution.hpp) between outputs, as structure of arrays sorted by cell at every evaluation.
 //
 // One evaluation at time t, as the CPU solver's (sph/solver.hpp with the fluid model's terms):
-//   wrap periodic positions -> cell keys, sort, permute every array, cell ranges
+//   the constraints: wrap periodic positions; the density floor at free surfaces
+//   -> cell keys, sort, permute every array, cell ranges
 //   -> viscosity pass (temperature-dependent viscosity): nu = nu(T) of every particle
-//   -> fluid pass:  p = max(p(rho), p_b - T_max); the tension limit at free surfaces
+//   -> fluid pass:  p = max(p(rho), p_b - T_max); the pressure floor at free surfaces
 //   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles, walls and
 //                   bodies, gather fluid); with conduction the temperature a fixed-temperature
 //                   boundary particle shows
@@ -150,14 +151,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     }
 
     void evaluate(Float t) override {
-        passes::Arrays<Dim> d = arrays();
-        if (anyPeriodic()) {
-            passes::Wrap<Dim> wrap{d.x, c_.domainMin, c_.domainMax, {}};
-            for (int k = 0; k < Dim; ++k) wrap.periodic[k] = c_.periodic[k];
-            exec_.forEach(n_, wrap);
-        }
+        constrain();
         sortByCell();
-        d = arrays();
+        const passes::Arrays<Dim> d = arrays();
         if (heat_ && c_.temperatureViscosity)
             exec_.forEach(n_, passes::TemperatureViscosityPass<Dim>{d, c_.viscosityLaw});
         const Vec g = c_.bodyForce ? c_.bodyForce(t) : Vec{};
@@ -165,8 +161,8 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             c_.deltaHydrostatic && c_.bodyForce
                 ? sph::formulas::deltaSphGravityTerm<Dim>(g, c_.eos.rho0, c_.eos.c0)
                 : Vec{};
-        exec_.forEach(n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
-                                                 c_.surfaceRhoMin, c_.tensionLimit});
+        exec_.forEach(
+            n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin, c_.tensionLimit});
         sph::withKernel<Dim>(c_.kernel, [&](auto kernel) {
             using K = decltype(kernel);
             const sph::KernelValue<K> value(c_.h);
@@ -248,6 +244,19 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     const char* execution() const override { return Exec::name(); }
 
   private:
+    /// The state constraints (sph::Solver::constrain): periodic positions wrapped into the
+    /// domain, the density floor at free surfaces.
+    void constrain() {
+        const passes::Arrays<Dim> d = arrays();
+        if (anyPeriodic()) {
+            passes::Wrap<Dim> wrap{d.x, c_.domainMin, c_.domainMax, {}};
+            for (int k = 0; k < Dim; ++k) wrap.periodic[k] = c_.periodic[k];
+            exec_.forEach(n_, wrap);
+        }
+        if (c_.tensionLimit)
+            exec_.forEach(n_, passes::DensityFloorPass<Dim>{d, c_.w0, c_.surfaceRhoMin});
+    }
+
     bool anyPeriodic() const {
         for (int k = 0; k < Dim; ++k)
             if (c_.periodic[k]) return true;

@@ -1,41 +1,43 @@
-// Everything a run writes per output time: VTU (+ the .pvd series and a ParaView script), CSV,
-// PNG, a row of probes.csv; and at the end an MP4 of the pictures (when ffmpeg is installed) and
-// a plot of the probes.
+// Everything a run writes per output time, through its writers (io/output_writer.hpp): the
+// formats of output.formats by name (io/writer_registry.hpp: VTU with its .pvd series and a
+// ParaView script, CSV, and those plugins add), the pictures (PNG, and at the end an MP4 by
+// ffmpeg when it is installed) and the probes (a row of probes.csv, and at the end their plot).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "io/fields.hpp"
+#include "io/output_writer.hpp"
 #include "io/render.hpp"
 #include "io/scene_setup.hpp"
+#include "io/writer_registry.hpp"
 #include "io/writers.hpp"
 
 namespace num::io {
 
-/// The files made at the end of a run, and why the movie is missing when it is.
-struct EndOfRun {
-    std::string video;           ///< path of <prefix>.mp4, or ""
-    std::string videoNote;       ///< why there is no movie ("" when there is one)
-    bool videoWanted = false;    ///< the scene asked for pictures and a movie
-    std::string probePlot;       ///< path of probes.png, or "" (no probes)
-    std::string paraviewScript;  ///< path of <prefix>_paraview.py, or "" (no VTU output)
-};
+template <int Dim>
+class PicturesWriter;
 
 template <int Dim>
 class Outputs {
   public:
     /// `initial`: the scene's initial particles (sets the colour range of the pictures).
+    /// `writers`: the formats that output.formats may name (with the plugins' writers); a name
+    /// that is not among them is an AppError SCENE (checkOutputFormats).
     Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std::string directory,
-            const sph::Storage<Dim>& initial, FieldNames names = {});
+            const sph::Storage<Dim>& initial, FieldNames names = {},
+            const WriterRegistry& writers = builtInWriters());
 
-    /// Creates the directory and a fresh probes.csv (a new run). Files an earlier run left under
-    /// the names this run writes (its series, movie, probes, summary and checkpoints) are
-    /// removed first; earlierRunNote() then says so.
+    /// Creates the directory and starts every writer (a new run: a fresh probes.csv). Files an
+    /// earlier run left under the names this run writes (its series, movie, probes, summary and
+    /// checkpoints) are removed first; earlierRunNote() then says so.
     void start();
     /// "" or the warning that start() removed an earlier run's files.
     const std::string& earlierRunNote() const { return earlierRunNote_; }
-    /// Continues an earlier run at time t: the series and probes.csv keep what is up to t.
+    /// Continues an earlier run at time t: the series (of the checkpoint) and probes.csv keep
+    /// what is up to t.
     void resume(double t, std::vector<std::pair<double, std::string>> series);
 
     /// Writes the files of output number `index` at time t.
@@ -43,29 +45,30 @@ class Outputs {
 
     /// The end of a run: the probe plot, and the movie when the run completed.
     EndOfRun finish(bool completed) const;
+    /// The files the run made and what they hold, for the lines printed at its end.
+    std::vector<WrittenFile> files() const;
 
     const std::string& directory() const { return dir_; }
     std::string path(const std::string& name) const { return dir_ + "/" + name; }
     std::string fileName(int index, const std::string& extension) const;
-    const PvdSeries& series() const { return series_; }
-    int pictures() const { return pictures_; }
+    /// The series a checkpoint keeps (the VTU files; empty without "vtu").
+    const PvdSeries& series() const;
+    /// The pictures of the run so far (0 without output.images).
+    int pictures() const;
 
   private:
     /// Whether a file name is one this run writes (or a checkpoint's).
     bool earlierRunFile(const std::string& name) const;
     void removeEarlierRun();
-    void writeProbes(const sph::Storage<Dim>& s, double t);
-    void writeParaviewScript() const;
-    /// Makes <prefix>.mp4 from the pictures with ffmpeg; returns "" or why it could not.
-    std::string makeVideo() const;
+    void makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
+                     const sph::Storage<Dim>& initial, const WriterRegistry& writers);
 
     const Scene<Dim>& scene_;
-    const SceneSetup<Dim>& setup_;
     std::string dir_;
     FieldNames names_;
-    RenderSettings<Dim> render_;
-    PvdSeries series_;
-    int pictures_ = 0;
+    WriterContext context_;                               ///< what every writer is made with
+    std::vector<std::unique_ptr<IWriter<Dim>>> writers_;  ///< formats, pictures, probes
+    const PicturesWriter<Dim>* pictures_ = nullptr;       ///< among writers_, or none
     std::string earlierRunNote_;
 };
 

@@ -1,9 +1,10 @@
-// Plugins: equation terms in a shared library that fluid_sim and fluid_sim_3d load at run time
-// when a scene names it under "plugins" (docs/scenes.md, docs/extending.md).
+// Plugins: equation terms and output writers in a shared library that fluid_sim and fluid_sim_3d
+// load at run time when a scene names it under "plugins" (docs/scenes.md, docs/extending.md).
 //
 // A plugin exports one C symbol, numerics_plugin_entry(hostVersion, registry): it returns the
 // plugin API version it was built against and, when that equals the host's, registers its
-// term factories (2D, 3D or both) and the quantities its terms create. NUMERICS_PLUGIN writes
+// term factories (2D, 3D or both), the quantities its terms create and its writers (formats a
+// scene may name in output.formats). NUMERICS_PLUGIN writes
 // that function; a whole plugin is a term class and a few lines:
 //
 //     #include "io/plugin.hpp"
@@ -28,11 +29,13 @@
 #include <utility>
 #include <vector>
 
+#include "io/writer_registry.hpp"
 #include "sph/equation_term.hpp"
 
 /// The version of this header's classes; a plugin built against another version is refused.
-/// (2 added the range of a field, Registry::addField with lo and hi.)
-#define NUMERICS_PLUGIN_API_VERSION 2
+/// (2 added the range of a field, Registry::addField with lo and hi; 3 added writers,
+/// Registry::addWriter.)
+#define NUMERICS_PLUGIN_API_VERSION 3
 /// The symbol every plugin exports (as extern "C").
 #define NUMERICS_PLUGIN_ENTRY_NAME "numerics_plugin_entry"
 
@@ -107,6 +110,18 @@ class Registry {
     virtual void addField(const std::string& name, sph::QuantityId id, double lo, double hi,
                           const std::string& unit) = 0;
 
+    /// Registers a writer (io/output_writer.hpp) by name for 2D or 3D (a name may have both): a
+    /// scene that loads the plugin may name it in output.formats.
+    virtual void addWriter2(const std::string& name, WriterFactory<2> factory) = 0;
+    virtual void addWriter3(const std::string& name, WriterFactory<3> factory) = 0;
+
+    /// Registers Writer<2> and Writer<3>, each made by `Writer<Dim>(context)`.
+    template <template <int> class Writer>
+    void addWriter(const std::string& name) {
+        addWriter2(name, writerFactory<Writer<2>>());
+        addWriter3(name, writerFactory<Writer<3>>());
+    }
+
     /// Registers Term<2> and Term<3>, each made by `Term<Dim>(args...)` with the arguments
     /// `read(parameters)` returns as a tuple.
     template <template <int> class Term, class Read>
@@ -144,7 +159,7 @@ using EntryFunction = int (*)(int hostVersion, Registry* registry);
 
 }  // namespace num::io::plugin
 
-/// Defines the plugin's entry point; the braces that follow register its terms:
+/// Defines the plugin's entry point; the braces that follow register its terms and writers:
 ///     NUMERICS_PLUGIN(registry) { registry.add<MyTerm>("my_term", read); }
 #define NUMERICS_PLUGIN(registry)                                                              \
     static void numericsPluginRegister(::num::io::plugin::Registry& registry);                 \

@@ -83,7 +83,9 @@ struct OutputSpec {
     std::string directory = "out/scene";
     std::string prefix = "particles";
     double every = 0.05;
-    bool vtu = true, csv = false, images = true, video = true;
+    /// Names of writers (io/writer_registry.hpp), each listed once, in the scene's order.
+    std::vector<std::string> formats = {"vtu"};
+    bool images = true, video = true;
     int imageWidth = 960;
     std::optional<double> colorMin, colorMax;  ///< colour-bar range; empty: from the scene
 };

@@ -1,6 +1,11 @@
 // Equation terms: what appears on the right-hand sides of the evolution equations.
 //
 // Order of the hooks in one evaluation (Solver::evaluate):
+//   0. the state constraints (Solver::constrain): positions on periodic axes are wrapped into
+//      the domain, then constrain() of every term, in the order the terms were added (the
+//      fluid model's density floor at free surfaces). They may change the state, and a second
+//      call changes nothing; they run before every evaluation, so every state an integrator
+//      evaluates satisfies them;
 //   1. the highest time derivative of every quantity is set to zero;
 //   2. the neighbour search: the neighbour lists of the positions (Verlet lists, rebuilt only
 //      when particles moved far enough), used by every pass of the evaluation;
@@ -16,10 +21,12 @@
 //      d. finalize() of the pass's terms, in the order the terms were added.
 //   A term goes to the first pass in which what it reads is ready (access()): a term that reads
 //   another's pair sums runs one pass later. Terms that declare nothing share the first pass.
-// An evaluation has no side effects on the state: finalize() combines sums into rates and
-// never moves a particle or changes an evolved quantity, so evaluating twice at the same t
-// gives the same rates (integrators may evaluate several times per step). One exception is left:
-// the free-surface flags come from the previous evaluation's kernel sum (terms/free_surface.hpp).
+// Steps 1 to 3 have no side effects on the state: no hook there moves a particle or changes an
+// evolved quantity (the values of quantities of order FIRST or SECOND, and velocities), so
+// evaluating twice at the same t gives the same rates (integrators may evaluate several times
+// per step). Debug builds check it after every hook (sph/evaluation_purity.hpp). One exception
+// is left: the free-surface flags come from the previous evaluation's kernel sum
+// (terms/free_surface.hpp), a quantity of order ZERO.
 // Post-step phase: postStep() of every term, in the order the terms were added, once per step
 // after the integrator (Solver::postStep, called by Run::step with the step's dt and the new
 // time). It reads what the step's last evaluation left in the storage and may change the
@@ -95,14 +102,19 @@ class IEquationTerm {
     /// Requires the derivatives (pairwise sums) the term needs. Called once per block.
     virtual void setDerivatives(DerivativeHolder<Dim>& derivatives,
                                 const RunSettings& settings) = 0;
+    /// Holds the state within what the term allows (the fluid model's density floor at free
+    /// surfaces), before every evaluation (Solver::constrain). May change evolved quantities;
+    /// a second call must change nothing. Default: nothing.
+    virtual void constrain(IScheduler&, Storage<Dim>&) {}
     /// Runs at the start of each evaluation, before any term's initialize, with the
     /// evaluation's neighbour lists: a term that gathers over neighbours before the pair loop
     /// keeps a reference to them for its initialize. Default: nothing.
     virtual void beginEvaluation(const EvaluationContext<Dim>&) {}
-    /// Runs before the pair loop, e.g. to compute pressure from density.
+    /// Runs before the pair loop, e.g. to compute pressure from density. Changes no evolved
+    /// quantity (see constrain).
     virtual void initialize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
     /// Runs after the pair loop; adds the term's contribution to the derivatives. Moves no
-    /// particle and changes no evolved quantity (that belongs in postStep).
+    /// particle and changes no evolved quantity (that belongs in postStep or constrain).
     virtual void finalize(IScheduler& scheduler, Storage<Dim>& storage, Float t) = 0;
     /// Runs once per step, after the integrator has advanced the storage from t - dt to t
     /// (t the new time); may change the state, e.g. move particles. Default: nothing.

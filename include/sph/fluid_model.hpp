@@ -39,7 +39,8 @@
 //   heat_ids::BOUNDARY_TEMPERATURE.
 // Boundary particles (walls and bodies) never move; fluid particles never cross them.
 //
-// Order of the terms (each term's initialize, finalize and postStep run in this order; particle
+// Order of the terms (each term's constrain, initialize, finalize and postStep run in this
+// order; the tension limit's density floor acts in constrain, before every evaluation; particle
 // shifting, containment and the heat books act in postStep, once per step after the integrator):
 //   neighbour refresh (for the passes below) -> summation density -> equation of state ->
 //   tension limit at free surfaces -> wall condition (Adami et al. 2012) -> wall temperature ->

@@ -1,8 +1,12 @@
-// The solver: one evaluation of all derivatives (neighbour search, terms' beginEvaluation, then
-// the passes of sph/evaluation_schedule.hpp, each: its terms' initialize, the pair loop over
-// blocks, the sum of the blocks' buffers, its terms' finalize), the post-step phase (terms'
-// postStep, once per step after the integrator) and the time-step limits. An evaluation has no
-// side effects on the state: what moves particles runs in postStep.
+// The solver: the state constraints (constrain: the periodic wrap and the terms' constrain,
+// such as the density floor at free surfaces), then one evaluation of all derivatives
+// (neighbour search, terms' beginEvaluation, then the passes of sph/evaluation_schedule.hpp,
+// each: its terms' initialize, the pair loop over blocks, the sum of the blocks' buffers, its
+// terms' finalize), the post-step phase (terms' postStep, once per step after the integrator)
+// and the time-step limits. The constraints run at the start of every evaluate, so that every
+// state an integrator evaluates (its predicted ones too) satisfies them; the evaluation after
+// them has no side effects on the state (what moves particles runs in postStep), which debug
+// builds check (sph/evaluation_purity.hpp).
 //
 // One neighbour structure for every pass: Verlet lists (spatial/neighbour_list.hpp), updated
 // after the periodic wrap and before the terms' initialize, rebuilt only when a particle has
@@ -38,6 +42,7 @@
 #include "sph/decomposition.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_term.hpp"
+#include "sph/evaluation_purity.hpp"
 #include "sph/formulas/pair_geometry.hpp"
 #include "sph/kernel_choice.hpp"
 
@@ -92,46 +97,33 @@ class Solver {
     void setAbandonCheck(std::function<bool()> check) { abandonCheck_ = std::move(check); }
     static constexpr Size kAbandonCheckEvery = 64;
 
-    /// Evaluates every derivative at time t.
-    void evaluate(Storage<Dim>& storage, Float t) {
-        ArrayView<Vec> x = storage.template getValue<Vec>(QuantityId::POSITION);
+    /// The state constraints, before every evaluation: positions on periodic axes wrapped into
+    /// the domain, then every term's constrain (the fluid model's density floor at free
+    /// surfaces). They change the state; a second call changes nothing.
+    void constrain(Storage<Dim>& storage) {
         if (domain_.anyPeriodic())
-            for (Vec& p : x) p = domain_.wrap(p);
-        zeroHighestDerivatives(storage);
-        neighbours_.update(
-            x, [&](std::size_t n, const auto& body) { scheduler_.parallelFor(Size(n), 1, body); });
-        const EvaluationContext<Dim> context{neighbours_};
-        equations_.forTerms([&](auto& term) { term.beginEvaluation(context); });
-        for (std::size_t p = 0; p < passes_.size(); ++p) {
-            const EvaluationSchedule::Pass& order = schedule_.passes[p];
-            equations_.forTerms(order.terms, [&](auto& term) {
-                term.initialize(scheduler_, storage, t);
-                if (!decomposition_) return;
-                // What a term prepares, later terms of the pass may read of a halo neighbour.
-                if (const TermAccess access = term.access(); !access.prepares.empty())
-                    decomposition_->exchangeHalo(storage, access.prepares);
-            });
-            if (decomposition_) decomposition_->exchangeHalo(storage);
-            PairPass& pass = passes_[p];
-            if (p == 0 || pass.holders[0].size() > 0) {
-                const auto forRanges = [&](Size n, const auto& range) {
-                    scheduler_.parallelFor(n, 8192, range);
-                };
-                for (auto& a : pass.accumulated) a.reset(storage);
-                pass.holders[0].initialize(storage, pass.accumulated[0]);
-                for (std::size_t b = 1; b < pass.holders.size(); ++b)
-                    pass.holders[b].initializeLike(pass.holders[0], storage,
-                                                   pass.accumulated[symmetric_ ? b : 0]);
-                for (auto& a : pass.accumulated) a.startSums(forRanges);
-                withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k, pass); });
-                if (abandoned_.exchange(false)) throw EvaluationAbandoned();
-                Accumulated<Dim>::addInto(
-                    storage, std::span<const Accumulated<Dim>>(pass.accumulated), forRanges);
-            }
-            equations_.forTerms(order.terms,
-                                [&](auto& term) { term.finalize(scheduler_, storage, t); });
-            if (decomposition_) decomposition_->exchangeHalo(storage);
-        }
+            for (Vec& p : storage.template getValue<Vec>(QuantityId::POSITION)) p = domain_.wrap(p);
+        equations_.forTerms([&](auto& term) { term.constrain(scheduler_, storage); });
+    }
+
+    /// Constrains the state (constrain), then evaluates every derivative at time t, which has
+    /// no side effects on the state: debug builds check it (evaluateCheckingPurity).
+    void evaluate(Storage<Dim>& storage, Float t) {
+#ifndef NDEBUG
+        evaluateCheckingPurity(storage, t);
+#else
+        constrain(storage);
+        evaluateDerivatives(storage, t, nullptr);
+#endif
+    }
+
+    /// evaluate, checking after every term's initialize and finalize and every pair loop that
+    /// the evolved state is still the one constrain left (sph/evaluation_purity.hpp): throws
+    /// ImpureEvaluation naming the quantity and the term otherwise.
+    void evaluateCheckingPurity(Storage<Dim>& storage, Float t) {
+        constrain(storage);
+        EvaluationPurity<Dim> purity(storage);
+        evaluateDerivatives(storage, t, &purity);
     }
 
     /// The post-step phase: every term's postStep, in term order, once per step after the
@@ -220,6 +212,71 @@ class Solver {
                           typename std::decay_t<decltype(top)>::value_type{});
             });
         });
+    }
+
+    /// The evaluation after the constraints; purity (may be null) checks it.
+    void evaluateDerivatives(Storage<Dim>& storage, Float t, EvaluationPurity<Dim>* purity) {
+        zeroHighestDerivatives(storage);
+        neighbours_.update(
+            storage.template getValue<Vec>(QuantityId::POSITION),
+            [&](std::size_t n, const auto& body) { scheduler_.parallelFor(Size(n), 1, body); });
+        const EvaluationContext<Dim> context{neighbours_};
+        equations_.forTerms([&](auto& term) { term.beginEvaluation(context); });
+        for (std::size_t p = 0; p < passes_.size(); ++p) evaluatePass(storage, t, p, purity);
+    }
+
+    /// One pass: its terms' initialize, its pair loop, its terms' finalize.
+    void evaluatePass(Storage<Dim>& storage, Float t, std::size_t p,
+                      EvaluationPurity<Dim>* purity) {
+        const EvaluationSchedule::Pass& order = schedule_.passes[p];
+        equations_.forTerms(order.terms, [&](auto& term) {
+            term.initialize(scheduler_, storage, t);
+            if (purity)
+                purity->verify(storage, "the term " + term.name() + " (initialize)",
+                               term.access().prepares);
+            // What a term prepares, later terms of the pass may read of a halo neighbour.
+            if (!decomposition_) return;
+            if (const TermAccess access = term.access(); !access.prepares.empty())
+                exchangeHalo(storage, purity, access.prepares);
+        });
+        exchangeHalo(storage, purity);
+        PairPass& pass = passes_[p];
+        if (p == 0 || pass.holders[0].size() > 0) {
+            sumPairs(storage, pass);
+            if (purity)
+                purity->verify(storage, "the pair sums of pass " + std::to_string(p + 1) +
+                                            " (the derivatives its terms required)");
+        }
+        equations_.forTerms(order.terms, [&](auto& term) {
+            term.finalize(scheduler_, storage, t);
+            if (purity) purity->verify(storage, "the term " + term.name() + " (finalize)");
+        });
+        exchangeHalo(storage, purity);
+    }
+
+    /// Refreshes the halo copies (several processes), whose values are their owners'.
+    void exchangeHalo(Storage<Dim>& storage, EvaluationPurity<Dim>* purity,
+                      std::span<const QuantityId> only = {}) {
+        if (!decomposition_) return;
+        decomposition_->exchangeHalo(storage, only);
+        if (purity) purity->keep(storage);
+    }
+
+    /// The pair loop of a pass and the sum of its blocks' buffers into the storage.
+    void sumPairs(Storage<Dim>& storage, PairPass& pass) {
+        const auto forRanges = [&](Size n, const auto& range) {
+            scheduler_.parallelFor(n, 8192, range);
+        };
+        for (auto& a : pass.accumulated) a.reset(storage);
+        pass.holders[0].initialize(storage, pass.accumulated[0]);
+        for (std::size_t b = 1; b < pass.holders.size(); ++b)
+            pass.holders[b].initializeLike(pass.holders[0], storage,
+                                           pass.accumulated[symmetric_ ? b : 0]);
+        for (auto& a : pass.accumulated) a.startSums(forRanges);
+        withKernel<Dim>(kernel_.type, [&](auto k) { pairLoop(storage, k, pass); });
+        if (abandoned_.exchange(false)) throw EvaluationAbandoned();
+        Accumulated<Dim>::addInto(storage, std::span<const Accumulated<Dim>>(pass.accumulated),
+                                  forRanges);
     }
 
     template <class Kernel>

@@ -26,8 +26,9 @@ void reorderByCell(Storage<Dim>& s, Solver<Dim>& solver) {
 /// The run loop: adaptive step from the solver's limits, reordering by cell every few steps
 /// (setting "reorder_every"). The apps drive it too: the step, the reorder and the restart
 /// (setTime, markPrimed) exist once.
-/// A step is: the integrator (its evaluations have no side effects on the state), then the
-/// post-step phase (Solver::postStep: particle shifting, containment, bookkeeping) once.
+/// A step is: the integrator (each of its evaluations constrains the state first, Solver::
+/// constrain, and has no side effects after that), then the post-step phase (Solver::postStep:
+/// particle shifting, containment, bookkeeping) once.
 /// The step a run takes from time t towards tEnd: the limits' dt, shortened to land on tEnd
 /// ("end time"); last when it reaches tEnd. Shared by sph::Run and the device run.
 struct PlannedStep {

@@ -7,13 +7,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
-#include "io/diagnostics.hpp"
 #include "io/file.hpp"
-#include "io/formatted.hpp"
-#include "io/probe_plot.hpp"
+#include "pictures_writer.hpp"
+#include "probes_writer.hpp"
 
 namespace num::io {
 
@@ -29,26 +27,28 @@ bool onPath(const std::string& program) {
     return false;
 }
 
+namespace {
+
+/// The pictures' view: the domain (2D with its wall layers), colours over the scene's
+/// temperatures (those of the initial fluid, fixed-temperature walls and emitters).
 template <int Dim>
-Outputs<Dim>::Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std::string directory,
-                      const sph::Storage<Dim>& initial, FieldNames names)
-    : scene_(scene), setup_(setup), dir_(std::move(directory)), names_(std::move(names)) {
-    while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
-    // Pictures: the domain (2D with its wall layers), colours over the scene's temperatures.
-    render_.min = scene.domainMin, render_.max = scene.domainMax;
+RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
+                                   const sph::Storage<Dim>& initial) {
+    RenderSettings<Dim> render;
+    render.min = scene.domainMin, render.max = scene.domainMax;
     if constexpr (Dim == 2) {
         for (int k = 0; k < Dim; ++k)
             for (int hi = 0; hi < 2; ++hi)
                 if (const double margin =
                         scene.sides[k][hi]->pictureMargin(setup.wallLayers, scene.spacing))
-                    (hi ? render_.max[k] : render_.min[k]) += (hi ? 1 : -1) * margin;
+                    (hi ? render.max[k] : render.min[k]) += (hi ? 1 : -1) * margin;
     }
-    render_.spacing = scene.spacing;
-    render_.width = scene.output.imageWidth;
-    render_.title = scene.name;
+    render.spacing = scene.spacing;
+    render.width = scene.output.imageWidth;
+    render.title = scene.name;
     const sph::Vector<Dim> g = setup.gravity(1e300);
     for (int k = 0; k < Dim; ++k)
-        if (std::abs(g[k]) > std::abs(g[render_.upAxis]) + 1e-300) render_.upAxis = k;
+        if (std::abs(g[k]) > std::abs(g[render.upAxis]) + 1e-300) render.upAxis = k;
     double lo = 1e300, hi = -1e300;
     const auto T = initial.template getValue<double>(QuantityId::TEMPERATURE);
     const auto kind = initial.template getValue<int>(QuantityId::KIND);
@@ -62,25 +62,46 @@ Outputs<Dim>::Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std
     for (const auto& e : scene.emitters)
         lo = std::min(lo, e.temperature), hi = std::max(hi, e.temperature);
     if (!(hi > lo)) lo = (lo < 1e299 ? lo : 20) - 1, hi = lo + 2;
-    render_.colorMin = scene.output.colorMin.value_or(lo);
-    render_.colorMax = scene.output.colorMax.value_or(hi);
+    render.colorMin = scene.output.colorMin.value_or(lo);
+    render.colorMax = scene.output.colorMax.value_or(hi);
+    return render;
+}
+
+}  // namespace
+
+template <int Dim>
+Outputs<Dim>::Outputs(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, std::string directory,
+                      const sph::Storage<Dim>& initial, FieldNames names,
+                      const WriterRegistry& writers)
+    : scene_(scene), dir_(std::move(directory)), names_(std::move(names)) {
+    while (dir_.size() > 1 && dir_.back() == '/') dir_.pop_back();
+    makeWriters(scene, setup, initial, writers);
+}
+
+template <int Dim>
+void Outputs<Dim>::makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
+                               const sph::Storage<Dim>& initial, const WriterRegistry& writers) {
+    checkOutputFormats<Dim>(scene.file, scene.output.formats, writers);
+    const RenderSettings<Dim> render = renderSettings(scene, setup, initial);
+    WriterContext& context = context_;
+    context.directory = dir_, context.prefix = scene.output.prefix, context.title = scene.name;
+    context.spacing = scene.spacing, context.upAxis = render.upAxis;
+    context.colorMin = render.colorMin, context.colorMax = render.colorMax;
+    for (const std::string& format : scene.output.formats)
+        writers_.push_back(writers.make<Dim>(format, context));
+    if (scene.output.images) {
+        auto pictures = std::make_unique<PicturesWriter<Dim>>(context, render, scene.output.video);
+        pictures_ = pictures.get();
+        writers_.push_back(std::move(pictures));
+    }
+    if (!scene.probes.empty())
+        writers_.push_back(std::make_unique<ProbesWriter<Dim>>(
+            context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth)));
 }
 
 template <int Dim>
 std::string Outputs<Dim>::fileName(int index, const std::string& extension) const {
-    return scene_.output.prefix + formatted("_%04d.", index) + extension;
-}
-
-template <int Dim>
-void Outputs<Dim>::writeParaviewScript() const {
-    if (!scene_.output.vtu) return;
-    ParaviewView v;
-    v.pvdName = scene_.output.prefix + ".pvd";
-    v.dimension = Dim;
-    v.upAxis = Dim == 2 ? 1 : render_.upAxis;
-    v.spacing = scene_.spacing;
-    v.colorMin = render_.colorMin, v.colorMax = render_.colorMax;
-    num::io::writeParaviewScript(path(scene_.output.prefix + "_paraview.py"), v);
+    return context_.fileName(index, extension);
 }
 
 template <int Dim>
@@ -129,136 +150,51 @@ template <int Dim>
 void Outputs<Dim>::start() {
     makeOutputDirectory(dir_);
     removeEarlierRun();
-    writeParaviewScript();
-    if (scene_.probes.empty()) return;
-    // Quoted where needed (RFC 4180), although probe names are plain words.
-    auto field = [](const std::string& name) {
-        if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
-        std::string q = "\"";
-        for (char c : name) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-        return q + "\"";
-    };
-    std::string header = "time";
-    const char* axes = "xyz";
-    for (const auto& p : scene_.probes)
-        for (const auto& f : p.fields) {
-            if (f == "velocity")
-                for (int k = 0; k < Dim; ++k)
-                    header += "," + field(p.name + ".v" + std::string(1, axes[k]));
-            else
-                header += "," + field(p.name + "." + f);
-        }
-    writeFileAtomically(path("probes.csv"), header + "\n");
+    for (auto& w : writers_) w->start();
 }
 
 template <int Dim>
 void Outputs<Dim>::resume(double t, std::vector<std::pair<double, std::string>> series) {
     makeOutputDirectory(dir_);
-    writeParaviewScript();
-    for (auto& [time, file] : series) series_.add(time, file);
-    series_.truncateAfter(t);
-    pictures_ = int(series_.entries().size());
-    if (scene_.probes.empty()) return;
-    std::ifstream in(path("probes.csv"));
-    if (!in) return start();
-    std::string line, kept;
-    bool header = true;
-    while (std::getline(in, line)) {
-        if (!header && std::strtod(line.c_str(), nullptr) > t * (1 + 1e-12)) break;
-        kept += line + "\n";
-        header = false;
-    }
-    writeFileAtomically(path("probes.csv"), kept);
+    PvdSeries kept;
+    for (auto& [time, file] : series) kept.add(time, file);
+    kept.truncateAfter(t);
+    for (auto& w : writers_) w->resume(t, kept.entries());
 }
 
 template <int Dim>
 void Outputs<Dim>::write(const sph::Storage<Dim>& s, double t, int index) {
     const std::vector<OutputField> fields = outputFields(s, names_);
-    const OutputSpec& o = scene_.output;
-    if (o.vtu) {
-        writeVtu(path(fileName(index, "vtu")), s, fields, t);
-        series_.truncateAfter(t - 1e-12 * std::max(1.0, std::abs(t)));
-        series_.add(t, fileName(index, "vtu"));
-        series_.write(path(o.prefix + ".pvd"));
-    }
-    if (o.csv) writeCsv(path(fileName(index, "csv")), s, fields);
-    if (o.images) {
-        writePng(path(fileName(index, "png")), renderParticles(s, render_, t));
-        pictures_ = index + 1;
-    }
-    writeProbes(s, t);
-}
-
-template <int Dim>
-void Outputs<Dim>::writeProbes(const sph::Storage<Dim>& s, double t) {
-    if (scene_.probes.empty()) return;
-    const sph::RunKernel<Dim> kernel(setup_.settings);
-    std::string row = formatted("%.10g", t);
-    for (const auto& p : scene_.probes)
-        for (const auto& f : p.fields)
-            for (double v : probe(s, kernel, p.point, f)) row += formatted(",%.10g", v);
-    row += "\n";
-    appendToFile(path("probes.csv"), row);
-}
-
-template <int Dim>
-std::string Outputs<Dim>::makeVideo() const {
-    if (!onPath("ffmpeg"))
-        return "ffmpeg is not installed (./scripts/setup.sh or apt-get install ffmpeg adds it)";
-    auto quote = [](const std::string& s) {
-        std::string q = "'";
-        for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-        return q + "'";
-    };
-    const int fps = std::clamp(pictures_ / 8, 5, 30);
-    const std::string video = path(scene_.output.prefix + ".mp4");
-    const std::string log = path("ffmpeg.log");
-    // Written under a temporary name and renamed, like every other output.
-    // This run's pictures only: a restart that ends before the run it continues leaves that
-    // run's later pictures in the folder.
-    const std::string cmd = "ffmpeg -y -nostdin -loglevel error -framerate " + std::to_string(fps) +
-                            " -i " + quote(path(scene_.output.prefix + "_%04d.png")) +
-                            " -frames:v " + std::to_string(pictures_) +
-                            " -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -pix_fmt yuv420p -f mp4 " +
-                            quote(video + ".tmp") + " >" + quote(log) + " 2>&1";
-    const int rc = std::system(cmd.c_str());
-    std::ifstream in(log);
-    std::string firstLine;
-    std::getline(in, firstLine);
-    in.close();
-    std::remove(log.c_str());
-    if (rc != 0 || std::rename((video + ".tmp").c_str(), video.c_str()) != 0) {
-        std::remove((video + ".tmp").c_str());
-        return "ffmpeg failed" + (firstLine.empty() ? std::string() : ": " + firstLine);
-    }
-    return "";
+    for (auto& w : writers_) w->write(s, fields, t, index);
 }
 
 template <int Dim>
 EndOfRun Outputs<Dim>::finish(bool completed) const {
     EndOfRun end;
-    if (scene_.output.vtu) end.paraviewScript = path(scene_.output.prefix + "_paraview.py");
-    if (!scene_.probes.empty()) {
-        std::ifstream in(path("probes.csv"), std::ios::binary);
-        std::ostringstream csv;
-        csv << in.rdbuf();
-        end.probePlot = path("probes.png");
-        writePng(end.probePlot, plotProbes(csv.str(), "probes: " + scene_.name,
-                                           std::max(640, scene_.output.imageWidth)));
-    }
-    end.videoWanted = scene_.output.images && scene_.output.video;
-    if (!scene_.output.images)
-        end.videoNote = "output.images is false";
-    else if (!scene_.output.video)
-        end.videoNote = "output.video is false";
-    else if (!completed)
-        end.videoNote = "the run did not complete";
-    else if (pictures_ < 2)
-        end.videoNote = "fewer than 2 pictures";
-    else
-        end.videoNote = makeVideo();
-    if (end.videoNote.empty()) end.video = path(scene_.output.prefix + ".mp4");
+    for (const auto& w : writers_) w->finish(completed, end);
+    if (!pictures_) end.videoNote = "output.images is false";
     return end;
+}
+
+template <int Dim>
+std::vector<WrittenFile> Outputs<Dim>::files() const {
+    std::vector<WrittenFile> out;
+    for (const auto& w : writers_)
+        for (WrittenFile& f : w->files()) out.push_back(std::move(f));
+    return out;
+}
+
+template <int Dim>
+const PvdSeries& Outputs<Dim>::series() const {
+    static const PvdSeries none;
+    for (const auto& w : writers_)
+        if (const PvdSeries* s = w->series()) return *s;
+    return none;
+}
+
+template <int Dim>
+int Outputs<Dim>::pictures() const {
+    return pictures_ ? pictures_->pictures() : 0;
 }
 
 template class Outputs<2>;

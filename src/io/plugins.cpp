@@ -1,5 +1,5 @@
 // Loading the plugins a scene names: dlopen, the versioned entry point, the registry of term
-// factories, the terms made from their parameters, and the fields they write.
+// factories and writers, the terms made from their parameters, and the fields they write.
 #include "plugins.hpp"
 
 #include <dlfcn.h>
@@ -17,6 +17,7 @@
 #include "io/plugin.hpp"
 #include "json_check.hpp"
 #include "plugin_term.hpp"
+#include "plugin_writer.hpp"
 
 namespace num::io {
 
@@ -38,7 +39,13 @@ bool userId(sph::QuantityId id) {
     return int(id) < 0 || int(id) >= int(sph::QuantityId::USER_FIRST);
 }
 
-/// What one library registered.
+std::string names(const std::vector<std::string>& list) {
+    std::string text;
+    for (const auto& n : list) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+/// What one library registered (its writers join the run's, ScenePlugins::writers).
 struct Library {
     std::string path;
     std::map<std::string, plugin::TermFactory<2>> terms2;
@@ -53,7 +60,8 @@ struct Library {
 
 class HostRegistry final : public plugin::Registry {
   public:
-    explicit HostRegistry(Library& lib) : lib_(lib) {}
+    /// Terms and fields go to `lib`, writers to `writers` (with the built-in ones).
+    HostRegistry(Library& lib, WriterRegistry& writers) : lib_(lib), writers_(writers) {}
     void addTerm2(const std::string& name, plugin::TermFactory<2> f) override {
         add(lib_.terms2, name, std::move(f), "2D");
     }
@@ -78,6 +86,12 @@ class HostRegistry final : public plugin::Registry {
         addField(name, id);
         lib_.ranges[name] = {lo, hi, unit};
     }
+    void addWriter2(const std::string& name, WriterFactory<2> f) override {
+        addWriter<2>(name, std::move(f));
+    }
+    void addWriter3(const std::string& name, WriterFactory<3> f) override {
+        addWriter<3>(name, std::move(f));
+    }
 
   private:
     template <class Map, class F>
@@ -88,10 +102,22 @@ class HostRegistry final : public plugin::Registry {
                    "or '-'");
         map[name] = std::move(f);
     }
+    template <int Dim>
+    void addWriter(const std::string& name, WriterFactory<Dim> f) {
+        if (!plainName(name) || writers_.has<Dim>(name) || !f)
+            refuse("a " + std::to_string(Dim) + "D writer named \"" + name +
+                   "\": expected a factory under a name of 1 to 64 letters, digits, '_' or '-' "
+                   "that no other writer has (" +
+                   names(writers_.names<Dim>()) + ")");
+        const std::string label =
+            "writer \"" + name + "\" (" + fs::path(lib_.path).filename().string() + ")";
+        writers_.add(name, guardedWriterFactory<Dim>(std::move(f), label));
+    }
     [[noreturn]] void refuse(const std::string& what) const {
         throw AppError(ExitCode::PLUGIN, lib_.path + ": the plugin registers " + what);
     }
     Library& lib_;
+    WriterRegistry& writers_;
 };
 
 std::string fileHash(const std::string& path) {
@@ -114,8 +140,9 @@ std::string absoluteLibrary(const std::string& library, const std::string& scene
 }
 
 /// dlopens one library (never closed: its code runs until the process ends) and calls its
-/// entry point with a registry.
-Library openLibrary(const At& at, const std::string& path, const std::string& program) {
+/// entry point with a registry; its writers are added to `writers`.
+Library openLibrary(const At& at, const std::string& path, const std::string& program,
+                    WriterRegistry& writers) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
         throw AppError(ExitCode::SCENE, at.file + ": " + at.path + ": no plugin library " + path +
@@ -141,7 +168,7 @@ Library openLibrary(const At& at, const std::string& path, const std::string& pr
                            NUMERICS_PLUGIN_ENTRY_NAME +
                            " (define it with NUMERICS_PLUGIN from io/plugin.hpp and build the "
                            "library with numerics_add_plugin)");
-    HostRegistry registry(lib);
+    HostRegistry registry(lib, writers);
     int version = 0;
     try {
         version = entry(NUMERICS_PLUGIN_API_VERSION, &registry);
@@ -170,12 +197,6 @@ const std::map<std::string, plugin::TermFactory<Dim>>& factories(const Library& 
         return lib.terms2;
     else
         return lib.terms3;
-}
-
-std::string names(const std::vector<std::string>& list) {
-    std::string text;
-    for (const auto& n : list) text += (text.empty() ? "" : ", ") + n;
-    return text;
 }
 
 template <int Dim>
@@ -232,6 +253,62 @@ std::shared_ptr<sph::IEquationTerm<Dim>> makeTerm(const Library& lib, const At& 
     return std::make_shared<PluginTerm<Dim>>(std::move(term), label, failure);
 }
 
+/// The scene's output.formats as written (readScene checked that they are strings).
+std::vector<std::string> outputFormats(const SceneDocument& doc) {
+    const nlohmann::json& j = doc.json();
+    if (!j.contains("output") || !j["output"].contains("formats") ||
+        !j["output"]["formats"].is_array())
+        return {};
+    std::vector<std::string> formats;
+    for (const auto& f : j["output"]["formats"])
+        formats.push_back(f.is_string() ? f.get<std::string>() : std::string());
+    return formats;
+}
+
+/// The fields of plugin `p` (of `lib`) the scene writes.
+template <int Dim>
+void addFields(const At& p, const Library& lib, ScenePlugins<Dim>& out) {
+    const At fields = p["fields"];
+    if (!fields.v.is_array()) fields.fail("an array of field names");
+    for (std::size_t k = 0; k < fields.v.size(); ++k) {
+        const At f = element(fields, k);
+        const std::string name = f.string();
+        if (!lib.fields.count(name)) {
+            std::vector<std::string> known;
+            for (const auto& [n, id] : lib.fields) known.push_back(n);
+            const std::string guess = detail::closest(name, known);
+            f.fail("a field of " + fs::path(lib.path).filename().string() + " (" +
+                       (known.empty() ? "it declares none" : names(known)) + ")",
+                   guess.empty() ? "" : "did you mean \"" + guess + "\"?");
+        }
+        out.fields.push_back({lib.fields.at(name), name, f.path});
+    }
+}
+
+/// Loads plugin number i of the scene (`p`) and adds its terms, fields and writers to `out`.
+template <int Dim>
+void loadPlugin(const At& p, const std::string& sceneFile, std::size_t i, ScenePlugins<Dim>& out) {
+    const std::string program = Dim == 2 ? "fluid_sim" : "fluid_sim_3d";
+    p.object({"library", "terms", "fields"}, {"library"});
+    const std::string path = absoluteLibrary(p["library"].string(), sceneFile);
+    const Library lib = openLibrary(p["library"], path, program, out.writers);
+    const std::string key = "plugin " + std::to_string(i);
+    out.fingerprint += key + " library = " + path + "\n";
+    out.fingerprint += key + " library content (FNV-1a) = " + fileHash(path) + "\n";
+    for (const auto& [name, r] : lib.ranges)
+        out.ranges.push_back(
+            {lib.fields.at(name), name, r.unit, fs::path(path).filename().string(), r.lo, r.hi});
+    if (p.has("terms")) {
+        const At terms = p["terms"];
+        if (!terms.v.is_array() || terms.v.empty())
+            terms.fail("a non-empty array of terms, each {\"term\": NAME, parameters...}");
+        for (std::size_t k = 0; k < terms.v.size(); ++k)
+            out.terms += sph::EquationHolder<Dim>(
+                makeTerm<Dim>(lib, element(terms, k), program, out.failure));
+    }
+    if (p.has("fields")) addFields(p, lib, out);
+}
+
 }  // namespace
 
 SceneDocument withAbsolutePluginPaths(const SceneDocument& doc) {
@@ -253,45 +330,14 @@ template <int Dim>
 ScenePlugins<Dim> loadPlugins(const SceneDocument& doc) {
     ScenePlugins<Dim> out;
     const At root{doc.json(), doc.file(), ""};
-    if (!root.has("plugins")) return out;
-    const std::string program = Dim == 2 ? "fluid_sim" : "fluid_sim_3d";
-    const At list = root["plugins"];
-    if (!list.v.is_array())
-        list.fail("an array of plugins, each {\"library\": FILE, \"terms\": [...]}");
-    for (std::size_t i = 0; i < list.v.size(); ++i) {
-        const At p = element(list, i);
-        p.object({"library", "terms", "fields"}, {"library", "terms"});
-        const std::string path = absoluteLibrary(p["library"].string(), doc.file());
-        const Library lib = openLibrary(p["library"], path, program);
-        const std::string key = "plugin " + std::to_string(i);
-        out.fingerprint += key + " library = " + path + "\n";
-        out.fingerprint += key + " library content (FNV-1a) = " + fileHash(path) + "\n";
-        for (const auto& [name, r] : lib.ranges)
-            out.ranges.push_back({lib.fields.at(name), name, r.unit,
-                                  fs::path(path).filename().string(), r.lo, r.hi});
-        const At terms = p["terms"];
-        if (!terms.v.is_array() || terms.v.empty())
-            terms.fail("a non-empty array of terms, each {\"term\": NAME, parameters...}");
-        for (std::size_t k = 0; k < terms.v.size(); ++k)
-            out.terms += sph::EquationHolder<Dim>(
-                makeTerm<Dim>(lib, element(terms, k), program, out.failure));
-        if (!p.has("fields")) continue;
-        const At fields = p["fields"];
-        if (!fields.v.is_array()) fields.fail("an array of field names");
-        for (std::size_t k = 0; k < fields.v.size(); ++k) {
-            const At f = element(fields, k);
-            const std::string name = f.string();
-            if (!lib.fields.count(name)) {
-                std::vector<std::string> known;
-                for (const auto& [n, id] : lib.fields) known.push_back(n);
-                const std::string guess = detail::closest(name, known);
-                f.fail("a field of " + fs::path(path).filename().string() + " (" +
-                           (known.empty() ? "it declares none" : names(known)) + ")",
-                       guess.empty() ? "" : "did you mean \"" + guess + "\"?");
-            }
-            out.fields.push_back({lib.fields.at(name), name, f.path});
-        }
+    if (root.has("plugins")) {
+        const At list = root["plugins"];
+        if (!list.v.is_array())
+            list.fail("an array of plugins, each {\"library\": FILE, \"terms\": [...]}");
+        for (std::size_t i = 0; i < list.v.size(); ++i)
+            loadPlugin(element(list, i), doc.file(), i, out);
     }
+    checkOutputFormats<Dim>(doc.file(), outputFormats(doc), out.writers);
     return out;
 }
 

@@ -1,5 +1,6 @@
 // The "plugins" of a scene (internal to numerics_io): shared libraries loaded with dlopen, in the
-// order listed, before the run is set up; their terms join the fluid model (extraTerms).
+// order listed, before the run is set up; their terms join the fluid model (extraTerms), their
+// writers the formats that output.formats may name.
 #pragma once
 
 #include <memory>
@@ -8,6 +9,7 @@
 
 #include "io/fields.hpp"
 #include "io/scene_loader.hpp"
+#include "io/writer_registry.hpp"
 #include "plugin_term.hpp"
 #include "sph/equation_term.hpp"
 
@@ -29,6 +31,8 @@ struct ScenePlugins {
         double lo, hi;
     };
     std::vector<Range> ranges;
+    /// The built-in writers and those the plugins registered: the formats output.formats may name.
+    WriterRegistry writers = builtInWriters();
     /// "key = value" lines for the checkpoint's fingerprint: each library and its content.
     std::string fingerprint;
     /// Where the terms keep a failure until the step ends (plugin_term.hpp).
@@ -41,9 +45,10 @@ struct ScenePlugins {
 SceneDocument withAbsolutePluginPaths(const SceneDocument& doc);
 
 /// Loads the libraries of the scene's "plugins" and makes their terms (each guarded, see
-/// plugin_term.hpp). Scene mistakes (missing file, unknown term, bad parameters, a term of the
-/// other dimension) are AppErrors SCENE; a library that is not a plugin, of another API version
-/// or whose code fails is PLUGIN.
+/// plugin_term.hpp), then checks the scene's output.formats against the built-in writers and
+/// the plugins' (checkOutputFormats). Scene mistakes (missing file, unknown term, bad
+/// parameters, a term of the other dimension, an unknown format) are AppErrors SCENE; a library
+/// that is not a plugin, of another API version or whose code fails is PLUGIN.
 template <int Dim>
 ScenePlugins<Dim> loadPlugins(const SceneDocument& doc);
 

@@ -36,9 +36,8 @@ inline std::string change(double start, double end, const char* unit) {
 }  // namespace detail
 
 template <int Dim>
-void printRunReport(const std::string& program, const Outputs<Dim>& out, const Scene<Dim>& scene,
+void printRunReport(const std::string& program, const Outputs<Dim>& out, const Scene<Dim>&,
                     const EndOfRun& end, const nlohmann::json& summary) {
-    const OutputSpec& o = scene.output;
     const std::string status = summary.at("status");
     const bool completed = status == "completed";
     const std::string ended = completed                 ? "finished"
@@ -50,17 +49,7 @@ void printRunReport(const std::string& program, const Outputs<Dim>& out, const S
     auto item = [](const std::string& file, const std::string& what) {
         std::printf("  %-24s %s\n", file.c_str(), what.c_str());
     };
-    if (o.vtu) item(o.prefix + ".pvd", "open in ParaView (File > Open, Apply) to play the series");
-    if (!end.paraviewScript.empty())
-        item(o.prefix + "_paraview.py",
-             "ParaView coloured by temperature: paraview --script=" + o.prefix + "_paraview.py");
-    if (o.images)
-        item(o.prefix + "_*.png",
-             "pictures, one per output time (" + std::to_string(out.pictures()) + ")");
-    if (!end.video.empty()) item(o.prefix + ".mp4", "the pictures as a movie");
-    if (o.csv) item(o.prefix + "_*.csv", "fluid particles as CSV");
-    if (!scene.probes.empty())
-        item("probes.csv, probes.png", "probe values over time, and their plot");
+    for (const WrittenFile& f : out.files()) item(f.name, f.what);
     item("summary.json", "run statistics and conservation diagnostics; its key figures:");
 
     const double wall = summary.at("wall_seconds");

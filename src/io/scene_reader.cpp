@@ -8,6 +8,7 @@
 #include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
+#include "io/writer_registry.hpp"
 #include "json_check.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_of_state_choice.hpp"
@@ -330,11 +331,18 @@ Scene<Dim> readScene(const SceneDocument& doc) {
         }
         out.every = o.number("every", out.every, 0, 1e300, true, "s");
         if (o.has("formats")) {
+            // Names only: they are checked against the writers once the plugins have added
+            // theirs (checkOutputFormats).
             const At f = o["formats"];
-            if (!f.v.is_array()) f.fail("an array of formats (\"vtu\", \"csv\")");
-            out.vtu = out.csv = false;
-            for (std::size_t i = 0; i < f.v.size(); ++i)
-                (f[i].choice({"vtu", "csv"}) == "vtu" ? out.vtu : out.csv) = true;
+            std::string names;
+            for (const auto& n : builtInWriters().names<Dim>()) names += "\"" + n + "\", ";
+            if (!f.v.is_array()) f.fail("an array of formats (" + names + "or a plugin's)");
+            out.formats.clear();
+            for (std::size_t i = 0; i < f.v.size(); ++i) {
+                const std::string name = At{f.v.at(i), f.file, f.join(std::to_string(i))}.string();
+                if (std::find(out.formats.begin(), out.formats.end(), name) == out.formats.end())
+                    out.formats.push_back(name);
+            }
         }
         out.images = o.boolean("images", out.images);
         out.video = o.boolean("video", out.video);

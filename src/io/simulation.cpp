@@ -72,7 +72,8 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
     p.fingerprint = runFingerprint(p.doc, setup, initial) + p.plugins->fingerprint;
     p.fieldNames = pluginFieldNames(*p.plugins, initial, p.options.fieldNames, p.doc.file());
     onRoot(p.comm, [&] {
-        p.outputs.emplace(p.scene, setup, p.scene.output.directory, initial, p.fieldNames);
+        p.outputs.emplace(p.scene, setup, p.scene.output.directory, initial, p.fieldNames,
+                          p.plugins->writers);
     });
     p.initialParticles = initial.size();
     return initial;

@@ -48,8 +48,8 @@ __global__ void everyFormula(const double* in, double* out,
                                in[2], pair.laplacian),
                   in[13]);
     s += conductsHeat(0, 2) ? 1.0 : 0.0;
-    double p = fluidPressure(eos, in[4], -1e5), rho = in[4];
-    limitSurfaceTension(p, rho, 0.0, 990.0);
+    const double rho = surfaceDensityFloor(in[4], 990.0);
+    const double p = surfacePressureFloor(fluidPressure(eos, rho, -1e5), 0.0);
     s += p + rho + eos.density(p) + power(in[4], 7.0) + particleVolume(in[12], in[4]);
     s += atFreeSurface(in[5], in[5], in[6]) ? 1.0 : 0.0;
     s += viscosity(in[1], 1e-6, 20.0, 1000.0);

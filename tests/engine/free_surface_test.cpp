@@ -20,9 +20,9 @@ struct Particle {
     Float density;
 };
 
-/// The particles after the limit with density floor `floor`, as (density, pressure) pairs.
-std::vector<std::pair<Float, Float>> limited(const std::vector<Particle>& particles, Float floor,
-                                             const EquationOfState& eos) {
+/// The particles' storage, pressures from the equation of state, density of order `order`.
+Storage<2> surfaceParticles(const std::vector<Particle>& particles, const EquationOfState& eos,
+                            OrderEnum order) {
     Storage<2> s;
     std::vector<Vector<2>> x(particles.size());
     std::vector<int> kind;
@@ -34,15 +34,29 @@ std::vector<std::pair<Float, Float>> limited(const std::vector<Particle>& partic
     s.insert<Vector<2>>(QuantityId::POSITION, OrderEnum::SECOND, x);
     s.insert<int>(QuantityId::KIND, OrderEnum::ZERO, kind);
     s.insert<Float>(QuantityId::MASS, OrderEnum::ZERO, m);
-    s.insert<Float>(QuantityId::DENSITY, OrderEnum::FIRST, rho);
+    s.insert<Float>(QuantityId::DENSITY, order, rho);
     s.insert<Float>(QuantityId::PRESSURE, OrderEnum::ZERO, p);
     s.insert<Float>(FluidId::KERNEL_SUM, OrderEnum::ZERO, c);
+    return s;
+}
+
+FreeSurfaceTensionLimit<2> limitWithFloor(Float floor, const EquationOfState& eos) {
     FreeSurfaceTensionLimit<2> limit(eos, floor);
     DerivativeHolder<2> derivatives;
     RunSettings settings;
     settings.set("smoothing_length", 0.01);
     limit.setDerivatives(derivatives, settings);
+    return limit;
+}
+
+/// The particles after the limit with density floor `floor` (the constraint on the evolved
+/// density, then the term's initialize), as (density, pressure) pairs.
+std::vector<std::pair<Float, Float>> limited(const std::vector<Particle>& particles, Float floor,
+                                             const EquationOfState& eos) {
+    Storage<2> s = surfaceParticles(particles, eos, OrderEnum::FIRST);
+    FreeSurfaceTensionLimit<2> limit = limitWithFloor(floor, eos);
     SequentialScheduler scheduler;
+    limit.constrain(scheduler, s);
     limit.initialize(scheduler, s, 0.0);
     return enginetest::densityAndPressure(s);
 }
@@ -74,6 +88,32 @@ TEST(FreeSurfaceTensionLimit, FloorOneAllowsNoTension) {
     const auto out = limited({{ParticleKind::FLUID, 0.5, 995}}, 1.0, eos);
     EXPECT_DOUBLE_EQ(out[0].first, 1000);
     EXPECT_DOUBLE_EQ(out[0].second, 50);  // the background (ambient) pressure
+}
+
+/// An evolved density (continuity) is floored by the constraint before each evaluation, never in
+/// the evaluation; a density computed in each evaluation (summation) is floored in initialize.
+TEST(FreeSurfaceTensionLimit, FloorsAnEvolvedDensityOnlyAsAConstraint) {
+    EquationOfState eos;
+    const std::vector<Particle> thinned = {{ParticleKind::FLUID, 0.5, 950}};
+    const FreeSurfaceTensionLimit<2> limit = limitWithFloor(0.99, eos);
+    SequentialScheduler scheduler;
+
+    Storage<2> evolved = surfaceParticles(thinned, eos, OrderEnum::FIRST);
+    FreeSurfaceTensionLimit<2>(limit).initialize(scheduler, evolved, 0.0);
+    EXPECT_EQ(enginetest::densityAndPressure(evolved)[0].first, 950) << "initialize kept it";
+    EXPECT_EQ(enginetest::densityAndPressure(evolved)[0].second, eos.pressure(990));
+    Storage<2> constrained = surfaceParticles(thinned, eos, OrderEnum::FIRST);
+    FreeSurfaceTensionLimit<2>(limit).constrain(scheduler, constrained);
+    EXPECT_EQ(enginetest::densityAndPressure(constrained)[0].first, 990);
+    EXPECT_EQ(enginetest::densityAndPressure(constrained)[0].second, eos.pressure(950))
+        << "the constraint leaves the pressure to the evaluation";
+
+    Storage<2> computed = surfaceParticles(thinned, eos, OrderEnum::ZERO);
+    FreeSurfaceTensionLimit<2>(limit).constrain(scheduler, computed);
+    EXPECT_EQ(enginetest::densityAndPressure(computed)[0].first, 950) << "not a constraint";
+    FreeSurfaceTensionLimit<2>(limit).initialize(scheduler, computed, 0.0);
+    EXPECT_EQ(enginetest::densityAndPressure(computed)[0].first, 990);
+    EXPECT_EQ(enginetest::densityAndPressure(computed)[0].second, eos.pressure(990));
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // The phases of a step: an evaluation has no side effects on the state (evaluations at any time,
 // repeated, leave positions, velocities and densities as they were and give bitwise the same
-// rates), and what moves particles (particle shifting, containment) runs once per step in the
-// post-step phase, which Run::step calls after the integrator.
+// rates; the check debug builds run catches a term that changes them), the state constraints
+// (periodic wrap, density floor) run before every evaluation, and what moves particles (particle
+// shifting, containment) runs once per step in the post-step phase, which Run::step calls after
+// the integrator.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -264,6 +266,94 @@ TEST(Phases, ContainmentReflectsInThePostStepPhaseOnly) {
     EXPECT_EQ(xp[1], y);
     EXPECT_EQ(vp[0], 0.0);
     EXPECT_EQ(vp[1], 0.25);
+}
+
+/// A term that changes an evolved quantity in its initialize (the density) or its finalize (the
+/// positions): an impure evaluation.
+template <int Dim>
+class Impure : public IEquationTerm<Dim> {
+  public:
+    explicit Impure(bool inFinalize) : inFinalize_(inFinalize) {}
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
+    void initialize(IScheduler&, Storage<Dim>& s, Float) override {
+        if (!inFinalize_) s.template getValue<Float>(QuantityId::DENSITY)[3] *= 1.001;
+    }
+    void finalize(IScheduler&, Storage<Dim>& s, Float) override {
+        if (inFinalize_) s.template getValue<Vector<Dim>>(QuantityId::POSITION)[5][0] += 1e-9;
+    }
+    void create(Storage<Dim>&, IMaterial&) const override {}
+    std::string name() const override { return "Impure"; }
+
+  private:
+    bool inFinalize_;
+};
+
+TEST(Phases, TheCheckNamesTheTermAndTheQuantityAnEvaluationChanged) {
+    for (const bool inFinalize : {false, true}) {
+        JitteredBox box;
+        box.model.extraTerms += makeTerm<Impure<2>>(inFinalize);
+        SequentialScheduler scheduler;
+        Solver<2> solver = box.solver(scheduler);
+        try {
+            solver.evaluateCheckingPurity(box.storage, 0.0);
+            ADD_FAILURE() << "the impure term was not caught";
+        } catch (const ImpureEvaluation& e) {
+            const std::string message = e.what();
+            const std::string expected =
+                inFinalize ? "the term Impure (finalize) changed the values of quantity 0 "
+                             "(particle 5)"
+                           : "the term Impure (initialize) changed the values of quantity 2 "
+                             "(particle 3)";
+            EXPECT_EQ(message.find(expected), 0u) << message;
+        }
+    }
+#ifndef NDEBUG
+    JitteredBox box;  // this build checks every evaluation
+    box.model.extraTerms += makeTerm<Impure<2>>(false);
+    SequentialScheduler scheduler;
+    Solver<2> solver = box.solver(scheduler);
+    EXPECT_THROW(solver.evaluate(box.storage, 0.0), ImpureEvaluation);
+#endif
+}
+
+TEST(Phases, TheFluidModelPassesTheCheckWithWallsAndAFreeSurface) {
+    FluidModel<2> model;
+    model.maxVelocity = 1;
+    model.bodyForce = constantForce(Vector<2>{{0.0, -9.81}});
+    const auto [geometry, settings] = WalledBox(0.5);
+    Storage<2> s = makeFluidStorage(model, geometry, settings);
+    SequentialScheduler scheduler;
+    Solver<2> solver(scheduler, settings, makeFluidEquations(model, geometry), geometry.domain);
+    LeapfrogKDK<2> integrator;
+    num::sph::Run<2> run(s, solver, integrator);
+    for (int k = 0; k < 5; ++k) run.step();
+    const auto c = s.getValue<Float>(FluidId::KERNEL_SUM);
+    const auto m = s.getValue<Float>(QuantityId::MASS);
+    const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    Size atSurface = 0;
+    for (Size i = 0; i < s.size(); ++i)
+        atSurface += isFluid(kind[i]) && atFreeSurface(c[i], m[i] / rho[i], solver.kernel().W(0));
+    ASSERT_GT(atSurface, 10u) << "the water's top is a free surface";
+    // The wall condition rewrites the boundary particles' density: allowed (it prepares it).
+    EXPECT_NO_THROW(solver.evaluateCheckingPurity(s, run.time()));
+}
+
+/// The constraints run before every evaluation: a particle that left the periodic box is
+/// wrapped back before the neighbour search, and a second evaluation changes nothing.
+TEST(Phases, EvaluateWrapsPeriodicPositionsFirst) {
+    JitteredBox box;
+    SequentialScheduler scheduler;
+    Solver<2> solver = box.solver(scheduler);
+    auto x = box.storage.getValue<Vector<2>>(QuantityId::POSITION);
+    const Vector<2> inside = x[7];
+    x[7][0] += 1.0;  // one period to the right
+    solver.evaluate(box.storage, 0.0);
+    EXPECT_NEAR(x[7][0], inside[0], 1e-15);
+    EXPECT_EQ(x[7][1], inside[1]);
+    const Storage<2> first = box.storage;
+    solver.evaluateCheckingPurity(box.storage, 0.0);
+    EXPECT_TRUE(sameState(first, box.storage));
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ TEST(PluginErrors, NotAPlugin) {
 
 TEST(PluginErrors, ApiVersionMismatch) {
     expectError("version", sceneWith(WRONG_VERSION_PLUGIN, kSpring), kPlugin,
-                "was built against plugin API version 1000, fluid_sim has version 2");
+                "was built against plugin API version 1001, fluid_sim has version 3");
 }
 
 TEST(PluginErrors, UnknownTerm) {

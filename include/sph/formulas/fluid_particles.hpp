@@ -40,12 +40,14 @@ namespace formulas {
 /// V = m / rho (terms/pair_inputs.hpp).
 NUMERICS_HD_INLINE Float particleVolume(Float m, Float rho) { return m / rho; }
 
-/// The free-surface tension limit (terms/free_surface.hpp; Colagrossi et al. 2009): at a
-/// particle with C_i < 0.9, p = max(p, p(f rho0)) and rho = max(rho, f rho0).
-NUMERICS_HD_INLINE void limitSurfaceTension(Float& p, Float& rho, Float pMin, Float rhoMin) {
-    p = hd::max(p, pMin);
-    rho = hd::max(rho, rhoMin);
+/// The free-surface tension limit (terms/free_surface.hpp; Colagrossi et al. 2009), at a
+/// particle with C_i < 0.9: the density floor rho = max(rho, f rho0), a constraint on the state
+/// before each evaluation, ...
+NUMERICS_HD_INLINE Float surfaceDensityFloor(Float rho, Float rhoMin) {
+    return hd::max(rho, rhoMin);
 }
+/// ... and the pressure floor p = max(p, p(f rho0)) after the equation of state.
+NUMERICS_HD_INLINE Float surfacePressureFloor(Float p, Float pMin) { return hd::max(p, pMin); }
 
 /// dx_i = V_i^(1/Dim), the local particle spacing; particle shifting compares W_ij with
 /// W(dx_ij) (terms/particle_shifting.hpp).

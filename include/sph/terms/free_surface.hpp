@@ -14,6 +14,10 @@
 // f = 1 allows no tension at all; then an impact on a wall rebounds, since the compression of
 // the impacting water is released with nothing to hold it: the default f = 0.99 allows a tension
 // of about rho0 U^2 with c0 = 10 U, which holds the water at the wall (sph/defaults.hpp).
+// Where the density is evolved (continuity), its floor is a constraint on the state
+// (FreeSurfaceTensionLimit::constrain, before every evaluation, so the integrator's predicted
+// densities are held too); the pressure floor follows the equation of state (initialize). Where
+// the density is computed in each evaluation (summation), both floors apply in initialize.
 // Inside the fluid (C_i >= 0.9) nothing changes, so closed flows (Taylor-Green, cavities) keep
 // their negative gauge pressures. C_i is the sum of the previous evaluation (one step old: a
 // particle moves less than 0.25 h per step); before the first it is taken as 1.
@@ -109,7 +113,7 @@ class KernelSumPart : public DerivativeTemplate<KernelSumPart<Dim>, Dim> {
     ArrayView<Float> c_, nearSurface_;
 };
 
-/// Limits pressure and density at free-surface particles (see the top of this file). Place it
+/// Limits density and pressure at free-surface particles (see the top of this file). Place it
 /// after the equation of state and before the wall condition.
 template <int Dim>
 class FreeSurfaceTensionLimit : public IEquationTerm<Dim> {
@@ -122,20 +126,13 @@ class FreeSurfaceTensionLimit : public IEquationTerm<Dim> {
         w0_ = RunKernel<Dim>(settings).W(0);
         d.template require<KernelSumPart<Dim>>(w0_);
     }
+    /// The density floor where the density is evolved (continuity).
+    void constrain(IScheduler& scheduler, Storage<Dim>& s) override {
+        if (s.order(QuantityId::DENSITY) != OrderEnum::ZERO) limit(scheduler, s, true, false);
+    }
+    /// The pressure floor, and the density floor where the density is computed (summation).
     void initialize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
-        const auto c = s.template getValue<Float>(FluidId::KERNEL_SUM);
-        const auto m = s.template getValue<Float>(QuantityId::MASS);
-        const auto kind = s.template getValue<int>(QuantityId::KIND);
-        auto p = s.template getValue<Float>(QuantityId::PRESSURE);
-        auto rho = s.template getValue<Float>(QuantityId::DENSITY);
-        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
-            for (Size i = b; i < e; ++i) {
-                if (!isFluid(kind[i]) ||
-                    !atFreeSurface(c[i], formulas::particleVolume(m[i], rho[i]), w0_))
-                    continue;
-                formulas::limitSurfaceTension(p[i], rho[i], pMin_, rhoMin_);
-            }
-        });
+        limit(scheduler, s, s.order(QuantityId::DENSITY) == OrderEnum::ZERO, true);
     }
     void finalize(IScheduler&, Storage<Dim>&, Float) override {}
     TermAccess access() const override {
@@ -149,6 +146,24 @@ class FreeSurfaceTensionLimit : public IEquationTerm<Dim> {
     }
 
   private:
+    /// The floors at fluid particles whose support is cut (C_i < 0.9).
+    void limit(IScheduler& scheduler, Storage<Dim>& s, bool density, bool pressure) const {
+        const auto c = s.template getValue<Float>(FluidId::KERNEL_SUM);
+        const auto m = s.template getValue<Float>(QuantityId::MASS);
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        auto p = s.template getValue<Float>(QuantityId::PRESSURE);
+        auto rho = s.template getValue<Float>(QuantityId::DENSITY);
+        scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            for (Size i = b; i < e; ++i) {
+                if (!isFluid(kind[i]) ||
+                    !atFreeSurface(c[i], formulas::particleVolume(m[i], rho[i]), w0_))
+                    continue;
+                if (density) rho[i] = formulas::surfaceDensityFloor(rho[i], rhoMin_);
+                if (pressure) p[i] = formulas::surfacePressureFloor(p[i], pMin_);
+            }
+        });
+    }
+
     Float rhoMin_, pMin_;  ///< f rho0 and p(f rho0)
     Float w0_ = 0;
 };

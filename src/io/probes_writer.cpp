@@ -1,0 +1,71 @@
+#include "probes_writer.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "io/diagnostics.hpp"
+#include "io/file.hpp"
+#include "io/probe_plot.hpp"
+
+namespace num::io {
+
+template <int Dim>
+void ProbesWriter<Dim>::start() {
+    // Quoted where needed (RFC 4180), although probe names are plain words.
+    auto field = [](const std::string& name) {
+        if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
+        std::string q = "\"";
+        for (char c : name) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+        return q + "\"";
+    };
+    std::string header = "time";
+    const char* axes = "xyz";
+    for (const auto& p : probes_)
+        for (const auto& f : p.fields) {
+            if (f == "velocity")
+                for (int k = 0; k < Dim; ++k)
+                    header += "," + field(p.name + ".v" + std::string(1, axes[k]));
+            else
+                header += "," + field(p.name + "." + f);
+        }
+    writeFileAtomically(c_.path("probes.csv"), header + "\n");
+}
+
+template <int Dim>
+void ProbesWriter<Dim>::resume(double t, const OutputSeries&) {
+    std::ifstream in(c_.path("probes.csv"));
+    if (!in) return start();
+    std::string line, kept;
+    bool header = true;
+    while (std::getline(in, line)) {
+        if (!header && std::strtod(line.c_str(), nullptr) > t * (1 + 1e-12)) break;
+        kept += line + "\n";
+        header = false;
+    }
+    writeFileAtomically(c_.path("probes.csv"), kept);
+}
+
+template <int Dim>
+void ProbesWriter<Dim>::write(const sph::Storage<Dim>& s, const std::vector<OutputField>&, double t,
+                              int) {
+    std::string row = formatted("%.10g", t);
+    for (const auto& p : probes_)
+        for (const auto& f : p.fields)
+            for (double v : probe(s, kernel_, p.point, f)) row += formatted(",%.10g", v);
+    appendToFile(c_.path("probes.csv"), row + "\n");
+}
+
+template <int Dim>
+void ProbesWriter<Dim>::finish(bool, EndOfRun& end) {
+    std::ifstream in(c_.path("probes.csv"), std::ios::binary);
+    std::ostringstream csv;
+    csv << in.rdbuf();
+    end.probePlot = c_.path("probes.png");
+    writePng(end.probePlot, plotProbes(csv.str(), "probes: " + c_.title, plotWidth_));
+}
+
+template class ProbesWriter<2>;
+template class ProbesWriter<3>;
+
+}  // namespace num::io

@@ -1,0 +1,39 @@
+// The probes of a run: a row of probes.csv per output time (the fields interpolated at each
+// probe's point), and at the end their plot, probes.png. Internal to numerics_io.
+#pragma once
+
+#include <vector>
+
+#include "io/output_writer.hpp"
+#include "io/scene.hpp"
+#include "sph/kernel_choice.hpp"
+
+namespace num::io {
+
+template <int Dim>
+class ProbesWriter final : public IWriter<Dim> {
+  public:
+    /// `plotWidth`: of probes.png [px].
+    ProbesWriter(const WriterContext& context, std::vector<Probe<Dim>> probes,
+                 const sph::RunSettings& settings, int plotWidth)
+        : c_(context), probes_(std::move(probes)), kernel_(settings), plotWidth_(plotWidth) {}
+
+    /// A fresh probes.csv: its header.
+    void start() override;
+    /// probes.csv keeps its rows up to t (a fresh one when there is none).
+    void resume(double t, const OutputSeries& series) override;
+    void write(const sph::Storage<Dim>& s, const std::vector<OutputField>& fields, double t,
+               int index) override;
+    void finish(bool completed, EndOfRun& end) override;
+    std::vector<WrittenFile> files() const override {
+        return {{"probes.csv, probes.png", "probe values over time, and their plot"}};
+    }
+
+  private:
+    WriterContext c_;
+    std::vector<Probe<Dim>> probes_;
+    sph::RunKernel<Dim> kernel_;
+    int plotWidth_;
+};
+
+}  // namespace num::io

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "spatial/vec.hpp"
+#include "sph/boundary/side_boundary.hpp"
 #include "sph/defaults.hpp"
 
 namespace num::io {
@@ -26,20 +28,10 @@ using SceneVec = Vec<double, Dim>;
 template <int Dim>
 using VectorField = std::array<Expression, Dim>;
 
-enum class SideType { WALL, PERIODIC, OPEN };
-
-struct ThermalCondition {
-    enum class Kind { ADIABATIC, TEMPERATURE, HEAT_FLUX } kind = Kind::ADIABATIC;
-    double value = 0;  ///< temperature [degC] or heat flux into the fluid [W/m^2]
-};
-
+/// One side of the domain box: its boundary type's module with the side's parameters
+/// (sph/boundary/side_boundary.hpp; the types: src/io/boundary_types.cpp).
 template <int Dim>
-struct BoundarySide {
-    SideType type = SideType::WALL;
-    bool slip = false;
-    SceneVec<Dim> velocity{};
-    ThermalCondition thermal;
-};
+using SideBoundary = std::shared_ptr<const sph::ISideBoundary<Dim>>;
 
 struct MaterialSpec {
     std::string name;
@@ -51,12 +43,12 @@ struct MaterialSpec {
     double referenceTemperature = sph::defaults::referenceTemperature;
 };
 
-enum class Shape { BOX, CIRCLE, SPHERE };
+enum class ShapeKind { BOX, CIRCLE, SPHERE };
 
 template <int Dim>
 struct FluidBlock {
     std::string material;
-    Shape shape = Shape::BOX;
+    ShapeKind shape = ShapeKind::BOX;
     SceneVec<Dim> min{}, max{}, center{};
     double radius = 0;
     Expression temperature{sph::defaults::temperature}, pressure{0.0};
@@ -65,7 +57,7 @@ struct FluidBlock {
 
 template <int Dim>
 struct Body {
-    Shape shape = Shape::CIRCLE;
+    ShapeKind shape = ShapeKind::CIRCLE;
     SceneVec<Dim> min{}, max{}, center{};
     double radius = 0;
     double temperature = sph::defaults::temperature;
@@ -120,7 +112,7 @@ struct Scene {
     std::string file;  ///< where it was read from (for messages)
     std::string name;
     SceneVec<Dim> domainMin{}, domainMax{};
-    std::array<std::array<BoundarySide<Dim>, 2>, Dim> sides{};  ///< [axis][0 = low, 1 = high]
+    std::array<std::array<SideBoundary<Dim>, 2>, Dim> sides{};  ///< [axis][0 = low, 1 = high]
     double spacing = sph::defaults::spacing, hOverSpacing = sph::defaults::hOverSpacing;
     std::string kernel = sph::defaults::kernel;
     std::string evaluation = sph::defaults::evaluation;  ///< the pair loop: asymmetric or symmetric

@@ -43,10 +43,10 @@
 // order; the tension limit's density floor acts in constrain, before every evaluation; particle
 // shifting, containment and the heat books act in postStep, once per step after the integrator):
 //   neighbour refresh (for the passes below) -> summation density -> equation of state ->
-//   tension limit at free surfaces -> wall condition (Adami et al. 2012) -> continuity
-//   (+ delta-SPH) -> pressure gradient -> laminar viscosity -> artificial viscosity -> body force
-//   -> particle shifting -> model.extraTerms (e.g. heat) -> boundary hold (zeroes boundary
-//   accelerations) -> containment (no particle inside a wall or body).
+//   tension limit at free surfaces -> wall condition (Adami et al. 2012) -> wall temperature ->
+//   continuity (+ delta-SPH) -> pressure gradient -> laminar viscosity -> artificial viscosity
+//   -> body force -> particle shifting -> model.extraTerms (e.g. heat) -> boundary hold (zeroes
+//   boundary accelerations) -> containment (no particle inside a wall or body).
 #pragma once
 
 #include <algorithm>
@@ -58,6 +58,7 @@
 #include "sph/boundary/boundary_hold.hpp"
 #include "sph/boundary/generalized_wall.hpp"
 #include "sph/boundary/particle_containment.hpp"
+#include "sph/boundary/wall_temperature.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_of_state_choice.hpp"
 #include "sph/equation_term.hpp"
@@ -246,7 +247,11 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     eq += makeTerm<EquationOfStateTerm<Dim>>(eos, model.maxTension);
     if (model.freeSurfaceTensionLimit)
         eq += makeTerm<FreeSurfaceTensionLimit<Dim>>(eos, model.freeSurfaceDensityFloor);
-    if (boundaries) eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce);
+    if (boundaries) {
+        auto nearFluid = std::make_shared<BoundaryNearFluid<Dim>>();
+        eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce, nearFluid);
+        eq += makeTerm<WallTemperature<Dim>>(gather, nearFluid);
+    }
     eq += makeTerm<PairInputs<Dim>>();  // volumes and velocities the pair terms read
     if (!summation) {
         eq += makeTerm<ContinuityDensity<Dim>>();

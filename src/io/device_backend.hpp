@@ -48,8 +48,9 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
     if (!scene.emitters.empty()) refuse("emitters", "a scene with emitters");
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)
-            if (scene.sides[k][hi].type == SideType::OPEN)
-                refuse(std::string("boundaries.") + sideName(k, hi) + ".type \"open\"",
+            if (scene.sides[k][hi]->letsFluidOut())
+                refuse(std::string("boundaries.") + sideName(k, hi) + ".type \"" +
+                           scene.sides[k][hi]->type() + "\"",
                        "an open side");
     if (scene.integrator != "leapfrog")
         refuse("time.integrator \"" + scene.integrator + "\"", "this integrator");

@@ -57,10 +57,10 @@ void At::failAt(const std::string& key, const std::string& expected) const {
     throw sceneError(file, join(key), expected, "nothing (the key is missing)");
 }
 
-void At::object(std::initializer_list<const char*> allowed,
-                std::initializer_list<const char*> required) const {
+void At::object(const std::vector<std::string>& allowed,
+                const std::vector<std::string>& required) const {
     if (!v.is_object()) fail("an object");
-    std::vector<std::string> names(allowed.begin(), allowed.end());
+    const std::vector<std::string>& names = allowed;
     for (const auto& [key, value] : v.items()) {
         if (std::find(names.begin(), names.end(), key) != names.end()) continue;
         const std::string guess = closest(key, names);
@@ -70,7 +70,7 @@ void At::object(std::initializer_list<const char*> allowed,
                          "the unknown key '" + key + "'",
                          guess.empty() ? "" : "did you mean '" + guess + "'?");
     }
-    for (const char* r : required)
+    for (const std::string& r : required)
         if (!v.contains(r)) failAt(r, "this required key");
 }
 

@@ -9,6 +9,7 @@
 
 #include "io/errors.hpp"
 #include "io/expression.hpp"
+#include "spatial/vec.hpp"
 
 namespace num::io::detail {
 
@@ -38,8 +39,8 @@ struct At {
     [[noreturn]] void failAt(const std::string& key, const std::string& expected) const;
 
     /// This must be an object with only the keys listed (and those listed as required).
-    void object(std::initializer_list<const char*> allowed,
-                std::initializer_list<const char*> required = {}) const;
+    void object(const std::vector<std::string>& allowed,
+                const std::vector<std::string>& required = {}) const;
     /// The value of a required key (error naming the key when missing).
     At required(const std::string& key) const;
 
@@ -66,5 +67,15 @@ struct At {
     /// An array of exactly n elements (n = dimension for vectors).
     void array(std::size_t n, const std::string& what) const;
 };
+
+/// A vector of Dim numbers [unit], one per axis.
+template <int Dim>
+Vec<double, Dim> readVec(const At& a, const std::string& unit) {
+    a.array(Dim, std::string("numbers [") + unit + "] (one per axis of the " + std::to_string(Dim) +
+                     "D scene)");
+    Vec<double, Dim> v;
+    for (int k = 0; k < Dim; ++k) v[k] = a[std::size_t(k)].number(-1e300, 1e300, false, unit);
+    return v;
+}
 
 }  // namespace num::io::detail

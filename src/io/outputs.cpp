@@ -39,9 +39,9 @@ RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim
     if constexpr (Dim == 2) {
         for (int k = 0; k < Dim; ++k)
             for (int hi = 0; hi < 2; ++hi)
-                if (setup.geometry.hasWall(k, hi))
-                    (hi ? render.max[k] : render.min[k]) +=
-                        (hi ? 1 : -1) * setup.wallLayers * scene.spacing;
+                if (const double margin =
+                        scene.sides[k][hi]->pictureMargin(setup.wallLayers, scene.spacing))
+                    (hi ? render.max[k] : render.min[k]) += (hi ? 1 : -1) * margin;
     }
     render.spacing = scene.spacing;
     render.width = scene.output.imageWidth;
@@ -57,9 +57,8 @@ RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim
             lo = std::min(lo, T[i]), hi = std::max(hi, T[i]);
     for (int k = 0; k < Dim; ++k)
         for (int h = 0; h < 2; ++h)
-            if (scene.sides[k][h].thermal.kind == ThermalCondition::Kind::TEMPERATURE)
-                lo = std::min(lo, scene.sides[k][h].thermal.value),
-                hi = std::max(hi, scene.sides[k][h].thermal.value);
+            if (const auto held = scene.sides[k][h]->heldTemperature())
+                lo = std::min(lo, *held), hi = std::max(hi, *held);
     for (const auto& e : scene.emitters)
         lo = std::min(lo, e.temperature), hi = std::max(hi, e.temperature);
     if (!(hi > lo)) lo = (lo < 1e299 ? lo : 20) - 1, hi = lo + 2;

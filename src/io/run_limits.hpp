@@ -51,13 +51,13 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
     for (int k = 0; k < Dim; ++k) {
         const double n = (scene.domainMax[k] - scene.domainMin[k]) / dx;
         int walls = 0;
-        for (int hi = 0; hi < 2; ++hi) walls += scene.sides[k][hi].type == SideType::WALL;
+        for (int hi = 0; hi < 2; ++hi) walls += setup.geometry.hasWall(k, hi);
         lattice *= n + walls * layers, inside *= n;
     }
     double fluid = 0, bodies = 0, emitted = 0;
-    auto volume = [&](Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, double r) {
+    auto volume = [&](ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, double r) {
         double v = 1;
-        if (shape == Shape::BOX)
+        if (shape == ShapeKind::BOX)
             for (int k = 0; k < Dim; ++k) v *= (mx[k] - mn[k]) / dx;
         else
             v = Dim == 2 ? M_PI * r * r / (dx * dx) : 4.0 / 3 * M_PI * std::pow(r / dx, 3);

@@ -85,7 +85,7 @@ void checkHealth(sph::IScheduler& scheduler, const sph::Storage<Dim>& s, const S
         if (kind[i] != int(sph::ParticleKind::FLUID)) return {-1, 0};
         for (int k = 0; k < Dim; ++k)
             for (int hi = 0; hi < 2; ++hi) {
-                if (scene.sides[k][hi].type != SideType::WALL) continue;
+                if (!scene.sides[k][hi]->closes()) continue;
                 const double beyond =
                     hi ? x[i][k] - scene.domainMax[k] : scene.domainMin[k] - x[i][k];
                 if (beyond > scene.spacing) return {k, hi};
@@ -125,25 +125,22 @@ void checkHealth(sph::IScheduler& scheduler, const sph::Storage<Dim>& s, const S
         throw AppError(ExitCode::UNSTABLE, where + std::string("the time step collapsed") + cause);
 }
 
-/// Removes fluid particles beyond open sides; returns how many.
+/// The sides' post-step sink: removes the fluid particles that left through a side that lets
+/// fluid out (ISideBoundary::markLeaving); returns how many.
 template <int Dim>
 std::size_t removeOutflow(sph::Storage<Dim>& s, const Scene<Dim>& scene) {
-    bool anyOpen = false;
+    bool anyOut = false;
     for (int k = 0; k < Dim; ++k)
-        for (int hi = 0; hi < 2; ++hi) anyOpen |= scene.sides[k][hi].type == SideType::OPEN;
-    if (!anyOpen) return 0;
-    const auto x = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
-    const auto kind = s.template getValue<int>(sph::QuantityId::KIND);
+        for (int hi = 0; hi < 2; ++hi) anyOut |= scene.sides[k][hi]->letsFluidOut();
+    if (!anyOut) return 0;
+    std::vector<char> leaving(s.size(), 0);
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi)
+            scene.sides[k][hi]->markLeaving(s, k, hi, hi ? scene.domainMax[k] : scene.domainMin[k],
+                                            leaving);
     std::vector<sph::Size> out;
-    for (sph::Size i = 0; i < s.size(); ++i) {
-        if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
-        for (int k = 0; k < Dim; ++k)
-            if ((scene.sides[k][0].type == SideType::OPEN && x[i][k] < scene.domainMin[k]) ||
-                (scene.sides[k][1].type == SideType::OPEN && x[i][k] > scene.domainMax[k])) {
-                out.push_back(i);
-                break;
-            }
-    }
+    for (sph::Size i = 0; i < s.size(); ++i)
+        if (leaving[i]) out.push_back(i);
     if (!out.empty()) s.remove(out);
     return out.size();
 }

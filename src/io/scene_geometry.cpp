@@ -18,9 +18,9 @@ std::string text(const SceneVec<Dim>& v) {
 
 /// Bounding box of a box or a round shape.
 template <int Dim>
-void bounds(Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, const SceneVec<Dim>& c,
-            double r, SceneVec<Dim>& lo, SceneVec<Dim>& hi) {
-    if (shape == Shape::BOX)
+void bounds(ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
+            const SceneVec<Dim>& c, double r, SceneVec<Dim>& lo, SceneVec<Dim>& hi) {
+    if (shape == ShapeKind::BOX)
         lo = mn, hi = mx;
     else
         lo = c - SceneVec<Dim>::filled(r), hi = c + SceneVec<Dim>::filled(r);
@@ -40,7 +40,7 @@ double distanceToBox(const SceneVec<Dim>& p, const SceneVec<Dim>& lo, const Scen
 /// Whether two shapes overlap by more than `tol`.
 template <int Dim>
 bool overlap(const FluidBlock<Dim>& f, const Body<Dim>& b, double tol) {
-    const bool fBox = f.shape == Shape::BOX, bBox = b.shape == Shape::BOX;
+    const bool fBox = f.shape == ShapeKind::BOX, bBox = b.shape == ShapeKind::BOX;
     if (fBox && bBox) {
         for (int k = 0; k < Dim; ++k)
             if (std::min(f.max[k], b.max[k]) - std::max(f.min[k], b.min[k]) <= tol) return false;
@@ -80,7 +80,7 @@ void checkSceneGeometry(const Scene<Dim>& s) {
                              "a block spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
         double cells = 1;
         for (int k = 0; k < Dim; ++k) cells *= (hi[k] - lo[k]) / s.spacing;
-        if (f.shape != Shape::BOX && 2 * f.radius < s.spacing)
+        if (f.shape != ShapeKind::BOX && 2 * f.radius < s.spacing)
             throw sceneError(
                 file, path + ".radius",
                 "a radius of at least half the spacing (" + formatted("%g", s.spacing / 2) + " m)",
@@ -140,16 +140,14 @@ void checkSceneGeometry(const Scene<Dim>& s) {
             "increase the spacing");
     const double support = 2.0 * s.hOverSpacing * s.spacing;  // largest kernel support: 2h
     for (int k = 0; k < Dim; ++k)
-        if (s.sides[k][0].type == SideType::PERIODIC &&
-            s.domainMax[k] - s.domainMin[k] < 2 * support)
+        if (s.sides[k][0]->wraps() && s.domainMax[k] - s.domainMin[k] < 2 * support)
             throw sceneError(file, std::string("boundaries.") + sideName(k, 0),
                              "a periodic axis at least twice the kernel support (" +
                                  std::to_string(2 * support) + " m) long",
                              std::to_string(s.domainMax[k] - s.domainMin[k]) + " m");
     for (int k = 0; k < Dim; ++k) {
         const double cells = (s.domainMax[k] - s.domainMin[k]) / s.spacing;
-        if (s.sides[k][0].type == SideType::PERIODIC &&
-            std::abs(cells - std::round(cells)) > 1e-6 * cells)
+        if (s.sides[k][0]->wraps() && std::abs(cells - std::round(cells)) > 1e-6 * cells)
             throw sceneError(file, "particles.spacing",
                              "a spacing that divides the periodic length " +
                                  std::to_string(s.domainMax[k] - s.domainMin[k]) + " m of axis " +

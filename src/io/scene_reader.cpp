@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "boundary_types.hpp"
 #include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
@@ -20,14 +21,7 @@ using detail::At;
 
 namespace {
 
-template <int Dim>
-SceneVec<Dim> readVec(const At& a, const std::string& unit) {
-    a.array(Dim, std::string("numbers [") + unit + "] (one per axis of the " + std::to_string(Dim) +
-                     "D scene)");
-    SceneVec<Dim> v;
-    for (int k = 0; k < Dim; ++k) v[k] = a[std::size_t(k)].number(-1e300, 1e300, false, unit);
-    return v;
-}
+using detail::readVec;
 
 template <int Dim>
 VectorField<Dim> readField(const At& a, const std::string& allowed, const std::string& meaning) {
@@ -130,61 +124,32 @@ void readSides(const At& a, Scene<Dim>& s) {
         for (int hi = 0; hi < 2; ++hi) {
             const char* name = sideName(k, hi);
             if (!a.has(name))
-                a.failAt(name,
-                         "this side's boundary ({\"type\": \"wall\"}, \"periodic\" or "
-                         "\"open\"; every side must be given)");
-            const At b = a[name];
-            b.object({"type", "slip", "velocity", "thermal"}, {"type"});
-            BoundarySide<Dim>& side = s.sides[k][hi];
-            const std::string type = b["type"].choice({"wall", "periodic", "open"});
-            side.type = type == "wall"       ? SideType::WALL
-                        : type == "periodic" ? SideType::PERIODIC
-                                             : SideType::OPEN;
-            if (side.type != SideType::WALL)
-                for (const char* key : {"slip", "velocity", "thermal"})
-                    if (b.has(key))
-                        b[key].fail("no '" + std::string(key) + "' on a " + type +
-                                    " side (it applies to walls only)");
-            side.slip = b.boolean("slip", false);
-            if (b.has("velocity")) side.velocity = readVec<Dim>(b["velocity"], "m/s");
-            if (b.has("thermal")) {
-                const At t = b["thermal"];
-                t.object({"temperature", "heat_flux"});
-                if (t.has("temperature") == t.has("heat_flux"))
-                    t.fail(
-                        "an object with exactly one of \"temperature\" [degC] or "
-                        "\"heat_flux\" [W/m^2]");
-                side.thermal.kind = t.has("temperature") ? ThermalCondition::Kind::TEMPERATURE
-                                                         : ThermalCondition::Kind::HEAT_FLUX;
-                side.thermal.value = t.has("temperature")
-                                         ? t["temperature"].number(-273.15, 1e4, false, "degC")
-                                         : t["heat_flux"].number(-1e9, 1e9, false, "W/m^2");
-            }
+                a.failAt(name, "this side's boundary (" + boundaryTypeChoices<Dim>() +
+                                   "; every side must be given)");
+            s.sides[k][hi] = readSideBoundary<Dim>(a[name]);
         }
     for (int k = 0; k < Dim; ++k) {
-        const bool lo = s.sides[k][0].type == SideType::PERIODIC;
-        const bool hi = s.sides[k][1].type == SideType::PERIODIC;
-        if (lo != hi)
-            throw sceneError(
-                a.file, a.join(sideName(k, lo ? 1 : 0)) + ".type",
-                "\"periodic\" as on the opposite side '" + std::string(sideName(k, lo ? 0 : 1)) +
-                    "' (periodic applies to both sides of an axis)",
-                "\"" +
-                    std::string(s.sides[k][lo ? 1 : 0].type == SideType::WALL ? "wall" : "open") +
-                    "\"");
+        const bool lo = s.sides[k][0]->wraps(), hi = s.sides[k][1]->wraps();
+        if (lo == hi) continue;
+        const std::string wrapping = s.sides[k][lo ? 0 : 1]->type();
+        throw sceneError(a.file, a.join(sideName(k, lo ? 1 : 0)) + ".type",
+                         "\"" + wrapping + "\" as on the opposite side '" +
+                             sideName(k, lo ? 0 : 1) + "' (" + wrapping +
+                             " applies to both sides of an axis)",
+                         "\"" + std::string(s.sides[k][lo ? 1 : 0]->type()) + "\"");
     }
 }
 
 template <int Dim>
-void readShape(const At& a, Shape& shape, SceneVec<Dim>& mn, SceneVec<Dim>& mx,
+void readShape(const At& a, ShapeKind& shape, SceneVec<Dim>& mn, SceneVec<Dim>& mx,
                SceneVec<Dim>& center, double& radius, bool fluid) {
     const char* round = Dim == 2 ? "circle" : "sphere";
     const std::string name = a.required("shape").choice({"box", "circle", "sphere"});
     if (name != "box" && name != round)
         a["shape"].fail(std::string("\"box\" or \"") + round + "\" in a " + std::to_string(Dim) +
                         "D scene");
-    shape = name == "box" ? Shape::BOX : Dim == 2 ? Shape::CIRCLE : Shape::SPHERE;
-    if (shape == Shape::BOX) {
+    shape = name == "box" ? ShapeKind::BOX : Dim == 2 ? ShapeKind::CIRCLE : ShapeKind::SPHERE;
+    if (shape == ShapeKind::BOX) {
         mn = readVec<Dim>(a.required("min"), "m");
         mx = readVec<Dim>(a.required("max"), "m");
         for (int k = 0; k < Dim; ++k)
@@ -224,7 +189,7 @@ void warnSidewaysOpenSides(Scene<Dim>& s) {
     for (int k = 0; k < Dim; ++k) gText += (k ? ", " : "") + formatted("%g", g[k]);
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)
-            if (s.sides[k][hi].type == SideType::OPEN && std::abs(g[k]) <= 1e-12 * std::sqrt(g2))
+            if (s.sides[k][hi]->letsFluidOut() && std::abs(g[k]) <= 1e-12 * std::sqrt(g2))
                 s.warnings.push_back(s.file + ": boundaries." + sideName(k, hi) +
                                      ": an open side facing sideways to gravity [" + gText +
                                      "] m/s^2: fluid can flow out through it (the side above "

@@ -7,7 +7,6 @@
 #include <mutex>
 
 #include "io/formatted.hpp"
-#include "sph/boundary/thermal_walls.hpp"
 
 namespace num::io {
 
@@ -18,9 +17,9 @@ using sph::Size;
 namespace {
 
 template <int Dim>
-sph::Shape<Dim> shapeOf(Shape shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
+sph::Shape<Dim> shapeOf(ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
                         const SceneVec<Dim>& c, double r) {
-    return shape == Shape::BOX ? sph::Shape<Dim>::box(mn, mx) : sph::Shape<Dim>::ball(c, r);
+    return shape == ShapeKind::BOX ? sph::Shape<Dim>::box(mn, mx) : sph::Shape<Dim>::ball(c, r);
 }
 
 template <int Dim>
@@ -55,7 +54,7 @@ template <int Dim, class Visit>
 void forEachBlockSample(const FluidBlock<Dim>& f, double dx, Visit&& visit) {
     const sph::Shape<Dim> shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
     SceneVec<Dim> lo = f.min, hi = f.max;
-    if (f.shape != Shape::BOX)
+    if (f.shape != ShapeKind::BOX)
         for (int k = 0; k < Dim; ++k)
             lo[k] = f.center[k] - f.radius, hi[k] = f.center[k] + f.radius;
     std::array<long, Dim> n{};
@@ -101,8 +100,8 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
     bool open = false;
     for (int k = 0; k < Dim; ++k)
         for (const auto& side : scene.sides[k]) {
-            U = std::max(U, norm(side.velocity));
-            open |= side.type == SideType::OPEN;
+            U = std::max(U, side->surfaceSpeed());
+            open |= side->letsFluidOut();
         }
     for (const auto& e : scene.emitters) U = std::max(U, e.speed);
     const double gravity = norm(g);
@@ -115,7 +114,7 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
         for (const auto& f : scene.fluids) {
             double v = 1;
             for (int k = 0; k < Dim; ++k) v *= f.max[k] - f.min[k];
-            if (f.shape != Shape::BOX)
+            if (f.shape != ShapeKind::BOX)
                 v = Dim == 2 ? M_PI * f.radius * f.radius : 4 / 3.0 * M_PI * std::pow(f.radius, 3);
             fluidVolume += v;
         }
@@ -136,8 +135,7 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
             for (const auto& b : scene.bodies) see(b.temperature);
             for (int k = 0; k < Dim; ++k)
                 for (const auto& side : scene.sides[k])
-                    if (side.thermal.kind == ThermalCondition::Kind::TEMPERATURE)
-                        see(side.thermal.value);
+                    if (const auto held = side->heldTemperature()) see(*held);
             for (const auto& [name, m] : scene.materials) beta = std::max(beta, m.thermalExpansion);
             if (scene.physics.heat && scene.physics.buoyancy && tMax > tMin)
                 U = std::max(U, std::sqrt(gravity * beta * (tMax - tMin) * height));
@@ -155,7 +153,7 @@ bool filledClosedBox(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo
     if (!scene.bodies.empty() || !scene.emitters.empty() || geo.fluid.empty()) return false;
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)
-            if (scene.sides[k][hi].type != SideType::WALL) return false;
+            if (!scene.sides[k][hi]->closes()) return false;
     const double dx = geo.spacing;
     std::array<long, Dim> n{};
     long sites = 1;
@@ -311,20 +309,14 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
     sph::FluidGeometry<Dim>& geo = setup.geometry;
     geo.spacing = dx;
     geo.domain.min = scene.domainMin, geo.domain.max = scene.domainMax;
-    for (int k = 0; k < Dim; ++k) {
-        geo.domain.periodic[k] = scene.sides[k][0].type == SideType::PERIODIC;
+    for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi) {
-            const BoundarySide<Dim>& side = scene.sides[k][hi];
             sph::WallSide<Dim>& w = geo.walls[k][hi];
-            w.present = side.type == SideType::WALL;
-            w.velocity = side.velocity;
-            w.slip = side.slip ? sph::WallSlip::FREE_SLIP : sph::WallSlip::NO_SLIP;
-            w.temperature = side.thermal.kind == ThermalCondition::Kind::TEMPERATURE
-                                ? side.thermal.value
-                                : fluid.referenceTemperature;
+            w.present = false;
+            w.temperature = fluid.referenceTemperature;
             w.material = setup.fluidMaterial;
+            scene.sides[k][hi]->build(geo, k, hi);
         }
-    }
     for (const FluidBlock<Dim>& f : scene.fluids) {
         sph::FluidRegion<Dim> r;
         r.shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
@@ -393,10 +385,11 @@ sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& s
         }
     }
     if (!scene.physics.heat || !st.has(sph::heat_ids::THERMAL_CONDITION)) return st;
-    // Thermal conditions: walls by the side they lie beyond, bodies by their material.
+    // Thermal conditions: bodies by their material, walls by the side they lie beyond.
     using TC = sph::ThermalCondition;
     const auto cond = st.template getValue<int>(sph::heat_ids::THERMAL_CONDITION);
-    std::array<std::array<std::vector<Size>, 2>, Dim> fluxLayer;
+    std::array<std::array<std::vector<Size>, 2>, Dim> beyond;
+    std::array<std::array<std::vector<Float>, 2>, Dim> depths;
     for (Size i = 0; i < st.size(); ++i) {
         if (kind[i] == int(sph::ParticleKind::BODY)) {
             int body = -1;
@@ -417,24 +410,14 @@ sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& s
             if (above > depth) depth = above, axis = k, hi = 1;
         }
         if (axis < 0) continue;
-        const ThermalCondition& tc = scene.sides[axis][hi].thermal;
-        cond[i] = int(tc.kind == ThermalCondition::Kind::TEMPERATURE ? TC::FIXED_TEMPERATURE
-                      : tc.kind == ThermalCondition::Kind::HEAT_FLUX ? TC::CONDUCTING
-                                                                     : TC::ADIABATIC);
-        if (tc.kind == ThermalCondition::Kind::HEAT_FLUX && depth < dx)
-            fluxLayer[axis][hi].push_back(i);
+        beyond[axis][hi].push_back(i), depths[axis][hi].push_back(depth);
     }
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi) {
-            const ThermalCondition& tc = scene.sides[k][hi].thermal;
-            if (tc.kind != ThermalCondition::Kind::HEAT_FLUX || fluxLayer[k][hi].empty()) continue;
             double area = 1;
             for (int j = 0; j < Dim; ++j)
                 if (j != k) area *= scene.domainMax[j] - scene.domainMin[j];
-            std::vector<char> selected(st.size(), 0);
-            for (Size i : fluxLayer[k][hi]) selected[i] = 1;
-            sph::ThermalBoundary<Dim>::setHeatFlux(st, tc.value, area,
-                                                   [&](Size i) { return selected[i] != 0; });
+            scene.sides[k][hi]->setThermal(st, beyond[k][hi], depths[k][hi], area, dx);
         }
     return st;
 }

@@ -99,7 +99,7 @@ TEST(HealthCheck, FluidBeyondAWallIsNamed) {
     const auto kind = t.storage.getValue<int>(QuantityId::KIND);
     std::size_t fluid = 0;
     while (kind[fluid] != int(num::sph::ParticleKind::FLUID)) ++fluid;
-    ASSERT_TRUE(t.scene.sides[0][1].type == SideType::WALL);
+    ASSERT_TRUE(t.scene.sides[0][1]->closes());
     x[fluid][0] = t.scene.domainMax[0] + 0.5 * t.scene.spacing;
     EXPECT_EQ(t.check(), "");
     x[fluid][0] = t.scene.domainMax[0] + 1.5 * t.scene.spacing;

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "boundary_types.hpp"
 #include "io/density_choice.hpp"
 #include "io/scene_loader.hpp"
 #include "sph/equation_of_state_choice.hpp"
@@ -22,8 +23,8 @@ TEST(SceneReader, DefaultsAndOverrides) {
     EXPECT_EQ(s.fluids[0].velocity[0](0, 0, 0, 0), 1.0);
     EXPECT_EQ(s.fluids[0].velocity[1](0, 0, 0, 0.5), 1.0);
     EXPECT_EQ(s.gravity[1](0, 0, 0, 0.005), -9.81 * 0.5);  // "-9.81*min(t/0.01, 1)"
-    EXPECT_EQ(s.sides[0][1].thermal.kind, ThermalCondition::Kind::TEMPERATURE);
-    EXPECT_EQ(s.sides[1][1].type, SideType::OPEN);
+    EXPECT_TRUE(s.sides[0][1]->heldTemperature().has_value());
+    EXPECT_STREQ(s.sides[1][1]->type(), "open");
     EXPECT_THROW(doc.set("fluids.7.temperature=3"), AppError);
 }
 
@@ -47,8 +48,8 @@ TEST(SceneReader, SideNamesAreAxisAndEnd) {
     SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_3d.json");
     doc.set("boundaries.z_min.thermal={\"temperature\": 50}");
     const Scene<3> s = readScene<3>(doc);
-    EXPECT_EQ(s.sides[2][0].thermal.value, 50.0);   // z_min: axis 2, low end
-    EXPECT_EQ(s.sides[2][1].type, SideType::OPEN);  // z_max: the top, against gravity
+    EXPECT_EQ(s.sides[2][0]->heldTemperature(), 50.0);  // z_min: axis 2, low end
+    EXPECT_STREQ(s.sides[2][1]->type(), "open");        // z_max: the top, against gravity
     EXPECT_TRUE(s.warnings.empty());
 }
 
@@ -128,4 +129,40 @@ TEST(SceneReader, TheTablesDriveTheChoices) {
     expectTheTableDrivesTheChoice("time.integrator", num::sph::integratorTable);
     expectTheTableDrivesTheChoice("physics.eos", num::sph::eosTable);
     expectTheTableDrivesTheChoice("physics.density", densityTable);
+}
+
+TEST(SceneReader, BoundaryTypesComeFromTheTable) {
+    const std::string tiny = std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json";
+    SceneDocument doc = SceneDocument::fromFile(tiny);
+    doc.set("boundaries.x_min.type=sloshing");
+    const std::string unknown = refusal(doc);
+    for (const BoundaryType<2>& type : boundaryTypes<2>())
+        EXPECT_NE(unknown.find("\"" + type.name + "\""), std::string::npos) << unknown;
+
+    nlohmann::json j = SceneDocument::fromFile(tiny).json();
+    j["boundaries"].erase("x_min");
+    const std::string missing = refusal(SceneDocument::fromText(j.dump(), "tiny_2d.json"));
+    EXPECT_NE(missing.find(boundaryTypeChoices<2>()), std::string::npos) << missing;
+
+    // A key of one type on a side of another names the types it applies to.
+    doc = SceneDocument::fromFile(tiny);
+    doc.set("boundaries.y_max.type=open");
+    doc.set("boundaries.y_max.slip=true");
+    const std::string other = refusal(doc);
+    EXPECT_NE(other.find("boundaries.y_max.slip"), std::string::npos) << other;
+    EXPECT_NE(other.find("no 'slip' on an open side (it applies to wall sides only)"),
+              std::string::npos)
+        << other;
+}
+
+TEST(SceneReader, EveryTableTypeReadsIntoItsModule) {
+    for (const BoundaryType<2>& type : boundaryTypes<2>()) {
+        SceneDocument doc =
+            SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+        for (const char* side : {"x_min", "x_max"})
+            doc.set(std::string("boundaries.") + side + "=" + "{\"type\": \"" + type.name + "\"}");
+        const Scene<2> s = readScene<2>(doc);
+        EXPECT_EQ(s.sides[0][0]->type(), type.name);
+        EXPECT_EQ(s.sides[0][1]->type(), type.name);
+    }
 }

@@ -1,0 +1,104 @@
+// The table of boundary types and their readers (format: docs/scenes.md, "boundaries").
+#include "boundary_types.hpp"
+
+#include <algorithm>
+
+#include "sph/boundary/open_boundary.hpp"
+#include "sph/boundary/periodic_boundary.hpp"
+#include "sph/boundary/wall_boundary.hpp"
+
+namespace num::io {
+
+using detail::At;
+
+namespace {
+
+/// A wall's "thermal": exactly one of temperature [degC] or heat_flux [W/m^2]; adiabatic
+/// without it.
+sph::WallThermal readWallThermal(const At& b) {
+    sph::WallThermal thermal;
+    if (!b.has("thermal")) return thermal;
+    const At t = b["thermal"];
+    t.object({"temperature", "heat_flux"});
+    if (t.has("temperature") == t.has("heat_flux"))
+        t.fail("an object with exactly one of \"temperature\" [degC] or \"heat_flux\" [W/m^2]");
+    using Kind = sph::WallThermal::Kind;
+    thermal.kind = t.has("temperature") ? Kind::TEMPERATURE : Kind::HEAT_FLUX;
+    thermal.value = t.has("temperature") ? t["temperature"].number(-273.15, 1e4, false, "degC")
+                                         : t["heat_flux"].number(-1e9, 1e9, false, "W/m^2");
+    return thermal;
+}
+
+template <int Dim>
+SideBoundary<Dim> readWall(const At& b) {
+    const sph::WallSlip slip =
+        b.boolean("slip", false) ? sph::WallSlip::FREE_SLIP : sph::WallSlip::NO_SLIP;
+    sph::Vector<Dim> velocity{};
+    if (b.has("velocity")) velocity = detail::readVec<Dim>(b["velocity"], "m/s");
+    return std::make_shared<sph::WallBoundary<Dim>>(velocity, slip, readWallThermal(b));
+}
+
+/// The reader of a type without keys of its own.
+template <int Dim, class Module>
+SideBoundary<Dim> keyless(const At&) {
+    return std::make_shared<Module>();
+}
+
+}  // namespace
+
+template <int Dim>
+const std::vector<BoundaryType<Dim>>& boundaryTypes() {
+    static const std::vector<BoundaryType<Dim>> types = {
+        {"wall", {"slip", "velocity", "thermal"}, &readWall<Dim>},
+        {"periodic", {}, &keyless<Dim, sph::PeriodicBoundary<Dim>>},
+        {"open", {}, &keyless<Dim, sph::OpenBoundary<Dim>>},
+    };
+    return types;
+}
+
+template <int Dim>
+std::string boundaryTypeChoices() {
+    const auto& types = boundaryTypes<Dim>();
+    std::string list = "{\"type\": \"" + types.front().name + "\"}";
+    for (std::size_t k = 1; k < types.size(); ++k)
+        list += (k + 1 == types.size() ? " or \"" : ", \"") + types[k].name + "\"";
+    return list;
+}
+
+template <int Dim>
+SideBoundary<Dim> readSideBoundary(const At& b) {
+    const auto& types = boundaryTypes<Dim>();
+    std::vector<std::string> names, keys{"type"};
+    for (const BoundaryType<Dim>& t : types) {
+        names.push_back(t.name);
+        for (const std::string& key : t.keys)
+            if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+    }
+    b.object(keys, {"type"});
+    const std::string name = b["type"].choice(names);
+    const BoundaryType<Dim>& type =
+        *std::find_if(types.begin(), types.end(), [&](const auto& t) { return t.name == name; });
+    for (const std::string& key : keys) {
+        if (key == "type" || !b.has(key) ||
+            std::find(type.keys.begin(), type.keys.end(), key) != type.keys.end())
+            continue;
+        std::string owners;
+        for (const BoundaryType<Dim>& t : types)
+            if (std::find(t.keys.begin(), t.keys.end(), key) != t.keys.end())
+                owners += (owners.empty() ? "" : ", ") + t.name;
+        const char* article =
+            std::string("aeiou").find(name[0]) != std::string::npos ? "an " : "a ";
+        b[key].fail("no '" + key + "' on " + article + name + " side (it applies to " + owners +
+                    " sides only)");
+    }
+    return type.read(b);
+}
+
+template const std::vector<BoundaryType<2>>& boundaryTypes<2>();
+template const std::vector<BoundaryType<3>>& boundaryTypes<3>();
+template SideBoundary<2> readSideBoundary<2>(const At&);
+template SideBoundary<3> readSideBoundary<3>(const At&);
+template std::string boundaryTypeChoices<2>();
+template std::string boundaryTypeChoices<3>();
+
+}  // namespace num::io

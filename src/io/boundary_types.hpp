@@ -1,0 +1,37 @@
+// The one table of boundary types of the scene format (boundaries.<side>.type): each type's
+// name, its keys beside "type", and the reader of those keys into its module
+// (sph/boundary/side_boundary.hpp says what a module does). The scene reader's allowed `type`
+// values, their error text and the keys a side may have come from it (internal to
+// numerics_io).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/scene.hpp"
+#include "json_check.hpp"
+
+namespace num::io {
+
+template <int Dim>
+struct BoundaryType {
+    std::string name;               ///< the value of "type"
+    std::vector<std::string> keys;  ///< the keys beside "type" a side of this type may have
+    /// Reads a side of this type (whose keys are checked against `keys`) into its module.
+    SideBoundary<Dim> (*read)(const detail::At& side);
+};
+
+/// The boundary types, in the order messages list them.
+template <int Dim>
+const std::vector<BoundaryType<Dim>>& boundaryTypes();
+
+/// Reads one side's object ({"type": ..., and that type's keys}) into its module.
+template <int Dim>
+SideBoundary<Dim> readSideBoundary(const detail::At& side);
+
+/// What a side's boundary is, for messages: {"type": "wall"}, "periodic" or "open".
+template <int Dim>
+std::string boundaryTypeChoices();
+
+}  // namespace num::io

@@ -13,7 +13,7 @@ packages=(
   libcli11-dev                   # command lines of the apps
   libmuparser-dev                # expressions in scene files
   libpng-dev                     # pictures (PNG)
-  zlib1g-dev                     # checkpoints: the CRC-32 checksum of each (src/io/checkpoint.cpp)
+  zlib1g-dev                     # checkpoints: the CRC-32 checksum of each (src/output/checkpoint.cpp)
   ffmpeg                         # the movie of a run (<prefix>.mp4) from its pictures
   python3-numpy                  # validation: comparison of the apps' outputs (validation/cases.py)
   python3-matplotlib             # validation: plots of docs/validation.md (validation/run.sh)

@@ -29,7 +29,7 @@ template <int Dim>
 using VectorField = std::array<Expression, Dim>;
 
 /// One side of the domain box: its boundary type's module with the side's parameters
-/// (sph/boundary/side_boundary.hpp; the types: src/io/boundary_types.cpp).
+/// (sph/boundary/side_boundary.hpp; the types: src/scene/boundary_types.cpp).
 template <int Dim>
 using SideBoundary = std::shared_ptr<const sph::ISideBoundary<Dim>>;
 

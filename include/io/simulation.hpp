@@ -38,7 +38,7 @@ struct RunOptions {
 
 template <int Dim>
 class Simulation;
-/// Everything a run holds (internal to numerics_io: src/io/run_parts.hpp).
+/// Everything a run holds (internal to numerics_io: src/run/run_parts.hpp).
 template <int Dim>
 struct RunParts;
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "fingerprint.hpp"
+#include "scene/fingerprint.hpp"
 
 using namespace num::io;
 

@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "io/scene_loader.hpp"
-#include "physical_check.hpp"
-#include "run_state.hpp"
+#include "run/physical_check.hpp"
+#include "run/run_state.hpp"
 
 using namespace num::io;
 using num::sph::QuantityId;

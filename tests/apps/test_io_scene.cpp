@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "boundary_types.hpp"
+#include "scene/boundary_types.hpp"
 #include "io/density_choice.hpp"
 #include "io/scene_loader.hpp"
 #include "sph/equation_of_state_choice.hpp"

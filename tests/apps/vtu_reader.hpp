@@ -1,5 +1,5 @@
 // A reader of VTK XML UnstructuredGrid files with appended raw data (UInt64 block headers),
-// written from the file format description independently of the writer in src/io: it parses
+// written from the file format description independently of the writer in src/output: it parses
 // the XML tags and the binary blocks and returns every DataArray as doubles.
 #pragma once
 

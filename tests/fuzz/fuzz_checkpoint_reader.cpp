@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "checkpoint_state.hpp"
+#include "run/checkpoint_state.hpp"
 #include "io/checkpoint.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"

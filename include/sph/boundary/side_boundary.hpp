@@ -15,7 +15,7 @@
 // from the boundary particles, which bodies make too.
 // Scene keys: the engine reads no scene file (the dependency runs engine <- app), so each type's
 // keys are read app-side, by its entry in the one table of boundary types
-// (src/io/boundary_types.cpp): its `type` name, its keys beside "type" and the function that
+// (src/scene/boundary_types.cpp): its `type` name, its keys beside "type" and the function that
 // reads them into this module. The reader's allowed `type` values and their error text come
 // from that table. A new type touches three files: its header here, its table entry, and its
 // row in docs/scenes.md.

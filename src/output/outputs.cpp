@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "io/file.hpp"
-#include "pictures_writer.hpp"
-#include "probes_writer.hpp"
+#include "output/pictures_writer.hpp"
+#include "output/probes_writer.hpp"
 
 namespace num::io {
 

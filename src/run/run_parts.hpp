@@ -11,17 +11,17 @@
 #include <optional>
 #include <string>
 
-#include "agreed_errors.hpp"
-#include "checkpoint_state.hpp"
+#include "run/agreed_errors.hpp"
+#include "run/checkpoint_state.hpp"
 #include "device/fluid_run.hpp"
 #include "io/emitters.hpp"
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
 #include "io/simulation.hpp"
 #include "parallel/domain_decomposition.hpp"
-#include "plugins.hpp"
+#include "plugin/plugins.hpp"
 #include "sph/timestepping.hpp"
-#include "stop_signals.hpp"
+#include "run/stop_signals.hpp"
 
 namespace num::io {
 

@@ -1,4 +1,4 @@
-#include "stop_signals.hpp"
+#include "run/stop_signals.hpp"
 
 #include <unistd.h>
 

@@ -1,4 +1,4 @@
-#include "pictures_writer.hpp"
+#include "output/pictures_writer.hpp"
 
 #include <algorithm>
 #include <cstdio>

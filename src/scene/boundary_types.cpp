@@ -1,5 +1,5 @@
 // The table of boundary types and their readers (format: docs/scenes.md, "boundaries").
-#include "boundary_types.hpp"
+#include "scene/boundary_types.hpp"
 
 #include <algorithm>
 

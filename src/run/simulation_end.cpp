@@ -1,10 +1,10 @@
 // The end of a Simulation's run: summary.json (with what each observer adds), the report on
 // the terminal and the exit code.
-#include "device_backend.hpp"
+#include "run/device_backend.hpp"
 #include "io/file.hpp"
-#include "run_parts.hpp"
-#include "run_report.hpp"
-#include "run_state.hpp"
+#include "run/run_parts.hpp"
+#include "run/run_report.hpp"
+#include "run/run_state.hpp"
 
 namespace num::io {
 

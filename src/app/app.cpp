@@ -12,7 +12,7 @@
 #include <iostream>
 #include <memory>
 
-#include "agreed_errors.hpp"
+#include "run/agreed_errors.hpp"
 #include "device/backend.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"

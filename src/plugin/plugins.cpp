@@ -1,6 +1,6 @@
 // Loading the plugins a scene names: dlopen, the versioned entry point, the registry of term
 // factories and writers, the terms made from their parameters, and the fields they write.
-#include "plugins.hpp"
+#include "plugin/plugins.hpp"
 
 #include <dlfcn.h>
 
@@ -12,12 +12,12 @@
 #include <fstream>
 #include <map>
 
-#include "elf_check.hpp"
+#include "plugin/elf_check.hpp"
 #include "io/formatted.hpp"
 #include "io/plugin.hpp"
-#include "json_check.hpp"
-#include "plugin_term.hpp"
-#include "plugin_writer.hpp"
+#include "scene/json_check.hpp"
+#include "plugin/plugin_term.hpp"
+#include "plugin/plugin_writer.hpp"
 
 namespace num::io {
 

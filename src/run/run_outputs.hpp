@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "io/formatted.hpp"
-#include "run_parts.hpp"
+#include "run/run_parts.hpp"
 
 namespace num::io {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "io/scene.hpp"
-#include "json_check.hpp"
+#include "scene/json_check.hpp"
 
 namespace num::io {
 

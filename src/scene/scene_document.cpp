@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "io/scene_loader.hpp"
-#include "json_check.hpp"
+#include "scene/json_check.hpp"
 
 namespace num::io {
 

@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "font5x7.hpp"
+#include "output/font5x7.hpp"
 #include "io/errors.hpp"
 
 namespace num::io {

@@ -4,12 +4,12 @@
 
 #include <thread>
 
-#include "device_backend.hpp"
-#include "fingerprint.hpp"
-#include "initial_state.hpp"
-#include "run_checks.hpp"
-#include "run_limits.hpp"
-#include "run_outputs.hpp"
+#include "run/device_backend.hpp"
+#include "scene/fingerprint.hpp"
+#include "scene/initial_state.hpp"
+#include "run/run_checks.hpp"
+#include "scene/run_limits.hpp"
+#include "run/run_outputs.hpp"
 #include "sph/evaluation_mode.hpp"
 
 namespace num::io {

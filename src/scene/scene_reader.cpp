@@ -4,11 +4,11 @@
 #include <cmath>
 #include <set>
 
-#include "boundary_types.hpp"
+#include "scene/boundary_types.hpp"
 #include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
-#include "json_check.hpp"
+#include "scene/json_check.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_of_state_choice.hpp"
 #include "sph/evaluation_mode.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint_state.hpp"
+#include "run/checkpoint_state.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/fields.hpp"

@@ -1,4 +1,4 @@
-#include "json_check.hpp"
+#include "scene/json_check.hpp"
 
 #include "sph/suggest.hpp"
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "io/errors.hpp"
-#include "json_check.hpp"
+#include "scene/json_check.hpp"
 
 // The built-in formats of output.formats, in this order: one line each. FORMAT(name) is the
 // function void <name>Format(WriterRegistry&) that formats/<name>_writer.cpp defines (it

@@ -1,4 +1,4 @@
-#include "probes_writer.hpp"
+#include "output/probes_writer.hpp"
 
 #include <cstdlib>
 #include <fstream>

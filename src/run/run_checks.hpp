@@ -6,9 +6,9 @@
 #include <csignal>
 #include <string>
 
-#include "physical_check.hpp"
-#include "run_parts.hpp"
-#include "run_state.hpp"
+#include "run/physical_check.hpp"
+#include "run/run_parts.hpp"
+#include "run/run_state.hpp"
 
 namespace num::io {
 

@@ -10,7 +10,7 @@
 #include "io/fields.hpp"
 #include "io/scene_loader.hpp"
 #include "io/writer_registry.hpp"
-#include "plugin_term.hpp"
+#include "plugin/plugin_term.hpp"
 #include "sph/equation_term.hpp"
 
 namespace num::io {

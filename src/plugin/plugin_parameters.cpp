@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "io/plugin.hpp"
-#include "json_check.hpp"
+#include "scene/json_check.hpp"
 
 namespace num::io::plugin {
 

@@ -51,104 +51,147 @@ bool overlap(const FluidBlock<Dim>& f, const Body<Dim>& b, double tol) {
     return norm(f.center - b.center) < f.radius + b.radius - tol;
 }
 
-}  // namespace
-
+/// Whether the box lo..hi lies inside the scene's domain, up to a rounding tolerance.
 template <int Dim>
-void checkSceneGeometry(const Scene<Dim>& s) {
-    const std::string& file = s.file;
+bool insideDomain(const Scene<Dim>& s, const SceneVec<Dim>& lo, const SceneVec<Dim>& hi) {
     const double tol = 1e-9 * norm(s.domainMax - s.domainMin);
-    const std::string domain =
-        "the domain " + text<Dim>(s.domainMin) + " to " + text<Dim>(s.domainMax);
-    auto inside = [&](const SceneVec<Dim>& lo, const SceneVec<Dim>& hi) {
-        for (int k = 0; k < Dim; ++k)
-            if (lo[k] < s.domainMin[k] - tol || hi[k] > s.domainMax[k] + tol) return false;
-        return true;
-    };
+    for (int k = 0; k < Dim; ++k)
+        if (lo[k] < s.domainMin[k] - tol || hi[k] > s.domainMax[k] + tol) return false;
+    return true;
+}
+
+/// The domain as the messages name it.
+template <int Dim>
+std::string domainText(const Scene<Dim>& s) {
+    return "the domain " + text<Dim>(s.domainMin) + " to " + text<Dim>(s.domainMax);
+}
+
+/// The spacing is at most half the domain's extent on every axis.
+template <int Dim>
+void checkSpacing(const Scene<Dim>& s) {
     for (int k = 0; k < Dim; ++k)
         if (s.domainMax[k] - s.domainMin[k] < 2 * s.spacing)
-            throw sceneError(file, "particles.spacing",
+            throw sceneError(s.file, "particles.spacing",
                              "a spacing at most half the domain's extent on every axis",
                              formatted("%g", s.spacing));
-    double estimate = 0;
-    for (std::size_t i = 0; i < s.fluids.size(); ++i) {
-        const FluidBlock<Dim>& f = s.fluids[i];
-        const std::string path = "fluids[" + std::to_string(i) + "]";
-        SceneVec<Dim> lo, hi;
-        bounds<Dim>(f.shape, f.min, f.max, f.center, f.radius, lo, hi);
-        if (!inside(lo, hi))
-            throw sceneError(file, path, "a fluid block inside " + domain,
-                             "a block spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
-        double cells = 1;
-        for (int k = 0; k < Dim; ++k) cells *= (hi[k] - lo[k]) / s.spacing;
-        if (f.shape != ShapeKind::BOX && 2 * f.radius < s.spacing)
+}
+
+/// Fluid block i lies inside the domain, holds particles and overlaps no body. Returns its
+/// bounding box's volume in spacing cells (an estimate of its particle count).
+template <int Dim>
+double checkFluidBlock(const Scene<Dim>& s, std::size_t i) {
+    const std::string& file = s.file;
+    const FluidBlock<Dim>& f = s.fluids[i];
+    const std::string path = "fluids[" + std::to_string(i) + "]";
+    SceneVec<Dim> lo, hi;
+    bounds<Dim>(f.shape, f.min, f.max, f.center, f.radius, lo, hi);
+    if (!insideDomain(s, lo, hi))
+        throw sceneError(file, path, "a fluid block inside " + domainText(s),
+                         "a block spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
+    double cells = 1;
+    for (int k = 0; k < Dim; ++k) cells *= (hi[k] - lo[k]) / s.spacing;
+    if (f.shape != ShapeKind::BOX && 2 * f.radius < s.spacing)
+        throw sceneError(
+            file, path + ".radius",
+            "a radius of at least half the spacing (" + formatted("%g", s.spacing / 2) + " m)",
+            formatted("%g", f.radius), "the block would hold no particle");
+    for (int k = 0; k < Dim; ++k)
+        if (hi[k] - lo[k] < s.spacing)
             throw sceneError(
-                file, path + ".radius",
-                "a radius of at least half the spacing (" + formatted("%g", s.spacing / 2) + " m)",
-                formatted("%g", f.radius), "the block would hold no particle");
-        for (int k = 0; k < Dim; ++k)
-            if (hi[k] - lo[k] < s.spacing)
-                throw sceneError(file, path,
-                                 "a block at least one spacing (" + formatted("%g", s.spacing) +
-                                     " m) wide on every axis",
-                                 "a width of " + formatted("%g", hi[k] - lo[k]) + " m on axis " +
-                                     std::to_string(k),
-                                 "the block would hold no particle");
-        estimate += cells;
-        for (std::size_t j = 0; j < s.bodies.size(); ++j)
-            if (overlap(f, s.bodies[j], 0.5 * s.spacing))
-                throw sceneError(file, path, "a fluid block that does not overlap a solid body",
-                                 "an overlap with bodies[" + std::to_string(j) + "]",
-                                 "shrink or split the block around the body");
-    }
+                file, path,
+                "a block at least one spacing (" + formatted("%g", s.spacing) +
+                    " m) wide on every axis",
+                "a width of " + formatted("%g", hi[k] - lo[k]) + " m on axis " + std::to_string(k),
+                "the block would hold no particle");
+    for (std::size_t j = 0; j < s.bodies.size(); ++j)
+        if (overlap(f, s.bodies[j], 0.5 * s.spacing))
+            throw sceneError(file, path, "a fluid block that does not overlap a solid body",
+                             "an overlap with bodies[" + std::to_string(j) + "]",
+                             "shrink or split the block around the body");
+    return cells;
+}
+
+/// Checks every fluid block; returns the estimated number of fluid particles.
+template <int Dim>
+double checkFluidBlocks(const Scene<Dim>& s) {
+    double estimate = 0;
+    for (std::size_t i = 0; i < s.fluids.size(); ++i) estimate += checkFluidBlock(s, i);
+    return estimate;
+}
+
+template <int Dim>
+void checkBodies(const Scene<Dim>& s) {
     for (std::size_t j = 0; j < s.bodies.size(); ++j) {
         const Body<Dim>& b = s.bodies[j];
         SceneVec<Dim> lo, hi;
         bounds<Dim>(b.shape, b.min, b.max, b.center, b.radius, lo, hi);
-        if (!inside(lo, hi))
-            throw sceneError(file, "bodies[" + std::to_string(j) + "]", "a body inside " + domain,
+        if (!insideDomain(s, lo, hi))
+            throw sceneError(s.file, "bodies[" + std::to_string(j) + "]",
+                             "a body inside " + domainText(s),
                              "a body spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
     }
+}
+
+/// Every emitter lies inside the domain, with a nozzle at least one spacing wide and no wider
+/// than the domain (which bounds the set-up's work).
+template <int Dim>
+void checkEmitters(const Scene<Dim>& s) {
     for (std::size_t i = 0; i < s.emitters.size(); ++i) {
         const Emitter<Dim>& e = s.emitters[i];
-        if (!inside(e.position, e.position))
-            throw sceneError(file, "emitters[" + std::to_string(i) + "].position",
-                             "a point inside " + domain, text<Dim>(e.position));
-        double extent = 0;  // a nozzle no wider than the domain (bounds the set-up's work)
+        if (!insideDomain(s, e.position, e.position))
+            throw sceneError(s.file, "emitters[" + std::to_string(i) + "].position",
+                             "a point inside " + domainText(s), text<Dim>(e.position));
+        double extent = 0;
         for (int k = 0; k < Dim; ++k) extent = std::max(extent, s.domainMax[k] - s.domainMin[k]);
         if (2 * e.radius < s.spacing || 2 * e.radius > extent)
-            throw sceneError(file, "emitters[" + std::to_string(i) + "].radius",
+            throw sceneError(s.file, "emitters[" + std::to_string(i) + "].radius",
                              "a radius of at least half the spacing (" +
                                  formatted("%g", s.spacing / 2) +
                                  " m) and at most half the domain's largest extent (" +
                                  formatted("%g", extent / 2) + " m)",
                              formatted("%g", e.radius) + " m");
     }
+}
+
+template <int Dim>
+void checkProbes(const Scene<Dim>& s) {
     for (std::size_t i = 0; i < s.probes.size(); ++i)
-        if (!inside(s.probes[i].point, s.probes[i].point))
-            throw sceneError(file, "probes[" + std::to_string(i) + "].point",
-                             "a point inside " + domain, text<Dim>(s.probes[i].point));
+        if (!insideDomain(s, s.probes[i].point, s.probes[i].point))
+            throw sceneError(s.file, "probes[" + std::to_string(i) + "].point",
+                             "a point inside " + domainText(s), text<Dim>(s.probes[i].point));
+}
+
+/// The scene makes fluid particles, at most 20 million of them at the start.
+template <int Dim>
+void checkFluidAmount(const Scene<Dim>& s, double estimate) {
     if (s.fluids.empty() && s.emitters.empty())
-        throw sceneError(file, "fluids",
+        throw sceneError(s.file, "fluids",
                          "at least one fluid block or emitter (the scene has no fluid particles)",
                          "none",
                          "add a block such as {\"material\": \"water\", \"shape\": \"box\", "
                          "\"min\": [...], \"max\": [...]}");
     if (estimate > 2e7)
         throw sceneError(
-            file, "particles.spacing", "a spacing giving at most 20 million fluid particles",
+            s.file, "particles.spacing", "a spacing giving at most 20 million fluid particles",
             formatted("%g", s.spacing) + " (about " + formatted("%.3g", estimate) + " particles)",
             "increase the spacing");
-    const double support = 2.0 * s.hOverSpacing * s.spacing;  // largest kernel support: 2h
+}
+
+/// Every periodic axis is at least twice the largest kernel support (2h) long and a whole
+/// number of spacings.
+template <int Dim>
+void checkPeriodicAxes(const Scene<Dim>& s) {
+    const double support = 2.0 * s.hOverSpacing * s.spacing;
     for (int k = 0; k < Dim; ++k)
         if (s.sides[k][0]->wraps() && s.domainMax[k] - s.domainMin[k] < 2 * support)
-            throw sceneError(file, std::string("boundaries.") + sideName(k, 0),
+            throw sceneError(s.file, std::string("boundaries.") + sideName(k, 0),
                              "a periodic axis at least twice the kernel support (" +
                                  std::to_string(2 * support) + " m) long",
                              std::to_string(s.domainMax[k] - s.domainMin[k]) + " m");
     for (int k = 0; k < Dim; ++k) {
         const double cells = (s.domainMax[k] - s.domainMin[k]) / s.spacing;
         if (s.sides[k][0]->wraps() && std::abs(cells - std::round(cells)) > 1e-6 * cells)
-            throw sceneError(file, "particles.spacing",
+            throw sceneError(s.file, "particles.spacing",
                              "a spacing that divides the periodic length " +
                                  std::to_string(s.domainMax[k] - s.domainMin[k]) + " m of axis " +
                                  std::to_string(k),
@@ -156,6 +199,19 @@ void checkSceneGeometry(const Scene<Dim>& s) {
                              "use " + std::to_string((s.domainMax[k] - s.domainMin[k]) /
                                                      std::max(1.0, std::round(cells))));
     }
+}
+
+}  // namespace
+
+template <int Dim>
+void checkSceneGeometry(const Scene<Dim>& s) {
+    checkSpacing(s);
+    const double estimate = checkFluidBlocks(s);
+    checkBodies(s);
+    checkEmitters(s);
+    checkProbes(s);
+    checkFluidAmount(s, estimate);
+    checkPeriodicAxes(s);
 }
 
 template void checkSceneGeometry<2>(const Scene<2>&);

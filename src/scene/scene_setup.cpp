@@ -208,20 +208,23 @@ void checkSoundSpeed(const Scene<Dim>& scene, const std::string& fluidName, doub
                 formatted("%g", kMaxSoundSpeed / sph::defaults::soundSpeedFactor) + " m/s");
 }
 
-}  // namespace
-
+/// Indexes the materials in name order and returns the fluid's material: the first fluid
+/// block's, else the first emitter's. It sets the equation of state.
 template <int Dim>
-SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
-                               const sph::EquationHolder<Dim>& extraTerms) {
-    SceneSetup<Dim> setup;
-    const double dx = scene.spacing;
-    // Materials in name order; the first fluid's material sets the equation of state.
+std::string indexMaterials(const Scene<Dim>& scene, SceneSetup<Dim>& setup) {
     int index = 0;
     for (const auto& [name, m] : scene.materials) setup.materialIndex[name] = index++;
     const std::string fluidName =
         !scene.fluids.empty() ? scene.fluids[0].material : scene.emitters[0].material;
-    const MaterialSpec& fluid = scene.materials.at(fluidName);
     setup.fluidMaterial = setup.materialIndex[fluidName];
+    return fluidName;
+}
+
+/// Every fluid block and emitter has the density, sound speed and viscosities of the fluid's
+/// material: the fluid is one phase (thermal properties may differ).
+template <int Dim>
+void checkOnePhase(const Scene<Dim>& scene, const std::string& fluidName) {
+    const MaterialSpec& fluid = scene.materials.at(fluidName);
     auto sameFluid = [&](const std::string& name, const std::string& path) {
         const MaterialSpec& m = scene.materials.at(name);
         if (m.density != fluid.density || m.soundSpeed != fluid.soundSpeed ||
@@ -237,19 +240,39 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         sameFluid(scene.fluids[i].material, "fluids[" + std::to_string(i) + "].material");
     for (std::size_t i = 0; i < scene.emitters.size(); ++i)
         sameFluid(scene.emitters[i].material, "emitters[" + std::to_string(i) + "].material");
+}
 
-    // Gravity as a function of time (expressions in t), with the optional ramp.
+/// Gravity as a function of time (expressions in t), with the optional ramp
+/// g(t) = g 0.5 (1 - cos(pi t / ramp)) for t < ramp.
+template <int Dim>
+sph::BodyForce<Dim> gravityOverTime(const Scene<Dim>& scene) {
     auto mutex = std::make_shared<std::mutex>();
     const VectorField<Dim> g = scene.gravity;
     const double ramp = scene.physics.gravityRamp;
-    setup.gravity = [g, ramp, mutex](Float t) {
+    return [g, ramp, mutex](Float t) {
         std::lock_guard<std::mutex> lock(*mutex);
         sph::Vector<Dim> v = at<Dim>(g, sph::Vector<Dim>{}, t);
         if (ramp > 0 && t < ramp) v *= 0.5 * (1 - std::cos(M_PI * std::max(t, 0.0) / ramp));
         return v;
     };
-    const sph::Vector<Dim> g0 = at<Dim>(g, sph::Vector<Dim>{}, std::max(ramp, 0.0));
+}
 
+/// Whether gravity acts at all: some component varies in time or is not zero.
+template <int Dim>
+bool gravityIsOn(const Scene<Dim>& scene) {
+    bool on = false;
+    for (int k = 0; k < Dim; ++k)
+        on |= !scene.gravity[k].isConstant() || scene.gravity[k](0, 0, 0, 0) != 0;
+    return on;
+}
+
+/// The velocity scale U of the "auto" sound speed (gravity taken at the end of its ramp), or,
+/// where nothing moves the fluid, the one the material's sound speed implies (U = c0 / 10).
+template <int Dim>
+double settledVelocityScale(const Scene<Dim>& scene, const std::string& fluidName) {
+    const MaterialSpec& fluid = scene.materials.at(fluidName);
+    const double ramp = scene.physics.gravityRamp;
+    const sph::Vector<Dim> g0 = at<Dim>(scene.gravity, sph::Vector<Dim>{}, std::max(ramp, 0.0));
     double U = velocityScale(scene, g0);
     if (!(U > 0) && !fluid.soundSpeed)
         throw sceneError(scene.file, "physics.max_speed",
@@ -258,10 +281,15 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
                          "emitter or gravity)",
                          "or give the material a sound_speed");
     if (!(U > 0)) U = *fluid.soundSpeed / sph::defaults::soundSpeedFactor;
-    setup.velocityScale = U;
     checkSoundSpeed(scene, fluidName, U);
+    return U;
+}
 
-    sph::FluidModel<Dim>& m = setup.model;
+/// The fluid model's flow: rest density, equation of state, viscosities, density diffusion,
+/// shifting and the free-surface limits.
+template <int Dim>
+void setFlowModel(const Scene<Dim>& scene, const MaterialSpec& fluid, double U,
+                  sph::FluidModel<Dim>& m) {
     m.restDensity = fluid.density;
     m.maxVelocity = U;
     m.soundSpeed = fluid.soundSpeed ? *fluid.soundSpeed : 0.0;
@@ -272,62 +300,90 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
     m.viscosity = fluid.viscosity;
     m.artificialViscosity =
         fluid.artificialViscosity.value_or(sph::defaults::artificialViscosityFor(
-            fluid.viscosity, scene.hOverSpacing * dx, m.c0(), Dim));
+            fluid.viscosity, scene.hOverSpacing * scene.spacing, m.c0(), Dim));
     m.shifting = scene.physics.shifting;
     m.shiftingNormalToWalls = scene.physics.shiftingNormalToWalls;
     m.freeSurfaceTensionLimit = scene.physics.freeSurfaceTensionLimit;
     m.freeSurfaceDensityFloor = scene.physics.freeSurfaceDensityFloor;
-    bool gravityOn = false;
-    for (int k = 0; k < Dim; ++k)
-        gravityOn |= !scene.gravity[k].isConstant() || scene.gravity[k](0, 0, 0, 0) != 0;
-    if (gravityOn) m.bodyForce = setup.gravity;
+}
+
+/// The model's material tables in name order; the fluid's sound speed and artificial viscosity
+/// stand in where a material gives none.
+template <int Dim>
+void addMaterials(const Scene<Dim>& scene, sph::FluidModel<Dim>& m) {
     for (const auto& [name, spec] : scene.materials)
         asSceneError(scene.file, "materials." + name, [&] {
             m.materials.push_back(makeMaterial(spec, m.c0(), m.artificialViscosity));
         });
-    if (scene.physics.heat) {
-        m.heat.conduction = true;
-        m.heat.walls = sph::ThermalCondition::ADIABATIC;
-        m.heat.bodies = sph::ThermalCondition::FIXED_TEMPERATURE;
-        bool expands = false;
-        for (const auto& [name, spec] : scene.materials) expands |= spec.thermalExpansion != 0;
-        m.heat.buoyancy = scene.physics.buoyancy && expands && gravityOn;
-    }
-    m.extraTerms += extraTerms;
+}
 
-    sph::RunSettings& s = setup.settings;
+/// Heat conduction (physics.heat): adiabatic walls, bodies at a fixed temperature, and buoyancy
+/// where it is asked for, gravity acts and some material expands.
+template <int Dim>
+void setHeatModel(const Scene<Dim>& scene, bool gravityOn, sph::FluidModel<Dim>& m) {
+    if (!scene.physics.heat) return;
+    m.heat.conduction = true;
+    m.heat.walls = sph::ThermalCondition::ADIABATIC;
+    m.heat.bodies = sph::ThermalCondition::FIXED_TEMPERATURE;
+    bool expands = false;
+    for (const auto& [name, spec] : scene.materials) expands |= spec.thermalExpansion != 0;
+    m.heat.buoyancy = scene.physics.buoyancy && expands && gravityOn;
+}
+
+/// The run settings: kernel, evaluation, smoothing length, threads, time step limits.
+template <int Dim>
+void setRunSettings(const Scene<Dim>& scene, int threads, sph::RunSettings& s) {
     asSceneError(scene.file, "particles.kernel", [&] { s.set("kernel", scene.kernel); });
     asSceneError(scene.file, "particles.evaluation",
                  [&] { s.set("evaluation", scene.evaluation); });
     asSceneError(scene.file, "particles.h_over_spacing",
-                 [&] { s.set("smoothing_length", scene.hOverSpacing * dx); });
+                 [&] { s.set("smoothing_length", scene.hOverSpacing * scene.spacing); });
     asSceneError(scene.file, "--threads", [&] { s.set("threads", std::int64_t(threads)); });
     asSceneError(scene.file, "time.cfl", [&] { s.set("cfl", scene.cfl); });
     if (scene.dtMax > 0)
         asSceneError(scene.file, "time.dt_max", [&] { s.set("dt_max", scene.dtMax); });
+}
 
-    sph::FluidGeometry<Dim>& geo = setup.geometry;
-    geo.spacing = dx;
+/// The domain and its walls: each side starts absent, at the fluid's reference temperature and
+/// of the fluid's material, and its boundary builds what it needs.
+template <int Dim>
+void buildDomain(const Scene<Dim>& scene, double temperature, int material,
+                 sph::FluidGeometry<Dim>& geo) {
+    geo.spacing = scene.spacing;
     geo.domain.min = scene.domainMin, geo.domain.max = scene.domainMax;
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi) {
             sph::WallSide<Dim>& w = geo.walls[k][hi];
             w.present = false;
-            w.temperature = fluid.referenceTemperature;
-            w.material = setup.fluidMaterial;
+            w.temperature = temperature;
+            w.material = material;
             scene.sides[k][hi]->build(geo, k, hi);
         }
-    for (const FluidBlock<Dim>& f : scene.fluids) {
-        sph::FluidRegion<Dim> r;
-        r.shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
-        r.temperature = at<Dim>(
-            f.temperature,
-            r.shape.type == sph::Shape<Dim>::Type::BOX ? (f.min + f.max) * 0.5 : f.center, 0.0);
-        r.material = setup.materialIndex[f.material];
-        const VectorField<Dim> v = f.velocity;
-        r.velocity = [v](const sph::Vector<Dim>& x) { return at<Dim>(v, x, 0.0); };
-        geo.fluid.push_back(r);
-    }
+}
+
+/// A fluid block as the engine's region: its shape, its temperature at its centre (the
+/// per-particle expression comes later) and its velocity field.
+template <int Dim>
+sph::FluidRegion<Dim> fluidRegion(const FluidBlock<Dim>& f, int material) {
+    sph::FluidRegion<Dim> r;
+    r.shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
+    r.temperature =
+        at<Dim>(f.temperature,
+                r.shape.type == sph::Shape<Dim>::Type::BOX ? (f.min + f.max) * 0.5 : f.center, 0.0);
+    r.material = material;
+    const VectorField<Dim> v = f.velocity;
+    r.velocity = [v](const sph::Vector<Dim>& x) { return at<Dim>(v, x, 0.0); };
+    return r;
+}
+
+/// The geometry: domain and walls, fluid regions, solid bodies (of the fluid's material where
+/// they name none).
+template <int Dim>
+void buildGeometry(const Scene<Dim>& scene, const MaterialSpec& fluid, SceneSetup<Dim>& setup) {
+    sph::FluidGeometry<Dim>& geo = setup.geometry;
+    buildDomain(scene, fluid.referenceTemperature, setup.fluidMaterial, geo);
+    for (const FluidBlock<Dim>& f : scene.fluids)
+        geo.fluid.push_back(fluidRegion(f, setup.materialIndex[f.material]));
     for (const Body<Dim>& b : scene.bodies) {
         sph::SolidBody<Dim> body;
         body.shape = shapeOf<Dim>(b.shape, b.min, b.max, b.center, b.radius);
@@ -335,29 +391,67 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         body.material = b.material.empty() ? setup.fluidMaterial : setup.materialIndex[b.material];
         geo.bodies.push_back(body);
     }
-    setup.wallLayers = sph::wallLayersFor(sph::RunKernel<Dim>(s).supportRadius(), dx);
+}
+
+/// Density by kernel summation where asked, or, for "auto", where gravity acts on a filled
+/// closed box; else by the continuity equation.
+template <int Dim>
+sph::DensityMode densityMode(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo,
+                             bool gravityOn) {
     const bool summation =
         scene.physics.density == "summation" ||
         (scene.physics.density == "auto" && gravityOn && filledClosedBox(scene, geo));
-    m.density = summation ? sph::DensityMode::SUMMATION : sph::DensityMode::CONTINUITY;
+    return summation ? sph::DensityMode::SUMMATION : sph::DensityMode::CONTINUITY;
+}
 
-    // One template particle per emitter, made by the model itself so it has every quantity.
-    for (const Emitter<Dim>& e : scene.emitters) {
-        sph::FluidGeometry<Dim> tiny;
-        tiny.spacing = dx;
-        tiny.domain.max = sph::Vector<Dim>::filled(2 * dx);
-        for (auto& axis : tiny.walls)
-            for (auto& w : axis) w.present = false;
-        sph::FluidRegion<Dim> r;
-        r.shape = sph::Shape<Dim>::box(tiny.domain.min, tiny.domain.max);
-        r.temperature = e.temperature;
-        r.material = setup.materialIndex[e.material];
-        tiny.fluid.push_back(r);
-        sph::Storage<Dim> t = sph::makeFluidStorage(m, tiny, s);
-        t.gather({0});
-        t.materials().clear();
-        setup.emitterTemplates.push_back(std::move(t));
-    }
+/// An emitter's template particle, made by the model itself so it has every quantity.
+template <int Dim>
+sph::Storage<Dim> emitterTemplate(const Emitter<Dim>& e, int material, double dx,
+                                  const sph::FluidModel<Dim>& m, const sph::RunSettings& s) {
+    sph::FluidGeometry<Dim> tiny;
+    tiny.spacing = dx;
+    tiny.domain.max = sph::Vector<Dim>::filled(2 * dx);
+    for (auto& axis : tiny.walls)
+        for (auto& w : axis) w.present = false;
+    sph::FluidRegion<Dim> r;
+    r.shape = sph::Shape<Dim>::box(tiny.domain.min, tiny.domain.max);
+    r.temperature = e.temperature;
+    r.material = material;
+    tiny.fluid.push_back(r);
+    sph::Storage<Dim> t = sph::makeFluidStorage(m, tiny, s);
+    t.gather({0});
+    t.materials().clear();
+    return t;
+}
+
+}  // namespace
+
+template <int Dim>
+SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
+                               const sph::EquationHolder<Dim>& extraTerms) {
+    SceneSetup<Dim> setup;
+    const std::string fluidName = indexMaterials(scene, setup);
+    const MaterialSpec& fluid = scene.materials.at(fluidName);
+    checkOnePhase(scene, fluidName);
+    setup.gravity = gravityOverTime(scene);
+    setup.velocityScale = settledVelocityScale(scene, fluidName);
+    const bool gravityOn = gravityIsOn(scene);
+
+    sph::FluidModel<Dim>& m = setup.model;
+    setFlowModel(scene, fluid, setup.velocityScale, m);
+    if (gravityOn) m.bodyForce = setup.gravity;
+    addMaterials(scene, m);
+    setHeatModel(scene, gravityOn, m);
+    m.extraTerms += extraTerms;
+
+    setRunSettings(scene, threads, setup.settings);
+    buildGeometry(scene, fluid, setup);
+    setup.wallLayers =
+        sph::wallLayersFor(sph::RunKernel<Dim>(setup.settings).supportRadius(), scene.spacing);
+    m.density = densityMode(scene, setup.geometry, gravityOn);
+    for (const Emitter<Dim>& e : scene.emitters)
+        setup.emitterTemplates.push_back(
+            emitterTemplate(e, setup.materialIndex[e.material], scene.spacing, m, setup.settings));
     return setup;
 }
 

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <set>
 
-#include "scene/boundary_types.hpp"
 #include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
+#include "scene/boundary_types.hpp"
 #include "scene/json_check.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_of_state_choice.hpp"
@@ -197,6 +197,232 @@ void warnSidewaysOpenSides(Scene<Dim>& s) {
                                      top + ")");
 }
 
+/// "dimension" must be this app's: a 3D scene is run with fluid_sim_3d.
+template <int Dim>
+void checkDimension(const At& root) {
+    const int dim = int(root["dimension"].integer(2, 3));
+    if (dim != Dim)
+        throw sceneError(root.file, "dimension",
+                         std::to_string(Dim) + " for " + (Dim == 2 ? "fluid_sim" : "fluid_sim_3d"),
+                         std::to_string(dim),
+                         "this is a " + std::to_string(dim) + "D scene: run it with " +
+                             (dim == 2 ? "fluid_sim" : "fluid_sim_3d"));
+}
+
+template <int Dim>
+void readDomain(const At& domain, Scene<Dim>& s) {
+    domain.object({"min", "max"}, {"min", "max"});
+    s.domainMin = readVec<Dim>(domain["min"], "m");
+    s.domainMax = readVec<Dim>(domain["max"], "m");
+    for (int k = 0; k < Dim; ++k)
+        if (!(s.domainMax[k] > s.domainMin[k])) domain["max"].fail("max > min on every axis");
+}
+
+template <int Dim>
+void readParticles(const At& p, Scene<Dim>& s) {
+    p.object({"spacing", "h_over_spacing", "kernel", "evaluation"}, {"spacing"});
+    s.spacing = p["spacing"].number(0, 1e300, true, "m");
+    s.hOverSpacing = p.number("h_over_spacing", s.hOverSpacing, 0.8, 3.0);
+    if (p.has("kernel")) s.kernel = p["kernel"].choice(sph::choiceNames(sph::kernelTable));
+    if (p.has("evaluation"))
+        s.evaluation = p["evaluation"].choice(sph::choiceNames(sph::evaluationTable));
+}
+
+template <int Dim>
+void readTime(const At& t, Scene<Dim>& s) {
+    t.object({"end", "cfl", "integrator", "dt_max"}, {"end"});
+    s.endTime = t["end"].number(0, 1e300, true, "s");
+    s.cfl = t.number("cfl", s.cfl, 1e-6, 1);  // the engine's range (sph/settings.hpp)
+    s.dtMax = t.number("dt_max", 0, 0, 1e300, false, "s");
+    if (t.has("integrator"))
+        s.integrator = t["integrator"].choice(sph::choiceNames(sph::integratorTable));
+}
+
+template <int Dim>
+void readGravity(const At& g, Scene<Dim>& s) {
+    s.gravity = readField<Dim>(
+        g, "t",
+        "gravity is uniform in space, a function of the time t only (a force that depends on "
+        "the position is a plugin's term)");
+}
+
+template <int Dim>
+void readNumerics(const At& nu, Scene<Dim>& s) {
+    nu.object({"backend"});
+    if (nu.has("backend")) s.backend = nu["backend"].choice({"cpu", "cuda"});
+}
+
+template <int Dim>
+void readMaterials(const At& mats, Scene<Dim>& s) {
+    if (!mats.v.is_object() || mats.v.empty())
+        mats.fail("an object of named materials, e.g. {\"water\": {\"density\": 1000}}");
+    for (const auto& [name, value] : mats.v.items())
+        s.materials[name] = readMaterial(mats[name], name);
+}
+
+template <int Dim>
+FluidBlock<Dim> readFluidBlock(const At& b, const std::map<std::string, MaterialSpec>& materials) {
+    b.object({"material", "shape", "min", "max", "center", "radius", "temperature", "velocity",
+              "pressure"},
+             {"material", "shape"});
+    FluidBlock<Dim> blk;
+    blk.material = materialName(b["material"], materials);
+    readShape<Dim>(b, blk.shape, blk.min, blk.max, blk.center, blk.radius, true);
+    const char* vars = initialVariables<Dim>();
+    const std::string meaning = initialMeaning<Dim>();
+    if (b.has("temperature")) blk.temperature = b["temperature"].expression(vars, meaning);
+    if (b.has("pressure")) blk.pressure = b["pressure"].expression(vars, meaning);
+    if (b.has("velocity")) blk.velocity = readField<Dim>(b["velocity"], vars, meaning);
+    return blk;
+}
+
+template <int Dim>
+void readFluids(const At& f, Scene<Dim>& s) {
+    if (!f.v.is_array()) f.fail("an array of fluid blocks");
+    for (std::size_t i = 0; i < f.v.size(); ++i)
+        s.fluids.push_back(readFluidBlock<Dim>(f[i], s.materials));
+}
+
+template <int Dim>
+Body<Dim> readBody(const At& b, const std::map<std::string, MaterialSpec>& materials) {
+    b.object({"shape", "min", "max", "center", "radius", "temperature", "material"}, {"shape"});
+    Body<Dim> body;
+    readShape<Dim>(b, body.shape, body.min, body.max, body.center, body.radius, false);
+    body.temperature = b.number("temperature", body.temperature, -273.15, 1e4, false, "degC");
+    if (b.has("material")) body.material = materialName(b["material"], materials);
+    return body;
+}
+
+template <int Dim>
+void readBodies(const At& f, Scene<Dim>& s) {
+    if (!f.v.is_array()) f.fail("an array of solid bodies");
+    for (std::size_t i = 0; i < f.v.size(); ++i)
+        s.bodies.push_back(readBody<Dim>(f[i], s.materials));
+}
+
+/// Emitter `i` of the list (named "emitter<i>" unless it has a name).
+template <int Dim>
+Emitter<Dim> readEmitter(const At& e, std::size_t i,
+                         const std::map<std::string, MaterialSpec>& materials) {
+    e.object({"name", "position", "direction", "speed", "radius", "material", "temperature",
+              "start", "end"},
+             {"position", "direction", "speed", "radius", "material"});
+    Emitter<Dim> em;
+    em.name = e.has("name") ? e["name"].string() : "emitter" + std::to_string(i);
+    em.position = readVec<Dim>(e["position"], "m");
+    em.direction = readVec<Dim>(e["direction"], "-");
+    if (!(norm(em.direction) > 0)) e["direction"].fail("a non-zero direction vector");
+    em.direction = em.direction / norm(em.direction);
+    em.speed = e["speed"].number(0, 1e4, true, "m/s");
+    em.radius = e["radius"].number(0, 1e300, true, "m");
+    em.material = materialName(e["material"], materials);
+    em.temperature = e.number("temperature", em.temperature, -273.15, 1e4, false, "degC");
+    em.start = e.number("start", 0, 0, 1e300, false, "s");
+    em.end = e.number("end", 1e300, 0, 1e300, false, "s");
+    if (!(em.end > em.start)) e["end"].fail("an end time after the start time");
+    return em;
+}
+
+template <int Dim>
+void readEmitters(const At& f, Scene<Dim>& s) {
+    if (!f.v.is_array()) f.fail("an array of emitters");
+    for (std::size_t i = 0; i < f.v.size(); ++i)
+        s.emitters.push_back(readEmitter<Dim>(f[i], i, s.materials));
+}
+
+/// Names only: they are checked against the writers once the plugins have added theirs
+/// (checkOutputFormats). A repeated name is kept once.
+void readOutputFormats(const At& f, OutputSpec& out) {
+    if (!f.v.is_array()) f.fail("an array of output format names, e.g. [\"vtu\", \"csv\"]");
+    out.formats.clear();
+    for (std::size_t i = 0; i < f.v.size(); ++i) {
+        const std::string name = At{f.v.at(i), f.file, f.join(std::to_string(i))}.string();
+        if (std::find(out.formats.begin(), out.formats.end(), name) == out.formats.end())
+            out.formats.push_back(name);
+    }
+}
+
+void readColorRange(const At& c, OutputSpec& out) {
+    c.array(2, "temperatures [degC] (low, high)");
+    out.colorMin = c[0].number(-273.15, 1e4, false, "degC");
+    out.colorMax = c[1].number(-273.15, 1e4, false, "degC");
+    if (!(*out.colorMax > *out.colorMin)) c.fail("low < high");
+}
+
+void readOutput(const At& o, OutputSpec& out) {
+    o.object({"directory", "prefix", "every", "formats", "images", "video", "image_width",
+              "color_range"});
+    if (o.has("directory")) out.directory = o["directory"].string();
+    if (o.has("prefix")) {
+        out.prefix = o["prefix"].string();
+        if (out.prefix.empty() || out.prefix.find_first_of("/\\ ") != std::string::npos)
+            o["prefix"].fail("a non-empty file-name prefix without '/', '\\' or spaces");
+    }
+    out.every = o.number("every", out.every, 0, 1e300, true, "s");
+    if (o.has("formats")) readOutputFormats(o["formats"], out);
+    out.images = o.boolean("images", out.images);
+    out.video = o.boolean("video", out.video);
+    if (o.has("image_width")) out.imageWidth = int(o["image_width"].integer(64, 8192));
+    if (o.has("color_range")) readColorRange(o["color_range"], out);
+}
+
+/// A probe; `names` holds those of the probes before it (a name must be unique).
+template <int Dim>
+Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
+    e.object({"name", "point", "fields"}, {"name", "point"});
+    Probe<Dim> pr;
+    pr.name = e["name"].string();
+    // Column names of probes.csv: letters, digits, '_' and '-' only (no separator,
+    // quote, line break or control character can reach the file).
+    const bool plain = !pr.name.empty() && pr.name.size() <= 64 &&
+                       std::all_of(pr.name.begin(), pr.name.end(), [](char c) {
+                           return std::isalnum((unsigned char)c) || c == '_' || c == '-';
+                       });
+    if (!plain) e["name"].fail("a name of 1 to 64 letters, digits, '_' or '-'");
+    if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
+    pr.point = readVec<Dim>(e["point"], "m");
+    if (e.has("fields")) {
+        const At fl = e["fields"];
+        if (!fl.v.is_array() || fl.v.empty()) fl.fail("a non-empty array of field names");
+        for (std::size_t k = 0; k < fl.v.size(); ++k)
+            pr.fields.push_back(fl[k].choice({"velocity", "density", "pressure", "temperature"}));
+    } else {
+        pr.fields = {"velocity", "pressure", "temperature"};
+    }
+    return pr;
+}
+
+template <int Dim>
+void readProbes(const At& f, Scene<Dim>& s) {
+    if (!f.v.is_array()) f.fail("an array of probes");
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < f.v.size(); ++i) s.probes.push_back(readProbe<Dim>(f[i], names));
+}
+
+template <int Dim>
+void readPhysics(const At& ph, Scene<Dim>& s) {
+    ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting",
+               "shifting_normal_to_walls", "free_surface_clamp", "free_surface_density_floor",
+               "gravity_ramp", "max_speed", "eos", "background_pressure", "max_tension"});
+    s.physics.heat = ph.boolean("heat", s.physics.heat);
+    s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
+    if (ph.has("density")) s.physics.density = ph["density"].choice(sph::choiceNames(densityTable));
+    s.physics.densityDiffusion = ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
+    s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
+    s.physics.shiftingNormalToWalls =
+        ph.boolean("shifting_normal_to_walls", s.physics.shiftingNormalToWalls);
+    s.physics.freeSurfaceTensionLimit =
+        ph.boolean("free_surface_clamp", s.physics.freeSurfaceTensionLimit);
+    s.physics.freeSurfaceDensityFloor =
+        ph.number("free_surface_density_floor", s.physics.freeSurfaceDensityFloor, 0, 1, true);
+    s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
+    s.maxSpeed = ph.number("max_speed", 0, 0, kMaxSoundSpeed / sph::defaults::soundSpeedFactor,
+                           false, "m/s");
+    if (ph.has("eos")) s.physics.eos = ph["eos"].choice(sph::choiceNames(sph::eosTable));
+    s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
+    s.physics.maxTension = ph.number("max_tension", s.physics.maxTension, 0, 1e12, true, "Pa");
+}
+
 }  // namespace
 
 template <int Dim>
@@ -208,205 +434,22 @@ Scene<Dim> readScene(const SceneDocument& doc) {
                 {"dimension", "domain", "boundaries", "particles", "time", "materials"});
     Scene<Dim> s;
     s.file = doc.file();
-    const int dim = int(root["dimension"].integer(2, 3));
-    if (dim != Dim)
-        throw sceneError(doc.file(), "dimension",
-                         std::to_string(Dim) + " for " + (Dim == 2 ? "fluid_sim" : "fluid_sim_3d"),
-                         std::to_string(dim),
-                         "this is a " + std::to_string(dim) + "D scene: run it with " +
-                             (dim == 2 ? "fluid_sim" : "fluid_sim_3d"));
+    checkDimension<Dim>(root);
     if (root.has("name")) s.name = root["name"].string();
     if (root.has("description")) root["description"].string();
-
-    const At domain = root["domain"];
-    domain.object({"min", "max"}, {"min", "max"});
-    s.domainMin = readVec<Dim>(domain["min"], "m");
-    s.domainMax = readVec<Dim>(domain["max"], "m");
-    for (int k = 0; k < Dim; ++k)
-        if (!(s.domainMax[k] > s.domainMin[k])) domain["max"].fail("max > min on every axis");
+    readDomain(root["domain"], s);
     readSides(root["boundaries"], s);
-
-    const At p = root["particles"];
-    p.object({"spacing", "h_over_spacing", "kernel", "evaluation"}, {"spacing"});
-    s.spacing = p["spacing"].number(0, 1e300, true, "m");
-    s.hOverSpacing = p.number("h_over_spacing", s.hOverSpacing, 0.8, 3.0);
-    if (p.has("kernel")) s.kernel = p["kernel"].choice(sph::choiceNames(sph::kernelTable));
-    if (p.has("evaluation"))
-        s.evaluation = p["evaluation"].choice(sph::choiceNames(sph::evaluationTable));
-
-    const At t = root["time"];
-    t.object({"end", "cfl", "integrator", "dt_max"}, {"end"});
-    s.endTime = t["end"].number(0, 1e300, true, "s");
-    s.cfl = t.number("cfl", s.cfl, 1e-6, 1);  // the engine's range (sph/settings.hpp)
-    s.dtMax = t.number("dt_max", 0, 0, 1e300, false, "s");
-    if (t.has("integrator"))
-        s.integrator = t["integrator"].choice(sph::choiceNames(sph::integratorTable));
-
-    if (root.has("gravity"))
-        s.gravity = readField<Dim>(
-            root["gravity"], "t",
-            "gravity is uniform in space, a function of the time t only (a force that depends on "
-            "the position is a plugin's term)");
-    if (root.has("numerics")) {
-        const At nu = root["numerics"];
-        nu.object({"backend"});
-        if (nu.has("backend")) s.backend = nu["backend"].choice({"cpu", "cuda"});
-    }
-
-    const At mats = root["materials"];
-    if (!mats.v.is_object() || mats.v.empty())
-        mats.fail("an object of named materials, e.g. {\"water\": {\"density\": 1000}}");
-    for (const auto& [name, value] : mats.v.items())
-        s.materials[name] = readMaterial(mats[name], name);
-
-    if (root.has("fluids")) {
-        const At f = root["fluids"];
-        if (!f.v.is_array()) f.fail("an array of fluid blocks");
-        for (std::size_t i = 0; i < f.v.size(); ++i) {
-            const At b = f[i];
-            b.object({"material", "shape", "min", "max", "center", "radius", "temperature",
-                      "velocity", "pressure"},
-                     {"material", "shape"});
-            FluidBlock<Dim> blk;
-            blk.material = materialName(b["material"], s.materials);
-            readShape<Dim>(b, blk.shape, blk.min, blk.max, blk.center, blk.radius, true);
-            const char* vars = initialVariables<Dim>();
-            const std::string meaning = initialMeaning<Dim>();
-            if (b.has("temperature")) blk.temperature = b["temperature"].expression(vars, meaning);
-            if (b.has("pressure")) blk.pressure = b["pressure"].expression(vars, meaning);
-            if (b.has("velocity")) blk.velocity = readField<Dim>(b["velocity"], vars, meaning);
-            s.fluids.push_back(std::move(blk));
-        }
-    }
-    if (root.has("bodies")) {
-        const At f = root["bodies"];
-        if (!f.v.is_array()) f.fail("an array of solid bodies");
-        for (std::size_t i = 0; i < f.v.size(); ++i) {
-            const At b = f[i];
-            b.object({"shape", "min", "max", "center", "radius", "temperature", "material"},
-                     {"shape"});
-            Body<Dim> body;
-            readShape<Dim>(b, body.shape, body.min, body.max, body.center, body.radius, false);
-            body.temperature =
-                b.number("temperature", body.temperature, -273.15, 1e4, false, "degC");
-            if (b.has("material")) body.material = materialName(b["material"], s.materials);
-            s.bodies.push_back(body);
-        }
-    }
-    if (root.has("emitters")) {
-        const At f = root["emitters"];
-        if (!f.v.is_array()) f.fail("an array of emitters");
-        for (std::size_t i = 0; i < f.v.size(); ++i) {
-            const At e = f[i];
-            e.object({"name", "position", "direction", "speed", "radius", "material", "temperature",
-                      "start", "end"},
-                     {"position", "direction", "speed", "radius", "material"});
-            Emitter<Dim> em;
-            em.name = e.has("name") ? e["name"].string() : "emitter" + std::to_string(i);
-            em.position = readVec<Dim>(e["position"], "m");
-            em.direction = readVec<Dim>(e["direction"], "-");
-            if (!(norm(em.direction) > 0)) e["direction"].fail("a non-zero direction vector");
-            em.direction = em.direction / norm(em.direction);
-            em.speed = e["speed"].number(0, 1e4, true, "m/s");
-            em.radius = e["radius"].number(0, 1e300, true, "m");
-            em.material = materialName(e["material"], s.materials);
-            em.temperature = e.number("temperature", em.temperature, -273.15, 1e4, false, "degC");
-            em.start = e.number("start", 0, 0, 1e300, false, "s");
-            em.end = e.number("end", 1e300, 0, 1e300, false, "s");
-            if (!(em.end > em.start)) e["end"].fail("an end time after the start time");
-            s.emitters.push_back(em);
-        }
-    }
-    if (root.has("output")) {
-        const At o = root["output"];
-        o.object({"directory", "prefix", "every", "formats", "images", "video", "image_width",
-                  "color_range"});
-        OutputSpec& out = s.output;
-        if (o.has("directory")) out.directory = o["directory"].string();
-        if (o.has("prefix")) {
-            out.prefix = o["prefix"].string();
-            if (out.prefix.empty() || out.prefix.find_first_of("/\\ ") != std::string::npos)
-                o["prefix"].fail("a non-empty file-name prefix without '/', '\\' or spaces");
-        }
-        out.every = o.number("every", out.every, 0, 1e300, true, "s");
-        if (o.has("formats")) {
-            // Names only: they are checked against the writers once the plugins have added
-            // theirs (checkOutputFormats).
-            const At f = o["formats"];
-            if (!f.v.is_array()) f.fail("an array of output format names, e.g. [\"vtu\", \"csv\"]");
-            out.formats.clear();
-            for (std::size_t i = 0; i < f.v.size(); ++i) {
-                const std::string name = At{f.v.at(i), f.file, f.join(std::to_string(i))}.string();
-                if (std::find(out.formats.begin(), out.formats.end(), name) == out.formats.end())
-                    out.formats.push_back(name);
-            }
-        }
-        out.images = o.boolean("images", out.images);
-        out.video = o.boolean("video", out.video);
-        if (o.has("image_width")) out.imageWidth = int(o["image_width"].integer(64, 8192));
-        if (o.has("color_range")) {
-            const At c = o["color_range"];
-            c.array(2, "temperatures [degC] (low, high)");
-            out.colorMin = c[0].number(-273.15, 1e4, false, "degC");
-            out.colorMax = c[1].number(-273.15, 1e4, false, "degC");
-            if (!(*out.colorMax > *out.colorMin)) c.fail("low < high");
-        }
-    }
-    if (root.has("probes")) {
-        const At f = root["probes"];
-        if (!f.v.is_array()) f.fail("an array of probes");
-        std::set<std::string> names;
-        for (std::size_t i = 0; i < f.v.size(); ++i) {
-            const At e = f[i];
-            e.object({"name", "point", "fields"}, {"name", "point"});
-            Probe<Dim> pr;
-            pr.name = e["name"].string();
-            // Column names of probes.csv: letters, digits, '_' and '-' only (no separator,
-            // quote, line break or control character can reach the file).
-            const bool plain = !pr.name.empty() && pr.name.size() <= 64 &&
-                               std::all_of(pr.name.begin(), pr.name.end(), [](char c) {
-                                   return std::isalnum((unsigned char)c) || c == '_' || c == '-';
-                               });
-            if (!plain) e["name"].fail("a name of 1 to 64 letters, digits, '_' or '-'");
-            if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
-            pr.point = readVec<Dim>(e["point"], "m");
-            if (e.has("fields")) {
-                const At fl = e["fields"];
-                if (!fl.v.is_array() || fl.v.empty()) fl.fail("a non-empty array of field names");
-                for (std::size_t k = 0; k < fl.v.size(); ++k)
-                    pr.fields.push_back(
-                        fl[k].choice({"velocity", "density", "pressure", "temperature"}));
-            } else {
-                pr.fields = {"velocity", "pressure", "temperature"};
-            }
-            s.probes.push_back(pr);
-        }
-    }
-    if (root.has("physics")) {
-        const At ph = root["physics"];
-        ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting",
-                   "shifting_normal_to_walls", "free_surface_clamp", "free_surface_density_floor",
-                   "gravity_ramp", "max_speed", "eos", "background_pressure", "max_tension"});
-        s.physics.heat = ph.boolean("heat", s.physics.heat);
-        s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
-        if (ph.has("density"))
-            s.physics.density = ph["density"].choice(sph::choiceNames(densityTable));
-        s.physics.densityDiffusion =
-            ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
-        s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
-        s.physics.shiftingNormalToWalls =
-            ph.boolean("shifting_normal_to_walls", s.physics.shiftingNormalToWalls);
-        s.physics.freeSurfaceTensionLimit =
-            ph.boolean("free_surface_clamp", s.physics.freeSurfaceTensionLimit);
-        s.physics.freeSurfaceDensityFloor =
-            ph.number("free_surface_density_floor", s.physics.freeSurfaceDensityFloor, 0, 1, true);
-        s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
-        s.maxSpeed = ph.number("max_speed", 0, 0, kMaxSoundSpeed / sph::defaults::soundSpeedFactor,
-                               false, "m/s");
-        if (ph.has("eos")) s.physics.eos = ph["eos"].choice(sph::choiceNames(sph::eosTable));
-        s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
-        s.physics.maxTension = ph.number("max_tension", s.physics.maxTension, 0, 1e12, true, "Pa");
-    }
+    readParticles(root["particles"], s);
+    readTime(root["time"], s);
+    if (root.has("gravity")) readGravity(root["gravity"], s);
+    if (root.has("numerics")) readNumerics(root["numerics"], s);
+    readMaterials(root["materials"], s);
+    if (root.has("fluids")) readFluids(root["fluids"], s);
+    if (root.has("bodies")) readBodies(root["bodies"], s);
+    if (root.has("emitters")) readEmitters(root["emitters"], s);
+    if (root.has("output")) readOutput(root["output"], s.output);
+    if (root.has("probes")) readProbes(root["probes"], s);
+    if (root.has("physics")) readPhysics(root["physics"], s);
     checkSceneGeometry(s);
     warnSidewaysOpenSides(s);
     return s;

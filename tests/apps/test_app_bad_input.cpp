@@ -256,11 +256,12 @@ TEST(BadInput, EditedCheckpointsWithARewrittenChecksum) {
     writeFile(dir + "/scrambled.chk", num::io::checkpointBytes(2, scrambled));
     const Result r = run(FLUID_SIM, "--quiet --out again --restart scrambled.chk", dir);
     EXPECT_TRUE(r.code == kCheckpoint || r.code == kUnstable) << r.output;
-    if (r.code == kUnstable)
+    if (r.code == kUnstable) {
         EXPECT_TRUE(contains(r.output,
                              "this was the first step from scrambled.chk: if that "
                              "checkpoint was edited"))
             << r.output;
+    }
     EXPECT_FALSE(contains(r.output, "internal error")) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }

@@ -12,11 +12,11 @@
 #include <iostream>
 #include <memory>
 
-#include "run/agreed_errors.hpp"
 #include "device/backend.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "io/simulation.hpp"
+#include "run/agreed_errors.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/settings.hpp"
 

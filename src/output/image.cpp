@@ -11,8 +11,8 @@
 #include <cstdio>
 #include <cstring>
 
-#include "output/font5x7.hpp"
 #include "io/errors.hpp"
+#include "output/font5x7.hpp"
 
 namespace num::io {
 

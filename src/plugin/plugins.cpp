@@ -12,12 +12,12 @@
 #include <fstream>
 #include <map>
 
-#include "plugin/elf_check.hpp"
 #include "io/formatted.hpp"
 #include "io/plugin.hpp"
-#include "scene/json_check.hpp"
+#include "plugin/elf_check.hpp"
 #include "plugin/plugin_term.hpp"
 #include "plugin/plugin_writer.hpp"
+#include "scene/json_check.hpp"
 
 namespace num::io {
 

@@ -11,8 +11,6 @@
 #include <optional>
 #include <string>
 
-#include "run/agreed_errors.hpp"
-#include "run/checkpoint_state.hpp"
 #include "device/fluid_run.hpp"
 #include "io/emitters.hpp"
 #include "io/outputs.hpp"
@@ -20,8 +18,10 @@
 #include "io/simulation.hpp"
 #include "parallel/domain_decomposition.hpp"
 #include "plugin/plugins.hpp"
-#include "sph/timestepping.hpp"
+#include "run/agreed_errors.hpp"
+#include "run/checkpoint_state.hpp"
 #include "run/stop_signals.hpp"
+#include "sph/timestepping.hpp"
 
 namespace num::io {
 

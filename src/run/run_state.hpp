@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "run/checkpoint_state.hpp"
 #include "io/checkpoint.hpp"
 #include "io/diagnostics.hpp"
 #include "io/fields.hpp"
 #include "io/formatted.hpp"
 #include "io/outputs.hpp"
+#include "run/checkpoint_state.hpp"
 #include "sph/solver.hpp"
 
 namespace num::io {

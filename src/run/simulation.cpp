@@ -5,11 +5,11 @@
 #include <thread>
 
 #include "run/device_backend.hpp"
+#include "run/run_checks.hpp"
+#include "run/run_outputs.hpp"
 #include "scene/fingerprint.hpp"
 #include "scene/initial_state.hpp"
-#include "run/run_checks.hpp"
 #include "scene/run_limits.hpp"
-#include "run/run_outputs.hpp"
 #include "sph/evaluation_mode.hpp"
 
 namespace num::io {

@@ -1,7 +1,7 @@
 // The end of a Simulation's run: summary.json (with what each observer adds), the report on
 // the terminal and the exit code.
-#include "run/device_backend.hpp"
 #include "io/file.hpp"
+#include "run/device_backend.hpp"
 #include "run/run_parts.hpp"
 #include "run/run_report.hpp"
 #include "run/run_state.hpp"

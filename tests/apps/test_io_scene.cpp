@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
-#include "scene/boundary_types.hpp"
 #include "io/density_choice.hpp"
 #include "io/scene_loader.hpp"
+#include "scene/boundary_types.hpp"
 #include "sph/equation_of_state_choice.hpp"
 #include "sph/evaluation_mode.hpp"
 #include "sph/integrator_choice.hpp"

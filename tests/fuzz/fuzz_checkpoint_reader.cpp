@@ -10,11 +10,11 @@
 #include <memory>
 #include <string>
 
-#include "run/checkpoint_state.hpp"
 #include "io/checkpoint.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "io/scene_loader.hpp"
+#include "run/checkpoint_state.hpp"
 #include "sph/settings.hpp"
 
 namespace {

@@ -234,8 +234,9 @@ TEST(OutputFolder, ANewRunReplacesAnEarlierRunsFiles) {
     ASSERT_EQ(restart.code, 0) << restart.output;
     EXPECT_TRUE(std::filesystem::exists(dir + "/out/particles_0003.vtu"));
     EXPECT_FALSE(contains(readFile(dir + "/out/particles.pvd"), "particles_0004.vtu"));
-    if (const int frames = movieFrames(dir + "/out/particles.mp4"); frames >= 0)
+    if (const int frames = movieFrames(dir + "/out/particles.mp4"); frames >= 0) {
         EXPECT_EQ(frames, 4);
+    }
     // The checkpoint copied away from the first run still restarts.
     const Result kept =
         run(FLUID_SIM, "--quiet --backend seq --out other --end-time 0.03 --restart kept.chk", dir);

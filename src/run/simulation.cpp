@@ -156,7 +156,8 @@ void startRun(RunParts<Dim>& p) {
     });
 }
 
-/// The observers of the apps' runs, in the order they act after a step.
+/// The observers of the apps' runs, in the order they act after a step; then a new run's first
+/// output, at t = 0.
 template <int Dim>
 void addRunObservers(Simulation<Dim>& sim) {
     RunParts<Dim>& p = sim.parts();
@@ -188,7 +189,10 @@ Simulation<Dim>::Simulation(const SceneDocument& doc, const RunOptions& options)
     // Not needed any more: a copy of every particle for the whole run (a third of its memory).
     initial = sph::Storage<Dim>();
     makeEngine(p);
-    options.restart ? resumeRun(p) : startRun(p);
+    if (options.restart)
+        resumeRun(p);
+    else
+        startRun(p);
     p.startSteps = p.run->steps();
     // From here a signal asks for a stop (stop_signals.hpp): after the step in progress, or at
     // once when that step is still running half a second later. Several processes finish the

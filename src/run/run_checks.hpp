@@ -77,9 +77,8 @@ class ParticleFlowObserver final : public IStepObserver<Dim> {
   public:
     void afterStep(Simulation<Dim>& sim) override {
         RunParts<Dim>& p = sim.parts();
-        const std::int64_t owned = p.owned();
         if (p.comm.any(removeOutflow(p.storage, p.scene) > 0)) {
-            p.state.removed += std::uint64_t(p.comm.sum(owned - p.owned()));
+            p.state.removed += std::uint64_t(p.comm.sum(p.owned - p.countOwned()));
             p.run->particlesChanged();
         }
         if (emitParticles(p, sim.time()) > 0) p.run->particlesChanged();

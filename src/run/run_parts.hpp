@@ -67,6 +67,7 @@ struct RunParts {
 
     std::uint64_t startSteps = 0;  ///< the steps before this run (a checkpoint's)
     double particleSteps = 0;      ///< particles times steps, over the processes
+    std::int64_t owned = 0;        ///< this process's particles, after the last step
     std::int64_t particles = 0;    ///< over the processes, after the last step
     double lastOutput = -1;        ///< the time of the last output written; -1: none
 
@@ -92,7 +93,7 @@ struct RunParts {
     }
 
     /// The number of particles this process owns (those not yet assigned count on the root).
-    std::int64_t owned() const {
+    std::int64_t countOwned() const {
         std::int64_t n = 0;
         for (int owner : storage.template getValue<int>(sph::QuantityId::OWNER))
             n += owner == comm.rank() || (owner < 0 && comm.isRoot());

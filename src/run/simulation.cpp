@@ -285,7 +285,8 @@ double Simulation<Dim>::stepTowards(double limit) {
     if (p.comm.size() > 1 && !p.plugins->empty())
         agreed(p.comm, [&] { p.plugins->failure->rethrow(); });
     p.storageCurrent = !p.gpu;
-    p.particles = p.comm.sum(p.owned());
+    p.owned = p.countOwned();
+    p.particles = p.comm.sum(p.owned);
     p.particleSteps += double(p.particles);
     bool wanted = reached(time(), endTime());
     for (const auto& o : observers_) wanted = wanted || o->needsParticles(*this);

@@ -54,7 +54,7 @@ template <int Dim>
 int Simulation<Dim>::finishRun(RunEnd end) {
     RunParts<Dim>& p = *parts_;
     const double lastDt = p.gpu ? p.gpu->lastDt() : p.run->lastDt();
-    p.progress->finish(time(), lastDt, sph::Size(p.comm.sum(p.owned())), steps());
+    p.progress->finish(time(), lastDt, sph::Size(p.comm.sum(p.countOwned())), steps());
     p.state.emitted = p.emitters->emitted();
     p.state.emitterBlocked = p.emitters->blocked();
     const double wall =

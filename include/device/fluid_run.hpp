@@ -183,12 +183,12 @@ using HostFluidStep = FluidStepOn<Dim, HostExecution>;
 /// sph::Run's step over a device step: particles uploaded once, copied back only when asked
 /// (outputs, probes, checkpoints).
 template <int Dim>
-class DeviceRun {
+class DeviceRun : public sph::StepClock {
   public:
     using Size = sph::Size;
     DeviceRun(std::unique_ptr<IDeviceFluid<Dim>> fluid, const FluidStepConfig<Dim>& config,
               Float t0 = 0)
-        : fluid_(std::move(fluid)), config_(config), time_(t0) {}
+        : sph::StepClock(t0), fluid_(std::move(fluid)), config_(config) {}
 
     /// Copies the storage's particles to the device. primed: its rates are those at the
     /// current time (a restart), so the first step needs no evaluation first.
@@ -204,7 +204,7 @@ class DeviceRun {
         copyBack(p, s);
     }
     void prime() {
-        fluid_->evaluate(time_);
+        fluid_->evaluate(time());
         primed_ = true;
         limits_.reset();
     }
@@ -219,26 +219,17 @@ class DeviceRun {
     /// One step, at most up to tEnd (sph::Run::step). Returns the step taken.
     Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
         if (!primed_) prime();
-        const sph::PlannedStep planned = sph::planStep(timeStepLimits(), time_, tEnd);
-        const Float dt = planned.dt;
-        criterion_ = planned.criterion;
+        const sph::PlannedStep planned = plan(timeStepLimits(), tEnd);
         limits_.reset();
-        fluid_->advance(time_, dt);
-        time_ = planned.last ? tEnd : time_ + dt;
-        fluid_->postStep(dt);
-        ++steps_;
-        lastDt_ = dt;
-        return dt;
+        fluid_->advance(time(), planned.dt);
+        count(planned, tEnd);
+        fluid_->postStep(planned.dt);
+        return planned.dt;
     }
     void advanceTo(Float tEnd) {
-        while (time_ < tEnd * (1 - 1e-14)) step(tEnd);
+        while (time() < tEnd * (1 - 1e-14)) step(tEnd);
     }
 
-    Float time() const { return time_; }
-    Size steps() const { return steps_; }
-    Float lastDt() const { return lastDt_; }
-    const std::string& limitingCriterion() const { return criterion_; }
-    void setTime(Float t, Size steps) { time_ = t, steps_ = steps; }
     IDeviceFluid<Dim>& fluid() { return *fluid_; }
 
   private:
@@ -266,11 +257,7 @@ class DeviceRun {
     std::unique_ptr<IDeviceFluid<Dim>> fluid_;
     FluidStepConfig<Dim> config_;
     sph::SequentialScheduler sequential_;
-    Float time_;
-    Size steps_ = 0;
     bool primed_ = false;
-    Float lastDt_ = 0;
-    std::string criterion_ = "none";
     std::optional<sph::TimeStepLimits> limits_;  ///< of the current state
 };
 

@@ -47,18 +47,51 @@ inline PlannedStep planStep(const TimeStepLimits& limits, Float t, Float tEnd) {
     return p;
 }
 
+/// The clock of a run: its time, its steps and the last one's dt and limiting criterion. A step
+/// is planned from the limits (planStep), taken, then counted. Shared by sph::Run and the device
+/// run.
+class StepClock {
+  public:
+    explicit StepClock(Float t0 = 0) : time_(t0) {}
+
+    Float time() const { return time_; }
+    Size steps() const { return steps_; }
+    Float lastDt() const { return lastDt_; }
+    const std::string& limitingCriterion() const { return criterion_; }
+    void setTime(Float t, Size steps) { time_ = t, steps_ = steps; }
+
+  protected:
+    PlannedStep plan(const TimeStepLimits& limits, Float tEnd) {
+        PlannedStep planned = planStep(limits, time_, tEnd);
+        criterion_ = planned.criterion;
+        return planned;
+    }
+    /// The step is taken: the time moves on (landing exactly on tEnd when it was the last).
+    void count(const PlannedStep& planned, Float tEnd) {
+        time_ = planned.last ? tEnd : time_ + planned.dt;
+        ++steps_;
+        lastDt_ = planned.dt;
+    }
+
+  private:
+    Float time_;
+    Size steps_ = 0;
+    Float lastDt_ = 0;
+    std::string criterion_ = "none";
+};
+
 template <int Dim>
-class Run {
+class Run : public StepClock {
   public:
     Run(Storage<Dim>& storage, Solver<Dim>& solver, ITimeStepping<Dim>& integrator, Float t0 = 0)
-        : storage_(storage), solver_(solver), integrator_(integrator), time_(t0) {
+        : StepClock(t0), storage_(storage), solver_(solver), integrator_(integrator) {
         reorderEvery_ = Size(solver.settings().template get<std::int64_t>("reorder_every"));
     }
 
     /// Evaluates the derivatives at the current time (before the first step, after a restart
     /// that did not store them, or after particles were added or removed).
     void prime() {
-        solver_.evaluate(storage_, time_);
+        solver_.evaluate(storage_, time());
         primed_ = true;
     }
 
@@ -66,34 +99,25 @@ class Run {
     /// dt at the new time. Returns the step taken.
     Float step(Float tEnd = std::numeric_limits<Float>::infinity()) {
         if (!primed_) prime();
-        const bool reorder = reorderEvery_ > 0 && steps_ > 0 && steps_ % reorderEvery_ == 0;
+        const bool reorder = reorderEvery_ > 0 && steps() > 0 && steps() % reorderEvery_ == 0;
         if (IDecomposition<Dim>* d = solver_.decomposition()) {
             if (d->beforeStep(storage_, reorder, particlesChanged_)) solver_.invalidateNeighbours();
         } else if (reorder) {
             reorderByCell(storage_, solver_);
         }
         particlesChanged_ = false;
-        const PlannedStep planned = planStep(solver_.timeStepLimits(storage_), time_, tEnd);
-        const Float dt = planned.dt;
-        criterion_ = planned.criterion;
-        integrator_.step(solver_, storage_, time_, dt);
-        time_ = planned.last ? tEnd : time_ + dt;
-        solver_.postStep(storage_, time_, dt);
-        ++steps_;
-        lastDt_ = dt;
-        return dt;
+        const PlannedStep planned = plan(solver_.timeStepLimits(storage_), tEnd);
+        integrator_.step(solver_, storage_, time(), planned.dt);
+        count(planned, tEnd);
+        solver_.postStep(storage_, time(), planned.dt);
+        return planned.dt;
     }
 
     /// Steps until tEnd.
     void advanceTo(Float tEnd) {
-        while (time_ < tEnd * (1 - 1e-14)) step(tEnd);
+        while (time() < tEnd * (1 - 1e-14)) step(tEnd);
     }
 
-    Float time() const { return time_; }
-    Size steps() const { return steps_; }
-    Float lastDt() const { return lastDt_; }
-    const std::string& limitingCriterion() const { return criterion_; }
-    void setTime(Float t, Size steps) { time_ = t, steps_ = steps; }
     void markPrimed(bool p) { primed_ = p; }
     /// Tells the run that particles were added or removed since the last step (emitters, open
     /// sides): a domain decomposition then rebuilds its halos before the next step.
@@ -103,12 +127,8 @@ class Run {
     Storage<Dim>& storage_;
     Solver<Dim>& solver_;
     ITimeStepping<Dim>& integrator_;
-    Float time_;
-    Size steps_ = 0;
     Size reorderEvery_ = 0;
     bool primed_ = false, particlesChanged_ = false;
-    Float lastDt_ = 0;
-    std::string criterion_ = "none";
 };
 
 }  // namespace num::sph

@@ -48,8 +48,7 @@ class HealthObserver final : public IStepObserver<Dim> {
     void afterStep(Simulation<Dim>& sim) override {
         RunParts<Dim>& p = sim.parts();
         if (!p.storageCurrent) return;
-        const std::string criterion =
-            p.gpu ? p.gpu->limitingCriterion() : p.run->limitingCriterion();
+        const std::string criterion = p.stepClock().limitingCriterion();
         agreed(p.comm, [&] {
             checkHealth(*p.scheduler, p.storage, p.scene, sim.time(), sim.steps(), lastDt(p),
                         criterion, p.fieldNames);
@@ -64,9 +63,7 @@ class HealthObserver final : public IStepObserver<Dim> {
     }
 
   private:
-    static double lastDt(const RunParts<Dim>& p) {
-        return p.gpu ? p.gpu->lastDt() : p.run->lastDt();
-    }
+    static double lastDt(const RunParts<Dim>& p) { return p.stepClock().lastDt(); }
     PhysicalCheck physical_;
 };
 
@@ -100,8 +97,7 @@ class ProgressObserver final : public IStepObserver<Dim> {
   public:
     void afterStep(Simulation<Dim>& sim) override {
         RunParts<Dim>& p = sim.parts();
-        p.progress->update(sim.time(), p.gpu ? p.gpu->lastDt() : p.run->lastDt(),
-                           sph::Size(p.particles), sim.steps());
+        p.progress->update(sim.time(), p.stepClock().lastDt(), sph::Size(p.particles), sim.steps());
     }
 };
 

@@ -71,6 +71,11 @@ struct RunParts {
     std::int64_t particles = 0;    ///< over the processes, after the last step
     double lastOutput = -1;        ///< the time of the last output written; -1: none
 
+    /// The clock of the last step: the GPU's run on the CUDA back end, else the CPU's.
+    const sph::StepClock& stepClock() const {
+        return gpu ? static_cast<const sph::StepClock&>(*gpu) : *run;
+    }
+
     RunParts(const SceneDocument& document, const RunOptions& opt)
         : options(opt), comm(opt.communicator ? *opt.communicator : single), doc(document) {}
 

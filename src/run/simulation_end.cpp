@@ -53,7 +53,7 @@ void addEngineFigures(const RunParts<Dim>& p, nlohmann::json& summary) {
 template <int Dim>
 int Simulation<Dim>::finishRun(RunEnd end) {
     RunParts<Dim>& p = *parts_;
-    const double lastDt = p.gpu ? p.gpu->lastDt() : p.run->lastDt();
+    const double lastDt = p.stepClock().lastDt();
     p.progress->finish(time(), lastDt, sph::Size(p.comm.sum(p.countOwned())), steps());
     p.state.emitted = p.emitters->emitted();
     p.state.emitterBlocked = p.emitters->blocked();

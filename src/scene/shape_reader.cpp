@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "geometry/combination.hpp"
+#include "geometry/mesh_solid.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/primitives.hpp"
 #include "geometry/revolved.hpp"
@@ -104,6 +105,32 @@ SolidPtr<3> readCone(const At& a, const std::string&) {
     return std::make_shared<geometry::Cone>(base, top, rb, rt);
 }
 
+/// The mesh file of a["file"], relative to the scene's directory, read and checked to bound a
+/// volume.
+geometry::TriangleMesh readClosedMesh(const At& a, const std::string& sceneDir) {
+    const std::string file = a["file"].string();
+    const std::filesystem::path path = std::filesystem::path(sceneDir) / file;
+    geometry::TriangleMesh mesh = geometry::readMesh(path.string());
+    geometry::checkClosedVolume(mesh, file);
+    return mesh;
+}
+
+SolidPtr<3> readMeshFile(const At& a, const std::string& sceneDir) {
+    a.object(keys({"file"}), {"file"});
+    return std::make_shared<geometry::MeshSolid>(readClosedMesh(a, sceneDir), a["file"].string());
+}
+
+/// The 2D section of a mesh by the plane x[axis] = at (in the file's units, before "scale").
+SolidPtr<2> readSection(const At& a, const std::string& sceneDir) {
+    a.object(keys({"file", "axis", "at"}), {"file", "axis", "at"});
+    const std::string axis = a["axis"].choice({"x", "y", "z"});
+    const double at = a["at"].number();
+    const geometry::TriangleMesh mesh = readClosedMesh(a, sceneDir);
+    const auto loops = geometry::sectionLoops(mesh, int(axis[0] - 'x'), at);
+    if (loops.empty()) a["at"].fail("a plane " + axis + " = at that cuts the mesh");
+    return std::make_shared<geometry::PolygonSet>(loops);
+}
+
 template <int Dim, geometry::Combine how>
 SolidPtr<Dim> readCombination(const At& a, const std::string& sceneDir) {
     a.object(keys({"shapes"}), {"shapes"});
@@ -131,6 +158,11 @@ constexpr std::array shapes{
     sph::Choice<ShapeReaders>{"cylinder", {nullptr, readCylinder}, "3D: base, top, radius"},
     sph::Choice<ShapeReaders>{
         "cone", {nullptr, readCone}, "3D: base, top, base_radius, top_radius"},
+    sph::Choice<ShapeReaders>{
+        "mesh", {nullptr, readMeshFile}, "3D: a closed triangle mesh file (STL, OBJ, PLY)"},
+    sph::Choice<ShapeReaders>{"section",
+                              {readSection, nullptr},
+                              "2D: the section of a closed mesh file by the plane axis = at"},
     sph::Choice<ShapeReaders>{"plane",
                               {readPlane<2>, readPlane<3>},
                               "the half-space behind a plane: point, outward normal"},

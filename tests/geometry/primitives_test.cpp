@@ -41,9 +41,9 @@ TEST(Primitives, CylinderAndCone) {
     const auto cyl = cylinder(P3{{0, 0, 0}}, P3{{0, 0, 2}}, 1);
     EXPECT_DOUBLE_EQ(cyl->signedDistance(P3{{0, 0, 1}}), -1);
     EXPECT_NEAR(cyl->signedDistance(P3{{0.5, 0, 1.9}}), -0.1, 1e-15);  // nearest the top
-    EXPECT_DOUBLE_EQ(cyl->signedDistance(P3{{3, 0, 1}}), 2);         // beside
-    EXPECT_DOUBLE_EQ(cyl->signedDistance(P3{{0, 0.2, 3}}), 1);       // above the top
-    EXPECT_DOUBLE_EQ(cyl->signedDistance(P3{{4, 0, -4}}), 5);        // from the rim: 3-4-5
+    EXPECT_DOUBLE_EQ(cyl->signedDistance(P3{{3, 0, 1}}), 2);           // beside
+    EXPECT_DOUBLE_EQ(cyl->signedDistance(P3{{0, 0.2, 3}}), 1);         // above the top
+    EXPECT_DOUBLE_EQ(cyl->signedDistance(P3{{4, 0, -4}}), 5);          // from the rim: 3-4-5
     const auto slanted = cylinder(P3{{0, 0, 0}}, P3{{1, 1, 1}}, 0.1);
     EXPECT_NEAR(slanted->signedDistance(P3{{0.5, 0.5, 0.5}}), -0.1, 1e-15);
     EXPECT_NEAR(slanted->bounds().max[0], 1 + 0.1 * std::sqrt(2.0 / 3), 1e-15);

@@ -19,10 +19,11 @@ using P3 = num::geometry::Point<3>;
 
 const std::string file = "scene.json";
 
+/// The shape of `text`, its files relative to scenes/meshes/.
 template <int Dim>
 num::geometry::SolidPtr<Dim> read(const std::string& text) {
     const json j = json::parse(text);
-    return readSolid<Dim>(At{j, file, "walls[0]"}, ".");
+    return readSolid<Dim>(At{j, file, "walls[0]"}, GEOMETRY_MESHES);
 }
 
 /// The message of the AppError that reading `text` throws (exit code SCENE).
@@ -77,11 +78,27 @@ TEST(ShapeReader, NestedCombinations) {
     EXPECT_GT(band->signedDistance(P2{{1.5, 0}}), 0);
 }
 
+TEST(ShapeReader, MeshAndSection) {
+    const auto sphere = read<3>(R"({"shape": "mesh", "file": "sphere.stl", "scale": 2,
+                                    "translate": [1, 0, 0]})");
+    EXPECT_NEAR(sphere->signedDistance(P3{{1, 0, 0}}), -0.2, 1e-3);  // the facets are flat
+    EXPECT_NEAR(sphere->bounds().min[0], 0.8, 1e-6);
+    const auto circle = read<2>(R"({"shape": "section", "file": "sphere.stl", "axis": "y",
+                                    "at": 0.06, "translate": [1, 1]})");
+    EXPECT_NEAR(circle->signedDistance(P2{{1, 1}}), -0.08, 1e-3);  // sqrt(0.1^2 - 0.06^2)
+    EXPECT_NE(error<3>(R"({"shape": "mesh", "file": "missing.stl"})")
+                  .find("walls[0]: " GEOMETRY_MESHES "/missing.stl: not a readable mesh"),
+              std::string::npos);
+    EXPECT_EQ(error<2>(R"({"shape": "section", "file": "sphere.stl", "axis": "z", "at": 0.5})"),
+              "scene.json: walls[0].at: expected a plane z = at that cuts the mesh, found 0.5");
+}
+
 TEST(ShapeReader, Errors) {
-    EXPECT_EQ(error<2>(R"({"shape": "cylinder", "base": [0, 0], "top": [0, 1], "radius": 1})"),
-              "scene.json: walls[0].shape: expected a shape of a 2D scene: box, circle, "
-              "polygon, polyline, plane, union, intersection or difference, found the string "
-              "\"cylinder\" (\"cylinder\" is a 3D shape)");
+    EXPECT_EQ(
+        error<2>(R"({"shape": "cylinder", "base": [0, 0], "top": [0, 1], "radius": 1})"),
+        "scene.json: walls[0].shape: expected a shape of a 2D scene: box, circle, "
+        "polygon, polyline, section, plane, union, intersection or difference, found the string "
+        "\"cylinder\" (\"cylinder\" is a 3D shape)");
     EXPECT_NE(error<3>(R"({"shape": "cylindre"})").find("did you mean \"cylinder\"?"),
               std::string::npos);
     EXPECT_EQ(error<2>(R"({"shape": "polygon", "points": [[0, 0], [1, 1], [1, 0], [0, 1]]})"),

@@ -15,7 +15,8 @@ namespace num::geometry {
 
 class MeshSolid final : public Solid<3> {
   public:
-    /// Checks the mesh (checkClosedVolume, messages naming `name`) and builds the tree.
+    /// Checks the mesh (checkClosedVolume, then that no two triangles cross; messages naming
+    /// `name`) and builds the tree.
     MeshSolid(TriangleMesh mesh, const std::string& name);
     ~MeshSolid() override;
 

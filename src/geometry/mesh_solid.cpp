@@ -79,6 +79,7 @@ struct MeshSolid::Parts {
 MeshSolid::MeshSolid(TriangleMesh mesh, const std::string& name) {
     checkClosedVolume(mesh, name);
     parts_ = std::make_unique<const Parts>(std::move(mesh));
+    detail::checkSelfCrossings(parts_->mesh, parts_->tree, name);
 }
 
 MeshSolid::~MeshSolid() = default;

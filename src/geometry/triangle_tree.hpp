@@ -2,6 +2,7 @@
 // nearest point of a triangle (internal to numerics_geometry).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "geometry/triangle_mesh.hpp"
@@ -32,6 +33,9 @@ class TriangleTree {
     /// The triangle nearest to p and its nearest point.
     NearestTriangle nearest(const Point<3>& p) const;
     Bounds<3> bounds() const { return nodes_[0].box; }
+    /// Calls f(triangle) for each triangle whose box may overlap `box`.
+    template <class F>
+    void overlapping(const Bounds<3>& box, F&& f) const;
 
   private:
     struct Node {
@@ -46,5 +50,31 @@ class TriangleTree {
     std::vector<int> order_;
     std::vector<Node> nodes_;
 };
+
+template <class F>
+void TriangleTree::overlapping(const Bounds<3>& box, F&& f) const {
+    auto apart = [&](const Bounds<3>& b) {
+        for (int k = 0; k < 3; ++k)
+            if (b.min[k] > box.max[k] || b.max[k] < box.min[k]) return true;
+        return false;
+    };
+    int stack[128], top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& node = nodes_[stack[--top]];
+        if (apart(node.box)) continue;
+        if (node.count == 0) {
+            stack[top++] = node.first, stack[top++] = node.first + 1;
+            continue;
+        }
+        for (int i = node.first; i < node.first + node.count; ++i) f(order_[i]);
+    }
+}
+
+/// Throws GeometryError when two triangles that share no vertex cross (an edge of one through
+/// the inside of the other): there the inside of the mesh is ambiguous. Touching and coplanar
+/// overlaps are not detected.
+void checkSelfCrossings(const TriangleMesh& mesh, const TriangleTree& tree,
+                        const std::string& name);
 
 }  // namespace num::geometry::detail

@@ -201,6 +201,15 @@ TEST(Mesh, BadMeshesSayWhatIsWrong) {
     EXPECT_EQ(meshError("flat.obj", tetrahedron() + "v 2 0 0\nf 1 2 5\n"),
               "flat.obj: triangle 4 at (0, 0, 0) has zero area: remove degenerate triangles "
               "(repair the mesh)");
+    // Two tetrahedra, each closed, one through the other: the slanted face of the first crosses
+    // the three faces of the second at x, y, z = 0.2.
+    EXPECT_EQ(
+        meshError("overlap.obj", "v 0.2 0.2 0.2\nv 1.2 0.2 0.2\nv 0.2 1.2 0.2\nv 0.2 0.2 1.2\n" +
+                                     tetrahedron("f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"
+                                                 "f 5 7 6\nf 5 6 8\nf 6 7 8\nf 5 8 7\n")),
+        "overlap.obj intersects itself: 3 pairs of triangles cross (triangles 0 and 6, near "
+        "(0.2, 0.2, 0.2)), where its inside is ambiguous: repair the mesh (a union of the "
+        "overlapping parts)");
     const std::string notMesh = meshError("notes.stl", "these are notes, not a mesh\n");
     EXPECT_EQ(notMesh.rfind(testing::TempDir() + "notes.stl: not a readable mesh (", 0), 0u)
         << notMesh;

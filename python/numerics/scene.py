@@ -25,8 +25,8 @@ class Scene:
         return cls(_numerics.SceneDocument.from_file(os.fspath(path)))
 
     def set(self, path, value):
-        """Sets the value at a dotted path ("physics.viscosity", "fluids.0.temperature") to any
-        JSON-able value. Returns the scene."""
+        """Sets the value at a dotted path ("materials.water.viscosity", "fluids.0.temperature")
+        to any JSON-able value. Returns the scene."""
         try:
             self._doc.set(f"{path}={json.dumps(value)}")
         except RunError as e:  # the apps' usage errors of --set: a mistake in the scene here

@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "io/formatted.hpp"
+
 namespace num::python {
 
 namespace {
@@ -48,7 +50,7 @@ void Driver<Dim>::checkCanStep() const {
                            "run again");
     if (reached(sim_.time(), sim_.endTime()))
         throw io::AppError(io::ExitCode::USAGE,
-                           "the run is at its end time (t = " + std::to_string(sim_.time()) +
+                           "the run is at its end time (t = " + io::formatted("%g", sim_.time()) +
                                " s): call run() to write its end, or give a later end_time");
 }
 

@@ -110,3 +110,12 @@ def test_steps_to_the_end_then_run_writes_the_end(tiny2d, tmp_path):
         sim.step()
     assert e.value.exit_code == 2 and not sim.finished
     assert sim.run(progress=False) == 0 and sim.summary["status"] == "completed"
+
+
+def test_no_steps_from_inside_a_callback(sim2d):
+    def nested(s):
+        s.step()
+
+    with pytest.raises(numerics.RunError, match="from a callback") as e:
+        sim2d.run(until=0.005, callback=nested, progress=False)
+    assert e.value.exit_code == 2 and sim2d.steps == 1

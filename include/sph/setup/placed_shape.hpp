@@ -11,8 +11,8 @@ namespace num::sph {
 
 template <int Dim>
 struct PlacedShape {
-    Shape<Dim> shape;               ///< the box or ball, used when `solid` is empty
-    geometry::SolidPtr<Dim> solid;  ///< any other solid (host only)
+    Shape<Dim> shape;                         ///< the box or ball, used when `solid` is empty
+    geometry::SolidPtr<Dim> solid = nullptr;  ///< any other solid (host only)
 
     bool isGeneral() const { return solid != nullptr; }
     /// Signed distance to the surface: negative inside, positive outside.

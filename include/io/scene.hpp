@@ -76,6 +76,7 @@ template <int Dim>
 struct Probe {
     std::string name;
     SceneVec<Dim> point{};
+    int body = -1;  ///< the body whose force the probe records; -1: a probe at `point`
     std::vector<std::string> fields;
 };
 

@@ -156,7 +156,12 @@ void checkEmitters(const Scene<Dim>& s) {
 template <int Dim>
 void checkProbes(const Scene<Dim>& s) {
     for (std::size_t i = 0; i < s.probes.size(); ++i)
-        if (!insideDomain(s, s.probes[i].point, s.probes[i].point))
+        if (s.probes[i].body >= int(s.bodies.size()))
+            throw sceneError(s.file, "probes[" + std::to_string(i) + "].body",
+                             "the index of one of the scene's " + std::to_string(s.bodies.size()) +
+                                 " bodies (from 0)",
+                             std::to_string(s.probes[i].body));
+        else if (s.probes[i].body < 0 && !insideDomain(s, s.probes[i].point, s.probes[i].point))
             throw sceneError(s.file, "probes[" + std::to_string(i) + "].point",
                              "a point inside " + domainText(s), text<Dim>(s.probes[i].point));
 }

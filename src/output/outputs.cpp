@@ -67,6 +67,21 @@ RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim
     return render;
 }
 
+/// The forces on the bodies, where a probe records one.
+template <int Dim>
+std::optional<BodyForces<Dim>> bodyForces(const Scene<Dim>& scene, const SceneSetup<Dim>& setup) {
+    if (std::none_of(scene.probes.begin(), scene.probes.end(),
+                     [](const Probe<Dim>& p) { return p.body >= 0; }))
+        return std::nullopt;
+    auto bodyOf = [bodies = setup.geometry.bodies](const sph::Vector<Dim>& x) {
+        for (std::size_t b = 0; b < bodies.size(); ++b)
+            if (bodies[b].shape.contains(x)) return int(b);
+        return -1;
+    };
+    return BodyForces<Dim>(setup.settings, setup.geometry.domain, int(scene.bodies.size()), bodyOf,
+                           setup.model.artificialViscosity, setup.model.c0());
+}
+
 }  // namespace
 
 template <int Dim>
@@ -96,7 +111,8 @@ void Outputs<Dim>::makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& s
     }
     if (!scene.probes.empty())
         writers_.push_back(std::make_unique<ProbesWriter<Dim>>(
-            context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth)));
+            context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth),
+            bodyForces(scene, setup)));
 }
 
 template <int Dim>

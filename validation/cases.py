@@ -556,6 +556,24 @@ def conduction_walls(run):
     return checks, f"Nu {nu:.5f}; mean |T - T_exact| / (T_h - T_c) {float(err.mean()):.3g}", profile
 
 
+def buoyancy(run):
+    """The force the water at rest exerts on a submerged body (probe "body") against the buoyancy
+    rho g V, its mean over the last second: the weakly-compressible water rings acoustically
+    about its rest state, a few per cent of rho g V from one output to the next."""
+    rho = next(iter(run.scene["materials"].values()))["density"]
+    g = abs(run.scene["gravity"][1])
+    body = run.scene["bodies"][0]
+    ref = rho * g * math.prod(hi - lo for lo, hi in zip(body["min"], body["max"]))
+    pr = run.probes()
+    last = steady_rows(pr, 1.0)
+    fx, fy = float(pr["body.force_x"][last].mean()), float(pr["body.force_y"][last].mean())
+    profile = {"xlabel": "t [s]", "ylabel": "F_y [N/m]", "series": [
+        {"label": "app: force on the body", "x": pr["time"].tolist(), "y": pr["body.force_y"].tolist(), "style": "line"},
+        {"label": "rho g V", "x": [0.0, float(pr["time"][-1])], "y": [ref, ref], "style": "line"}]}
+    checks = [{"metric": "|F_y - rho g V| / (rho g V), mean over the last 1 s", "value": abs(fy - ref) / ref, "gate": 0.01},
+              {"metric": "|F_x| / (rho g V), mean over the last 1 s", "value": abs(fx) / ref, "gate": 0.01}]
+    return checks, f"F = ({fx:.4g}, {fy:.5g}) N/m against rho g V = {ref:.5g} N/m", profile
+
 # ---------------------------------------------------------------------------------------------
 # The cases. "doc": documentation resolution; "study": spacings of the convergence study;
 # "ci": the fast check of tests/validation (spacing, bound, where the bound comes from).
@@ -799,6 +817,8 @@ case("heat_pulse_3d", "heat_pulse_3d.json", heat_pulse, 0.02, [0.04, 0.03, 0.02]
 case("heat_slabs_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0.005], (0.02, None))
 case("heat_slabs_k2_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0.005], (0.02, None),
      sets=["materials.right.conductivity=2"])
+
+case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.02, 0.01], (0.04, None))
 
 
 def app_commit():

@@ -12,6 +12,7 @@ packages=(
   nlohmann-json3-dev             # scene files (JSON)
   libcli11-dev                   # command lines of the apps
   libmuparser-dev                # expressions in scene files
+  libassimp-dev                  # triangle meshes in scenes (STL, OBJ, PLY): src/geometry/mesh_reader.cpp
   libpng-dev                     # pictures (PNG)
   zlib1g-dev                     # checkpoints: the CRC-32 checksum of each (src/output/checkpoint.cpp)
   ffmpeg                         # the movie of a run (<prefix>.mp4) from its pictures

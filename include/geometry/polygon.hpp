@@ -1,0 +1,66 @@
+// Solids given by vertex lists: closed polygons in 2D (exact signed distance, inside by the
+// even-odd rule, so a set of loops may hold holes) and polyline walls (a band of half-thickness
+// t about an open vertex list, in any dimension).
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "geometry/geometry_error.hpp"
+#include "geometry/segment.hpp"
+
+namespace num::geometry {
+
+using Loop = std::vector<Point<2>>;
+
+/// Closed loops (each last vertex joins its first), either orientation; a point is inside when
+/// a ray from it crosses the loops an odd number of times.
+class PolygonSet final : public Solid<2> {
+  public:
+    explicit PolygonSet(const std::vector<Loop>& loops);
+    double signedDistance(const Point<2>& x) const override;
+    Bounds<2> bounds() const override { return bounds_; }
+
+  private:
+    struct Edge {
+        Point<2> a, b;
+    };
+    std::vector<Edge> edges_;
+    Bounds<2> bounds_;
+};
+
+/// One simple polygon of at least 3 vertices, either orientation. Throws GeometryError when two
+/// vertices in a row coincide or two edges cross (naming them: edge i joins points i and i+1).
+SolidPtr<2> polygon(const Loop& points);
+
+/// The band of points within `halfThickness` of an open vertex list: distance - halfThickness.
+template <int Dim>
+class Polyline final : public Solid<Dim> {
+  public:
+    Polyline(std::vector<Point<Dim>> points, double halfThickness)
+        : points_(std::move(points)), halfThickness_(halfThickness) {
+        if (points_.size() < 2) throw GeometryError("a polyline needs 2 points or more");
+        if (!(halfThickness > 0)) throw GeometryError("a polyline's thickness must be positive");
+    }
+    double signedDistance(const Point<Dim>& x) const override {
+        double d2 = HUGE_VAL;
+        for (std::size_t i = 0; i + 1 < points_.size(); ++i)
+            d2 = std::min(d2, segmentDistanceSqr(x, points_[i], points_[i + 1]));
+        return std::sqrt(d2) - halfThickness_;
+    }
+    Bounds<Dim> bounds() const override {
+        Bounds<Dim> b{points_[0], points_[0]};
+        for (const Point<Dim>& p : points_)
+            for (int k = 0; k < Dim; ++k)
+                b.min[k] = std::min(b.min[k], p[k]), b.max[k] = std::max(b.max[k], p[k]);
+        return {b.min - Point<Dim>::filled(halfThickness_),
+                b.max + Point<Dim>::filled(halfThickness_)};
+    }
+
+  private:
+    std::vector<Point<Dim>> points_;
+    double halfThickness_;
+};
+
+}  // namespace num::geometry

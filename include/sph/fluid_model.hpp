@@ -236,8 +236,7 @@ template <int Dim>
 EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
                                        const FluidGeometry<Dim>& geometry) {
     const EquationOfState eos = model.equationOfState();
-    bool boundaries = !geometry.bodies.empty();
-    for (int k = 0; k < Dim; ++k) boundaries |= geometry.hasWall(k, 0) || geometry.hasWall(k, 1);
+    const bool boundaries = geometry.hasBoundaries();
     const bool summation = model.density == DensityMode::SUMMATION;
 
     EquationHolder<Dim> eq = makeHeatPreEquations(model.heat);

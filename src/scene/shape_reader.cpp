@@ -105,19 +105,17 @@ SolidPtr<3> readCone(const At& a, const std::string&) {
     return std::make_shared<geometry::Cone>(base, top, rb, rt);
 }
 
-/// The mesh file of a["file"], relative to the scene's directory, read and checked to bound a
-/// volume.
-geometry::TriangleMesh readClosedMesh(const At& a, const std::string& sceneDir) {
+/// The mesh file of a["file"], relative to the scene's directory, checked to bound a volume.
+std::shared_ptr<const geometry::MeshSolid> readClosedMesh(const At& a,
+                                                          const std::string& sceneDir) {
     const std::string file = a["file"].string();
     const std::filesystem::path path = std::filesystem::path(sceneDir) / file;
-    geometry::TriangleMesh mesh = geometry::readMesh(path.string());
-    geometry::checkClosedVolume(mesh, file);
-    return mesh;
+    return std::make_shared<const geometry::MeshSolid>(geometry::readMesh(path.string()), file);
 }
 
 SolidPtr<3> readMeshFile(const At& a, const std::string& sceneDir) {
     a.object(keys({"file"}), {"file"});
-    return std::make_shared<geometry::MeshSolid>(readClosedMesh(a, sceneDir), a["file"].string());
+    return readClosedMesh(a, sceneDir);
 }
 
 /// The 2D section of a mesh by the plane x[axis] = at (in the file's units, before "scale").
@@ -125,8 +123,8 @@ SolidPtr<2> readSection(const At& a, const std::string& sceneDir) {
     a.object(keys({"file", "axis", "at"}), {"file", "axis", "at"});
     const std::string axis = a["axis"].choice({"x", "y", "z"});
     const double at = a["at"].number();
-    const geometry::TriangleMesh mesh = readClosedMesh(a, sceneDir);
-    const auto loops = geometry::sectionLoops(mesh, int(axis[0] - 'x'), at);
+    const auto loops =
+        geometry::sectionLoops(readClosedMesh(a, sceneDir)->mesh(), int(axis[0] - 'x'), at);
     if (loops.empty()) a["at"].fail("a plane " + axis + " = at that cuts the mesh");
     return std::make_shared<geometry::PolygonSet>(loops);
 }

@@ -1,7 +1,8 @@
 // A safety net that guarantees no fluid particle is ever inside a wall or a solid body. The
 // wall condition's pressure normally keeps fluid away; if a particle still ends up beyond a
-// wall surface (the container box side) or inside a body, it is reflected back across the
-// surface and the velocity component into the solid is removed. Runs in the post-step phase
+// wall surface (the container box side), inside a body or inside an interior wall's solid (of
+// any shape: its signed distance and outward normal), it is reflected back across the surface
+// and the velocity component into the solid is removed. Runs in the post-step phase
 // (postStep(), once per step after the integrator and after particle shifting), so the
 // velocity a step ends with has no component into the solid.
 #pragma once
@@ -34,7 +35,9 @@ class ParticleContainment : public IEquationTerm<Dim> {
                     formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
                                              g.hasWall(k, 0), g.hasWall(k, 1));
                 for (const SolidBody<Dim>& body : g.bodies)
-                    formulas::containOutsideBody<Dim>(x[i], v[i], body.shape);
+                    formulas::containOutsideBody<Dim>(x[i], v[i], body);
+                for (const InteriorWall<Dim>& wall : g.interiorWalls)
+                    formulas::containOutsideBody<Dim>(x[i], v[i], wall);
             }
         });
     }

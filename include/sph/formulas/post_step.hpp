@@ -38,10 +38,12 @@ NUMERICS_HD_INLINE void containInWalls(Float& x, Float& v, Float lo, Float hi, b
     }
 }
 
-/// A fluid particle against a solid body's shape: a particle inside is reflected back across
-/// the nearest surface, the velocity component into the body removed.
-template <int Dim>
-NUMERICS_HD void containOutsideBody(Vector<Dim>& x, Vector<Dim>& v, const Shape<Dim>& body) {
+/// A fluid particle against a solid (a body's or an interior wall's shape: anything with
+/// signedDistance and outwardNormal): a particle inside, at signed distance d < 0, is
+/// reflected back across the nearest surface to x - 2 d n, the velocity component into the
+/// solid removed.
+template <int Dim, class Solid>
+NUMERICS_HD void containOutsideBody(Vector<Dim>& x, Vector<Dim>& v, const Solid& body) {
     const Float d = body.signedDistance(x);
     if (d >= 0) return;
     const Vector<Dim> n = body.outwardNormal(x);

@@ -1,15 +1,18 @@
 // What a fluid case is made of, as particles: the container box with its walls (or periodic
-// axes), fluid regions, and solid bodies. makeFluidStorage (fluid_model.hpp) turns it into a
-// Storage on one lattice of spacing dx.
+// axes), fluid regions, solid bodies and walls inside the box. makeFluidStorage
+// (fluid_model.hpp) turns it into a Storage on one lattice of spacing dx. Regions, bodies and
+// walls are boxes or balls (Shape, which the CUDA back end takes too) or, on the host only, any
+// solid (PlacedShape::solid; include/geometry/).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <vector>
 
 #include "spatial/cell_grid.hpp"
 #include "sph/defaults.hpp"
-#include "sph/setup/shapes.hpp"
+#include "sph/setup/placed_shape.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
@@ -25,10 +28,9 @@ struct WallSide {
     int material = 0;           ///< index into FluidModel::materials
 };
 
-/// Fluid filling a shape (the part inside the box and outside every body).
+/// Fluid filling a shape (the part inside the box and outside every body and wall).
 template <int Dim>
-struct FluidRegion {
-    Shape<Dim> shape;
+struct FluidRegion : PlacedShape<Dim> {
     Float temperature = defaults::temperature;
     int material = 0;
     /// Initial velocity at a position; empty means at rest.
@@ -43,13 +45,22 @@ struct FluidRegion {
 
 /// A solid body inside the fluid, held fixed, made of boundary particles.
 template <int Dim>
-struct SolidBody {
-    Shape<Dim> shape;
+struct SolidBody : PlacedShape<Dim> {
     Float temperature = defaults::temperature;
     int material = 0;
     WallSlip slip = WallSlip::NO_SLIP;
     /// Thickness of the particle shell below the surface; 0 fills the whole body.
     Float thickness = 0;
+};
+
+/// A wall inside the box: boundary particles in a layer under the surface of its solid, as
+/// thick as the box walls' layers (covering the kernel support); deeper inside, nothing.
+template <int Dim>
+struct InteriorWall : PlacedShape<Dim> {
+    Vector<Dim> velocity{};  ///< prescribed surface velocity
+    WallSlip slip = WallSlip::NO_SLIP;
+    Float temperature = defaults::temperature;  ///< initial (or held) temperature
+    int material = 0;
 };
 
 template <int Dim>
@@ -65,9 +76,24 @@ struct FluidGeometry {
     int wallLayers = 0;
     std::vector<FluidRegion<Dim>> fluid;
     std::vector<SolidBody<Dim>> bodies;
+    std::vector<InteriorWall<Dim>> interiorWalls;
 
     bool hasWall(int axis, int side) const {
         return !domain.periodic[axis] && walls[axis][side].present;
+    }
+    /// Whether any boundary particles exist: box walls, bodies or interior walls.
+    bool hasBoundaries() const {
+        bool any = !bodies.empty() || !interiorWalls.empty();
+        for (int k = 0; k < Dim; ++k) any |= hasWall(k, 0) || hasWall(k, 1);
+        return any;
+    }
+    /// Whether a region, body or wall is a general solid (host only: not a box or ball).
+    bool hasGeneralShapes() const {
+        auto general = [](const auto& parts) {
+            return std::any_of(parts.begin(), parts.end(),
+                               [](const auto& p) { return p.isGeneral(); });
+        };
+        return general(fluid) || general(bodies) || general(interiorWalls);
     }
 };
 

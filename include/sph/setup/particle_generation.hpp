@@ -47,7 +47,10 @@ inline int wallLayersFor(Float supportRadius, Float dx) {
     return std::max(1, int(std::ceil(supportRadius / dx - 1e-9)));
 }
 
-/// Generates the fluid, wall and body particles of a geometry. Throws std::invalid_argument
+/// Generates the fluid, wall and body particles of a geometry: the box walls' `layers`, bodies
+/// (whole, or a shell of their thickness), interior walls (the lattice points with
+/// -layers dx < signed distance < 0), and fluid inside its regions and outside every body and
+/// wall. Throws std::invalid_argument
 /// (naming the axis) when a periodic length is not a multiple of the spacing.
 template <int Dim>
 std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& g, int layers) {
@@ -87,7 +90,7 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
             return;
         }
         for (const SolidBody<Dim>& b : g.bodies) {
-            const Float s = b.shape.signedDistance(x);
+            const Float s = b.signedDistance(x);
             if (s >= 0) continue;
             if (b.thickness > 0 && s < -b.thickness) return;
             p.kind = ParticleKind::BODY;
@@ -95,8 +98,18 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
             out.push_back(p);
             return;
         }
+        for (const InteriorWall<Dim>& w : g.interiorWalls) {
+            const Float s = w.signedDistance(x);
+            if (s >= 0) continue;
+            if (s <= -layers * dx) return;  // deeper than the wall layers: no particle
+            p.kind = ParticleKind::WALL;
+            p.temperature = w.temperature, p.material = w.material;
+            p.wallVelocity = w.velocity, p.slip = w.slip;
+            out.push_back(p);
+            return;
+        }
         for (const FluidRegion<Dim>& r : g.fluid) {
-            if (!r.shape.contains(x)) continue;
+            if (!r.contains(x)) continue;
             p.temperature = r.temperature, p.material = r.material;
             if (r.velocity) p.v = r.velocity(x);
             out.push_back(p);

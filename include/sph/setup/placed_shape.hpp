@@ -1,0 +1,36 @@
+// Where a fluid region, a body or a wall is: a box or ball (Shape, plain data the CUDA back end
+// copies to the device) or, on the host, any solid of include/geometry/ (a polygon, a mesh, a
+// combination). The set-up, the checks and the containment ask the placed shape, never its
+// parts, so that boxes and balls keep their exact formulas and other solids use theirs.
+#pragma once
+
+#include "geometry/solid.hpp"
+#include "sph/setup/shapes.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+struct PlacedShape {
+    Shape<Dim> shape;               ///< the box or ball, used when `solid` is empty
+    geometry::SolidPtr<Dim> solid;  ///< any other solid (host only)
+
+    bool isGeneral() const { return solid != nullptr; }
+    /// Signed distance to the surface: negative inside, positive outside.
+    Float signedDistance(const Vector<Dim>& x) const {
+        return solid ? solid->signedDistance(x) : shape.signedDistance(x);
+    }
+    bool contains(const Vector<Dim>& x) const { return signedDistance(x) < 0; }
+    /// Unit normal of the nearest surface, pointing out of the solid.
+    Vector<Dim> outwardNormal(const Vector<Dim>& x) const {
+        return solid ? solid->outwardNormal(x) : shape.outwardNormal(x);
+    }
+    /// A box that holds every point inside (infinite components for an unbounded solid).
+    geometry::Bounds<Dim> bounds() const {
+        if (solid) return solid->bounds();
+        if (shape.type == Shape<Dim>::Type::BOX) return {shape.min, shape.max};
+        const Vector<Dim> r = Vector<Dim>::filled(shape.radius);
+        return {shape.center - r, shape.center + r};
+    }
+};
+
+}  // namespace num::sph

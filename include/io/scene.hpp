@@ -9,10 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "geometry/solid.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "spatial/vec.hpp"
 #include "sph/boundary/side_boundary.hpp"
+#include "sph/boundary/wall_boundary.hpp"
 #include "sph/defaults.hpp"
 
 namespace num::io {
@@ -43,25 +45,48 @@ struct MaterialSpec {
     double referenceTemperature = sph::defaults::referenceTemperature;
 };
 
-enum class ShapeKind { BOX, CIRCLE, SPHERE };
+/// A box or ball (min, max; center, radius: the set-up's fast path, which the CUDA back end
+/// runs too) or any other shape (SOLID: `solid`, include/geometry/; docs/geometry.md).
+enum class ShapeKind { BOX, CIRCLE, SPHERE, SOLID };
+
+/// A shape as a scene gives it (fluid blocks, bodies, walls).
+template <int Dim>
+struct SceneShape {
+    ShapeKind shape = ShapeKind::BOX;
+    SceneVec<Dim> min{}, max{}, center{};  ///< a box's corners; a ball's centre
+    double radius = 0;
+    geometry::SolidPtr<Dim> solid;  ///< the shape when it is SOLID
+
+    /// The engine's shape: the box or ball, or the solid.
+    sph::PlacedShape<Dim> placed() const {
+        sph::PlacedShape<Dim> p;
+        if (shape == ShapeKind::SOLID)
+            p.solid = solid;
+        else
+            p.shape = shape == ShapeKind::BOX ? sph::Shape<Dim>::box(min, max)
+                                              : sph::Shape<Dim>::ball(center, radius);
+        return p;
+    }
+};
 
 template <int Dim>
-struct FluidBlock {
+struct FluidBlock : SceneShape<Dim> {
     std::string material;
-    ShapeKind shape = ShapeKind::BOX;
-    SceneVec<Dim> min{}, max{}, center{};
-    double radius = 0;
     Expression temperature{sph::defaults::temperature}, pressure{0.0};
     VectorField<Dim> velocity{};
 };
 
 template <int Dim>
-struct Body {
-    ShapeKind shape = ShapeKind::CIRCLE;
-    SceneVec<Dim> min{}, max{}, center{};
-    double radius = 0;
+struct Body : SceneShape<Dim> {
     double temperature = sph::defaults::temperature;
     std::string material;  ///< empty: held at `temperature`; else conducting with this material
+};
+
+/// A wall inside the domain (scene key "walls"): a shape whose surface layer is made of wall
+/// particles, with a box side's wall keys (velocity, slip, thermal: its module).
+template <int Dim>
+struct Wall : SceneShape<Dim> {
+    std::shared_ptr<const sph::WallBoundary<Dim>> boundary;
 };
 
 template <int Dim>
@@ -125,6 +150,7 @@ struct Scene {
     std::map<std::string, MaterialSpec> materials;
     std::vector<FluidBlock<Dim>> fluids;
     std::vector<Body<Dim>> bodies;
+    std::vector<Wall<Dim>> walls;  ///< walls inside the domain
     std::vector<Emitter<Dim>> emitters;
     OutputSpec output;
     std::vector<Probe<Dim>> probes;
@@ -132,6 +158,17 @@ struct Scene {
     double maxSpeed = 0;  ///< velocity scale for "auto" sound speeds [m/s] (0: estimated)
     std::vector<std::string> warnings;  ///< likely mistakes that are still valid scenes
 };
+
+/// The key of the first fluid block or body whose shape is not a box or ball ("" if none): the
+/// CUDA back end takes boxes and balls only.
+template <int Dim>
+std::string firstGeneralShapeKey(const Scene<Dim>& s) {
+    for (std::size_t i = 0; i < s.fluids.size(); ++i)
+        if (s.fluids[i].shape == ShapeKind::SOLID) return "fluids[" + std::to_string(i) + "].shape";
+    for (std::size_t i = 0; i < s.bodies.size(); ++i)
+        if (s.bodies[i].shape == ShapeKind::SOLID) return "bodies[" + std::to_string(i) + "].shape";
+    return "";
+}
 
 /// Names of the sides of the box: the axis and its low or high end (x_min ... z_max), the same
 /// in 2D and 3D whatever the direction of gravity.

@@ -63,9 +63,18 @@ View view2d(const sph::Storage<2>& s, const RenderSettings<2>& r, int plotW) {
     return w;
 }
 
+/// Whether x lies inside the box shown (a wall inside the domain rather than beyond a side).
+bool insideBox(const sph::Vector<3>& x, const RenderSettings<3>& r) {
+    for (int k = 0; k < 3; ++k)
+        if (x[k] < r.min[k] || x[k] > r.max[k]) return false;
+    return true;
+}
+
 /// 3D: an orthographic camera at azimuth 35 degrees around the up axis, elevation 30 degrees;
-/// the whole box is framed, so the view does not move while the water does. Walls are left out,
-/// the box drawn by its edges and floor; particles sorted far to near.
+/// the whole box is framed, so the view does not move while the water does. The box's walls
+/// are left out, drawn by its edges and floor; walls inside the box are shown cut away (their
+/// half farther from the viewer than the box's centre), so the fluid inside them shows; particles
+/// sorted far to near.
 View view3d(const sph::Storage<3>& s, const RenderSettings<3>& r, int plotW) {
     const int up = r.upAxis, a1 = (up + 1) % 3, a2 = (up + 2) % 3;
     const double az = 35 * M_PI / 180, el = 30 * M_PI / 180;
@@ -106,11 +115,15 @@ View view3d(const sph::Storage<3>& s, const RenderSettings<3>& r, int plotW) {
     w.radius = 0.6 * r.spacing * w.scale;  // neighbours overlap a little: a continuous surface
     const auto x = s.getValue<sph::Vector<3>>(QuantityId::POSITION);
     const auto* kind = s.has(QuantityId::KIND) ? s.getValue<int>(QuantityId::KIND).data() : nullptr;
+    double cu, cv, middle;  // the depth of the box's centre: walls nearer than it are cut away
+    project((r.min + r.max) * 0.5, cu, cv, middle);
     w.parts.reserve(s.size());
     for (Size i = 0; i < s.size(); ++i) {
-        if (kind && kind[i] == int(sph::ParticleKind::WALL)) continue;
+        const bool wall = kind && kind[i] == int(sph::ParticleKind::WALL);
+        if (wall && !insideBox(x[i], r)) continue;
         double u, v, d;
         project(x[i], u, v, d);
+        if (wall && d > middle) continue;
         w.parts.push_back({u, v, d, colourOf(s, i, r)});
     }
     std::sort(w.parts.begin(), w.parts.end(),

@@ -46,6 +46,9 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
     };
     if (plugins) refuse("plugins", "a plugin's equation terms");
     if (!scene.emitters.empty()) refuse("emitters", "a scene with emitters");
+    if (!scene.walls.empty()) refuse("walls", "a wall inside the domain");
+    if (const std::string key = firstGeneralShapeKey(scene); !key.empty())
+        refuse(key, "a shape other than a box or a ball");
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)
             if (scene.sides[k][hi]->letsFluidOut())

@@ -31,11 +31,7 @@ sph::WallThermal readWallThermal(const At& b) {
 
 template <int Dim>
 SideBoundary<Dim> readWall(const At& b) {
-    const sph::WallSlip slip =
-        b.boolean("slip", false) ? sph::WallSlip::FREE_SLIP : sph::WallSlip::NO_SLIP;
-    sph::Vector<Dim> velocity{};
-    if (b.has("velocity")) velocity = detail::readVec<Dim>(b["velocity"], "m/s");
-    return std::make_shared<sph::WallBoundary<Dim>>(velocity, slip, readWallThermal(b));
+    return readWallKeys<Dim>(b);
 }
 
 /// The reader of a type without keys of its own.
@@ -45,6 +41,15 @@ SideBoundary<Dim> keyless(const At&) {
 }
 
 }  // namespace
+
+template <int Dim>
+std::shared_ptr<const sph::WallBoundary<Dim>> readWallKeys(const At& b) {
+    const sph::WallSlip slip =
+        b.boolean("slip", false) ? sph::WallSlip::FREE_SLIP : sph::WallSlip::NO_SLIP;
+    sph::Vector<Dim> velocity{};
+    if (b.has("velocity")) velocity = detail::readVec<Dim>(b["velocity"], "m/s");
+    return std::make_shared<sph::WallBoundary<Dim>>(velocity, slip, readWallThermal(b));
+}
 
 template <int Dim>
 const std::vector<BoundaryType<Dim>>& boundaryTypes() {
@@ -94,6 +99,8 @@ SideBoundary<Dim> readSideBoundary(const At& b) {
     return type.read(b);
 }
 
+template std::shared_ptr<const sph::WallBoundary<2>> readWallKeys<2>(const At&);
+template std::shared_ptr<const sph::WallBoundary<3>> readWallKeys<3>(const At&);
 template const std::vector<BoundaryType<2>>& boundaryTypes<2>();
 template const std::vector<BoundaryType<3>>& boundaryTypes<3>();
 template SideBoundary<2> readSideBoundary<2>(const At&);

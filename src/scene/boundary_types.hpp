@@ -30,6 +30,11 @@ const std::vector<BoundaryType<Dim>>& boundaryTypes();
 template <int Dim>
 SideBoundary<Dim> readSideBoundary(const detail::At& side);
 
+/// A wall's keys beside "type" (slip, velocity, thermal) into its module: a side's, or an
+/// interior wall's (scene key "walls").
+template <int Dim>
+std::shared_ptr<const sph::WallBoundary<Dim>> readWallKeys(const detail::At& wall);
+
 /// What a side's boundary is, for messages: {"type": "wall"}, "periodic" or "open".
 template <int Dim>
 std::string boundaryTypeChoices();

@@ -55,16 +55,24 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
         lattice *= n + walls * layers, inside *= n;
     }
     double fluid = 0, bodies = 0, emitted = 0;
-    auto volume = [&](ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx, double r) {
+    // In lattice cells; another shape than a box or ball by its bounding box within the domain.
+    auto volume = [&](const SceneShape<Dim>& f) {
         double v = 1;
-        if (shape == ShapeKind::BOX)
-            for (int k = 0; k < Dim; ++k) v *= (mx[k] - mn[k]) / dx;
-        else
-            v = Dim == 2 ? M_PI * r * r / (dx * dx) : 4.0 / 3 * M_PI * std::pow(r / dx, 3);
+        const geometry::Bounds<Dim> b = f.placed().bounds();
+        for (int k = 0; k < Dim; ++k)
+            if (f.shape == ShapeKind::SOLID)
+                v *= std::max(0.0, std::min(b.max[k], scene.domainMax[k]) -
+                                       std::max(b.min[k], scene.domainMin[k])) /
+                     dx;
+            else if (f.shape == ShapeKind::BOX)
+                v *= (f.max[k] - f.min[k]) / dx;
+        if (f.shape == ShapeKind::CIRCLE || f.shape == ShapeKind::SPHERE)
+            v = Dim == 2 ? M_PI * f.radius * f.radius / (dx * dx)
+                         : 4.0 / 3 * M_PI * std::pow(f.radius / dx, 3);
         return v;
     };
-    for (const auto& f : scene.fluids) fluid += volume(f.shape, f.min, f.max, f.radius);
-    for (const auto& b : scene.bodies) bodies += volume(b.shape, b.min, b.max, b.radius);
+    for (const auto& f : scene.fluids) fluid += volume(f);
+    for (const auto& b : scene.bodies) bodies += volume(b);
     for (const auto& e : scene.emitters) {
         const double across = Dim == 2 ? 2 * e.radius / dx : M_PI * std::pow(e.radius / dx, 2);
         const double seconds = std::max(0.0, std::min(e.end, scene.endTime) - e.start);

@@ -1,9 +1,11 @@
-// Geometry checks of a scene: everything inside the domain, no fluid in a body, not empty.
+// Geometry checks of a scene: everything inside the domain, no fluid in a body or wall, not
+// empty.
 #include <algorithm>
 #include <cmath>
 
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
+#include "sph/setup/particle_generation.hpp"
 
 namespace num::io {
 
@@ -16,14 +18,11 @@ std::string text(const SceneVec<Dim>& v) {
     return s + "]";
 }
 
-/// Bounding box of a box or a round shape.
+/// Bounding box of a shape.
 template <int Dim>
-void bounds(ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
-            const SceneVec<Dim>& c, double r, SceneVec<Dim>& lo, SceneVec<Dim>& hi) {
-    if (shape == ShapeKind::BOX)
-        lo = mn, hi = mx;
-    else
-        lo = c - SceneVec<Dim>::filled(r), hi = c + SceneVec<Dim>::filled(r);
+void bounds(const SceneShape<Dim>& shape, SceneVec<Dim>& lo, SceneVec<Dim>& hi) {
+    const geometry::Bounds<Dim> b = shape.placed().bounds();
+    lo = b.min, hi = b.max;
 }
 
 /// Distance from p to a box (0 inside).
@@ -37,9 +36,9 @@ double distanceToBox(const SceneVec<Dim>& p, const SceneVec<Dim>& lo, const Scen
     return std::sqrt(d2);
 }
 
-/// Whether two shapes overlap by more than `tol`.
+/// Whether a box or ball fluid block and a box or ball body overlap by more than `tol`.
 template <int Dim>
-bool overlap(const FluidBlock<Dim>& f, const Body<Dim>& b, double tol) {
+bool overlap(const SceneShape<Dim>& f, const SceneShape<Dim>& b, double tol) {
     const bool fBox = f.shape == ShapeKind::BOX, bBox = b.shape == ShapeKind::BOX;
     if (fBox && bBox) {
         for (int k = 0; k < Dim; ++k)
@@ -49,6 +48,48 @@ bool overlap(const FluidBlock<Dim>& f, const Body<Dim>& b, double tol) {
     if (fBox) return distanceToBox<Dim>(b.center, f.min, f.max) < b.radius - tol;
     if (bBox) return distanceToBox<Dim>(f.center, b.min, b.max) < f.radius - tol;
     return norm(f.center - b.center) < f.radius + b.radius - tol;
+}
+
+/// Calls visit(x) at the points of the particle lattice (the domain's cell centres) inside a
+/// shape, within the domain.
+template <int Dim, class Visit>
+void forEachLatticePointInside(const Scene<Dim>& s, const sph::PlacedShape<Dim>& shape,
+                               Visit&& visit) {
+    const geometry::Bounds<Dim> b = shape.bounds();
+    SceneVec<Dim> lo, hi;
+    for (int k = 0; k < Dim; ++k) {
+        const double cells = std::round((s.domainMax[k] - s.domainMin[k]) / s.spacing);
+        const double first = std::clamp(std::floor((b.min[k] - s.domainMin[k]) / s.spacing), 0.0,
+                                        cells),
+                     last =
+                         std::clamp(std::ceil((b.max[k] - s.domainMin[k]) / s.spacing), 0.0, cells);
+        lo[k] = s.domainMin[k] + first * s.spacing, hi[k] = s.domainMin[k] + last * s.spacing;
+    }
+    sph::forEachLatticePoint<Dim>(lo, hi, s.spacing, [&](const SceneVec<Dim>& x) {
+        if (shape.contains(x)) visit(x);
+    });
+}
+
+/// Whether a fluid block lies deeper than `tol` inside a solid (a body or a wall) at a point of
+/// its particle lattice.
+template <int Dim>
+bool overlapOnLattice(const Scene<Dim>& s, const SceneShape<Dim>& f, const SceneShape<Dim>& solid,
+                      double tol) {
+    const sph::PlacedShape<Dim> into = solid.placed();
+    bool found = false;
+    forEachLatticePointInside(s, f.placed(), [&](const SceneVec<Dim>& x) {
+        found = found || into.signedDistance(x) < -tol;
+    });
+    return found;
+}
+
+/// Whether a shape's bounding box meets the domain (an unbounded shape's may be infinite).
+template <int Dim>
+bool meetsDomain(const Scene<Dim>& s, const SceneShape<Dim>& shape) {
+    const geometry::Bounds<Dim> b = shape.placed().bounds();
+    for (int k = 0; k < Dim; ++k)
+        if (b.max[k] < s.domainMin[k] || b.min[k] > s.domainMax[k]) return false;
+    return true;
 }
 
 /// Whether the box lo..hi lies inside the scene's domain, up to a rounding tolerance.
@@ -76,15 +117,13 @@ void checkSpacing(const Scene<Dim>& s) {
                              formatted("%g", s.spacing));
 }
 
-/// Fluid block i lies inside the domain, holds particles and overlaps no body. Returns its
-/// bounding box's volume in spacing cells (an estimate of its particle count).
+/// A box or ball fluid block lies inside the domain and is at least one spacing wide. Returns
+/// its bounding box's volume in spacing cells (an estimate of its particle count).
 template <int Dim>
-double checkFluidBlock(const Scene<Dim>& s, std::size_t i) {
+double checkBoxOrBallBlock(const Scene<Dim>& s, const FluidBlock<Dim>& f, const std::string& path) {
     const std::string& file = s.file;
-    const FluidBlock<Dim>& f = s.fluids[i];
-    const std::string path = "fluids[" + std::to_string(i) + "]";
     SceneVec<Dim> lo, hi;
-    bounds<Dim>(f.shape, f.min, f.max, f.center, f.radius, lo, hi);
+    bounds<Dim>(f, lo, hi);
     if (!insideDomain(s, lo, hi))
         throw sceneError(file, path, "a fluid block inside " + domainText(s),
                          "a block spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
@@ -103,12 +142,66 @@ double checkFluidBlock(const Scene<Dim>& s, std::size_t i) {
                     " m) wide on every axis",
                 "a width of " + formatted("%g", hi[k] - lo[k]) + " m on axis " + std::to_string(k),
                 "the block would hold no particle");
-    for (std::size_t j = 0; j < s.bodies.size(); ++j)
-        if (overlap(f, s.bodies[j], 0.5 * s.spacing))
-            throw sceneError(file, path, "a fluid block that does not overlap a solid body",
-                             "an overlap with bodies[" + std::to_string(j) + "]",
-                             "shrink or split the block around the body");
     return cells;
+}
+
+/// The fluid particles of a block of any shape: its lattice points outside every body and wall.
+template <int Dim>
+double countFluidPoints(const Scene<Dim>& s, const FluidBlock<Dim>& f) {
+    std::vector<sph::PlacedShape<Dim>> solids;
+    for (const auto& b : s.bodies) solids.push_back(b.placed());
+    for (const auto& w : s.walls) solids.push_back(w.placed());
+    double count = 0;
+    forEachLatticePointInside(s, f.placed(), [&](const SceneVec<Dim>& x) {
+        count += std::none_of(solids.begin(), solids.end(),
+                              [&](const auto& solid) { return solid.contains(x); });
+    });
+    return count;
+}
+
+/// A fluid block of any other shape meets the domain and holds particles. Returns their number.
+template <int Dim>
+double checkGeneralBlock(const Scene<Dim>& s, const FluidBlock<Dim>& f, const std::string& path) {
+    SceneVec<Dim> lo, hi;
+    bounds<Dim>(f, lo, hi);
+    if (!meetsDomain(s, f))
+        throw sceneError(s.file, path, "a fluid volume inside " + domainText(s),
+                         "a shape spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
+    const double count = countFluidPoints(s, f);
+    if (count == 0)
+        throw sceneError(s.file, path,
+                         "a fluid volume holding particles on the lattice of spacing " +
+                             formatted("%g", s.spacing) +
+                             " m (inside the domain, outside every body and wall)",
+                         "none", "enlarge the shape or refine particles.spacing");
+    return count;
+}
+
+/// Fluid block i lies inside the domain, holds particles and overlaps no body or wall by more
+/// than half a spacing. Returns an estimate of its particle count.
+template <int Dim>
+double checkFluidBlock(const Scene<Dim>& s, std::size_t i) {
+    const FluidBlock<Dim>& f = s.fluids[i];
+    const std::string path = "fluids[" + std::to_string(i) + "]";
+    const bool general = f.shape == ShapeKind::SOLID;
+    const double tol = 0.5 * s.spacing;
+    const double cells = general ? 0 : checkBoxOrBallBlock(s, f, path);
+    auto fail = [&](const std::string& solid, const std::string& hint) {
+        throw sceneError(s.file, path, "a fluid block that does not overlap a " + solid,
+                         "an overlap with " + hint,
+                         "shrink or split the block around the " +
+                             std::string(solid == "wall" ? "wall" : "body"));
+    };
+    for (std::size_t j = 0; j < s.bodies.size(); ++j) {
+        const Body<Dim>& b = s.bodies[j];
+        const bool over = general || b.shape == ShapeKind::SOLID ? overlapOnLattice(s, f, b, tol)
+                                                                 : overlap<Dim>(f, b, tol);
+        if (over) fail("solid body", "bodies[" + std::to_string(j) + "]");
+    }
+    for (std::size_t j = 0; j < s.walls.size(); ++j)
+        if (overlapOnLattice(s, f, s.walls[j], tol))
+            fail("wall", "walls[" + std::to_string(j) + "]");
+    return general ? checkGeneralBlock(s, f, path) : cells;
 }
 
 /// Checks every fluid block; returns the estimated number of fluid particles.
@@ -119,17 +212,22 @@ double checkFluidBlocks(const Scene<Dim>& s) {
     return estimate;
 }
 
+/// Bodies lie inside the domain (a box or ball) or meet it (any other shape); walls meet it.
 template <int Dim>
-void checkBodies(const Scene<Dim>& s) {
-    for (std::size_t j = 0; j < s.bodies.size(); ++j) {
-        const Body<Dim>& b = s.bodies[j];
+void checkBodiesAndWalls(const Scene<Dim>& s) {
+    auto check = [&](const SceneShape<Dim>& shape, const std::string& path, const char* what) {
         SceneVec<Dim> lo, hi;
-        bounds<Dim>(b.shape, b.min, b.max, b.center, b.radius, lo, hi);
-        if (!insideDomain(s, lo, hi))
-            throw sceneError(s.file, "bodies[" + std::to_string(j) + "]",
-                             "a body inside " + domainText(s),
-                             "a body spanning " + text<Dim>(lo) + " to " + text<Dim>(hi));
-    }
+        bounds<Dim>(shape, lo, hi);
+        const bool boxOrBall = shape.shape != ShapeKind::SOLID && std::string(what) == "body";
+        if (boxOrBall ? insideDomain(s, lo, hi) : meetsDomain(s, shape)) return;
+        throw sceneError(s.file, path, std::string("a ") + what + " inside " + domainText(s),
+                         std::string("a ") + (boxOrBall ? what : "shape") + " spanning " +
+                             text<Dim>(lo) + " to " + text<Dim>(hi));
+    };
+    for (std::size_t j = 0; j < s.bodies.size(); ++j)
+        check(s.bodies[j], "bodies[" + std::to_string(j) + "]", "body");
+    for (std::size_t j = 0; j < s.walls.size(); ++j)
+        check(s.walls[j], "walls[" + std::to_string(j) + "]", "wall");
 }
 
 /// Every emitter lies inside the domain, with a nozzle at least one spacing wide and no wider
@@ -212,7 +310,7 @@ template <int Dim>
 void checkSceneGeometry(const Scene<Dim>& s) {
     checkSpacing(s);
     const double estimate = checkFluidBlocks(s);
-    checkBodies(s);
+    checkBodiesAndWalls(s);
     checkEmitters(s);
     checkProbes(s);
     checkFluidAmount(s, estimate);

@@ -2,13 +2,16 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <set>
 
+#include "geometry/scale_check.hpp"
 #include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/scene_loader.hpp"
 #include "scene/boundary_types.hpp"
 #include "scene/json_check.hpp"
+#include "scene/shape_reader.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_of_state_choice.hpp"
 #include "sph/evaluation_mode.hpp"
@@ -140,31 +143,79 @@ void readSides(const At& a, Scene<Dim>& s) {
     }
 }
 
+/// Whether a shape object is a plain box or ball, read here as the scenes before other shapes
+/// were (the fast path, which the CUDA back end runs too): "box", "circle" or "sphere" without
+/// a transformation. Every other shape is readSolid's (scene/shape_reader.hpp).
+bool isBoxOrBall(const At& a) {
+    if (!a.has("shape") || !a["shape"].v.is_string()) return true;  // the messages of a box
+    const std::string name = a["shape"].v.get<std::string>();
+    if (name != "box" && name != "circle" && name != "sphere") return false;
+    return !a.has("rotate") && !a.has("translate") && !a.has("scale");
+}
+
 template <int Dim>
-void readShape(const At& a, ShapeKind& shape, SceneVec<Dim>& mn, SceneVec<Dim>& mx,
-               SceneVec<Dim>& center, double& radius, bool fluid) {
+void readBoxOrBall(const At& a, SceneShape<Dim>& s) {
     const char* round = Dim == 2 ? "circle" : "sphere";
     const std::string name = a.required("shape").choice({"box", "circle", "sphere"});
     if (name != "box" && name != round)
         a["shape"].fail(std::string("\"box\" or \"") + round + "\" in a " + std::to_string(Dim) +
                         "D scene");
-    shape = name == "box" ? ShapeKind::BOX : Dim == 2 ? ShapeKind::CIRCLE : ShapeKind::SPHERE;
-    if (shape == ShapeKind::BOX) {
-        mn = readVec<Dim>(a.required("min"), "m");
-        mx = readVec<Dim>(a.required("max"), "m");
+    s.shape = name == "box" ? ShapeKind::BOX : Dim == 2 ? ShapeKind::CIRCLE : ShapeKind::SPHERE;
+    if (s.shape == ShapeKind::BOX) {
+        s.min = readVec<Dim>(a.required("min"), "m");
+        s.max = readVec<Dim>(a.required("max"), "m");
         for (int k = 0; k < Dim; ++k)
-            if (!(mx[k] > mn[k])) a["max"].fail("max > min on every axis");
+            if (!(s.max[k] > s.min[k])) a["max"].fail("max > min on every axis");
         for (const char* key : {"center", "radius"})
             if (a.has(key)) a[key].fail("no '" + std::string(key) + "' for a box (use min, max)");
     } else {
-        center = readVec<Dim>(a.required("center"), "m");
-        radius = a.required("radius").number(0, 1e300, true, "m");
+        s.center = readVec<Dim>(a.required("center"), "m");
+        s.radius = a.required("radius").number(0, 1e300, true, "m");
         for (const char* key : {"min", "max"})
             if (a.has(key))
                 a[key].fail("no '" + std::string(key) + "' for a " + round +
                             " (use center, radius)");
     }
-    (void)fluid;
+}
+
+/// Any shape (docs/geometry.md) by readSolid, given the object without the keys of its owner
+/// (`own`: a block's material, a wall's thermal...). What the geometry library refuses (a mesh
+/// that is not closed, a file that is not a mesh) becomes a scene error naming the key path.
+template <int Dim>
+void readGeneralShape(const At& a, const std::vector<std::string>& own, SceneShape<Dim>& s) {
+    detail::json shapeOnly = a.v;
+    for (const std::string& key : own) shapeOnly.erase(key);
+    const At at{shapeOnly, a.file, a.path};
+    const std::string sceneDir = std::filesystem::path(a.file).parent_path().string();
+    s.shape = ShapeKind::SOLID;
+    try {
+        s.solid = readSolid<Dim>(at, sceneDir);
+    } catch (const AppError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw sceneError(a.file, a.path, "a shape the geometry can be made of", "", e.what());
+    }
+}
+
+/// A shape object with its owner's keys: `keys` are those a box or ball may have (its own and
+/// its owner's), `required` those it must have. A box or ball is read as it always was; other
+/// shapes have readSolid's keys beside their owner's.
+template <int Dim>
+void readShape(const At& a, const std::vector<std::string>& keys,
+               const std::vector<std::string>& required, SceneShape<Dim>& s) {
+    if (isBoxOrBall(a)) {
+        a.object(keys, required);
+        readBoxOrBall(a, s);
+        return;
+    }
+    if (!a.v.is_object()) a.fail("an object");
+    const std::vector<std::string> shapeKeys = {"shape", "min", "max", "center", "radius"};
+    std::vector<std::string> own;
+    for (const std::string& key : keys)
+        if (std::find(shapeKeys.begin(), shapeKeys.end(), key) == shapeKeys.end())
+            own.push_back(key);
+    for (const std::string& key : required) a.required(key);
+    readGeneralShape(a, own, s);
 }
 
 /// Warns of open sides whose normal is perpendicular to gravity: fluid flows out through them
@@ -195,6 +246,24 @@ void warnSidewaysOpenSides(Scene<Dim>& s) {
                                      "] m/s^2: fluid can flow out through it (the side above "
                                      "the fluid is " +
                                      top + ")");
+}
+
+/// Warns of shapes a hundred times larger or smaller than the domain (a mesh in millimetres
+/// in a scene in metres).
+template <int Dim>
+void warnShapeScales(Scene<Dim>& s) {
+    const geometry::Bounds<Dim> domain{s.domainMin, s.domainMax};
+    auto check = [&](const SceneShape<Dim>& shape, const std::string& path) {
+        if (shape.shape != ShapeKind::SOLID) return;
+        const std::string warning = geometry::scaleWarning(shape.solid->bounds(), domain);
+        if (!warning.empty()) s.warnings.push_back(s.file + ": " + path + ": " + warning);
+    };
+    for (std::size_t i = 0; i < s.fluids.size(); ++i)
+        check(s.fluids[i], "fluids[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < s.bodies.size(); ++i)
+        check(s.bodies[i], "bodies[" + std::to_string(i) + "]");
+    for (std::size_t i = 0; i < s.walls.size(); ++i)
+        check(s.walls[i], "walls[" + std::to_string(i) + "]");
 }
 
 /// "dimension" must be this app's: a 3D scene is run with fluid_sim_3d.
@@ -262,12 +331,12 @@ void readMaterials(const At& mats, Scene<Dim>& s) {
 
 template <int Dim>
 FluidBlock<Dim> readFluidBlock(const At& b, const std::map<std::string, MaterialSpec>& materials) {
-    b.object({"material", "shape", "min", "max", "center", "radius", "temperature", "velocity",
-              "pressure"},
-             {"material", "shape"});
     FluidBlock<Dim> blk;
+    readShape<Dim>(b,
+                   {"material", "shape", "min", "max", "center", "radius", "temperature",
+                    "velocity", "pressure"},
+                   {"material", "shape"}, blk);
     blk.material = materialName(b["material"], materials);
-    readShape<Dim>(b, blk.shape, blk.min, blk.max, blk.center, blk.radius, true);
     const char* vars = initialVariables<Dim>();
     const std::string meaning = initialMeaning<Dim>();
     if (b.has("temperature")) blk.temperature = b["temperature"].expression(vars, meaning);
@@ -285,9 +354,9 @@ void readFluids(const At& f, Scene<Dim>& s) {
 
 template <int Dim>
 Body<Dim> readBody(const At& b, const std::map<std::string, MaterialSpec>& materials) {
-    b.object({"shape", "min", "max", "center", "radius", "temperature", "material"}, {"shape"});
     Body<Dim> body;
-    readShape<Dim>(b, body.shape, body.min, body.max, body.center, body.radius, false);
+    readShape<Dim>(b, {"shape", "min", "max", "center", "radius", "temperature", "material"},
+                   {"shape"}, body);
     body.temperature = b.number("temperature", body.temperature, -273.15, 1e4, false, "degC");
     if (b.has("material")) body.material = materialName(b["material"], materials);
     return body;
@@ -298,6 +367,22 @@ void readBodies(const At& f, Scene<Dim>& s) {
     if (!f.v.is_array()) f.fail("an array of solid bodies");
     for (std::size_t i = 0; i < f.v.size(); ++i)
         s.bodies.push_back(readBody<Dim>(f[i], s.materials));
+}
+
+/// A wall inside the domain: a shape with a box side's wall keys (slip, velocity, thermal).
+template <int Dim>
+Wall<Dim> readWall(const At& w) {
+    Wall<Dim> wall;
+    readShape<Dim>(w, {"shape", "min", "max", "center", "radius", "slip", "velocity", "thermal"},
+                   {"shape"}, wall);
+    wall.boundary = readWallKeys<Dim>(w);
+    return wall;
+}
+
+template <int Dim>
+void readWalls(const At& f, Scene<Dim>& s) {
+    if (!f.v.is_array()) f.fail("an array of walls");
+    for (std::size_t i = 0; i < f.v.size(); ++i) s.walls.push_back(readWall<Dim>(f[i]));
 }
 
 /// Emitter `i` of the list (named "emitter<i>" unless it has a name).
@@ -437,8 +522,8 @@ template <int Dim>
 Scene<Dim> readScene(const SceneDocument& doc) {
     const At root{doc.json(), doc.file(), ""};
     root.object({"dimension", "name", "description", "domain", "boundaries", "particles", "time",
-                 "gravity", "materials", "fluids", "bodies", "emitters", "output", "probes",
-                 "physics", "plugins", "numerics"},
+                 "gravity", "materials", "fluids", "bodies", "walls", "emitters", "output",
+                 "probes", "physics", "plugins", "numerics"},
                 {"dimension", "domain", "boundaries", "particles", "time", "materials"});
     Scene<Dim> s;
     s.file = doc.file();
@@ -454,10 +539,12 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     readMaterials(root["materials"], s);
     if (root.has("fluids")) readFluids(root["fluids"], s);
     if (root.has("bodies")) readBodies(root["bodies"], s);
+    if (root.has("walls")) readWalls(root["walls"], s);
     if (root.has("emitters")) readEmitters(root["emitters"], s);
     if (root.has("output")) readOutput(root["output"], s.output);
     if (root.has("probes")) readProbes(root["probes"], s);
     if (root.has("physics")) readPhysics(root["physics"], s);
+    warnShapeScales(s);
     checkSceneGeometry(s);
     warnSidewaysOpenSides(s);
     return s;

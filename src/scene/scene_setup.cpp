@@ -17,12 +17,6 @@ using sph::Size;
 namespace {
 
 template <int Dim>
-sph::Shape<Dim> shapeOf(ShapeKind shape, const SceneVec<Dim>& mn, const SceneVec<Dim>& mx,
-                        const SceneVec<Dim>& c, double r) {
-    return shape == ShapeKind::BOX ? sph::Shape<Dim>::box(mn, mx) : sph::Shape<Dim>::ball(c, r);
-}
-
-template <int Dim>
 double at(const Expression& e, const sph::Vector<Dim>& x, double t) {
     return e(x[0], Dim > 1 ? x[1] : 0.0, Dim > 2 ? x[Dim - 1] : 0.0, t);
 }
@@ -49,14 +43,18 @@ std::shared_ptr<sph::Material> makeMaterial(const MaterialSpec& m, double c0, do
 }
 
 /// Calls visit(x) at the points of a fluid block's particle lattice (at most about 10^6 of
-/// them: a coarser sub-lattice for huge blocks).
+/// them: a coarser sub-lattice for huge blocks; a shape other than a box or ball within the
+/// domain). Returns the stride of the sub-lattice.
 template <int Dim, class Visit>
-void forEachBlockSample(const FluidBlock<Dim>& f, double dx, Visit&& visit) {
-    const sph::Shape<Dim> shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
-    SceneVec<Dim> lo = f.min, hi = f.max;
-    if (f.shape != ShapeKind::BOX)
+long forEachBlockSample(const Scene<Dim>& scene, const FluidBlock<Dim>& f, Visit&& visit) {
+    const double dx = scene.spacing;
+    const sph::PlacedShape<Dim> shape = f.placed();
+    const geometry::Bounds<Dim> bounds = shape.bounds();
+    SceneVec<Dim> lo = bounds.min, hi = bounds.max;
+    if (f.shape == ShapeKind::SOLID)
         for (int k = 0; k < Dim; ++k)
-            lo[k] = f.center[k] - f.radius, hi[k] = f.center[k] + f.radius;
+            lo[k] = std::max(lo[k], scene.domainMin[k]),
+            hi[k] = std::min(hi[k], scene.domainMax[k]);
     std::array<long, Dim> n{};
     double count = 1;
     for (int k = 0; k < Dim; ++k) {
@@ -71,15 +69,30 @@ void forEachBlockSample(const FluidBlock<Dim>& f, double dx, Visit&& visit) {
         if (shape.contains(x)) visit(x);
         int k = 0;
         while (k < Dim && (i[k] += stride) >= n[k]) i[k] = 0, ++k;
-        if (k == Dim) return;
+        if (k == Dim) return stride;
     }
+}
+
+/// A fluid block's volume: exact for a box or ball, from its lattice for other shapes.
+template <int Dim>
+double blockVolume(const Scene<Dim>& scene, const FluidBlock<Dim>& f) {
+    if (f.shape == ShapeKind::BOX) {
+        double v = 1;
+        for (int k = 0; k < Dim; ++k) v *= f.max[k] - f.min[k];
+        return v;
+    }
+    if (f.shape != ShapeKind::SOLID)
+        return Dim == 2 ? M_PI * f.radius * f.radius : 4 / 3.0 * M_PI * std::pow(f.radius, 3);
+    double points = 0;
+    const long stride = forEachBlockSample(scene, f, [&](const sph::Vector<Dim>&) { ++points; });
+    return points * std::pow(double(stride) * scene.spacing, Dim);
 }
 
 /// The largest initial speed of a fluid block, sampled on its particle lattice.
 template <int Dim>
-double largestBlockSpeed(const FluidBlock<Dim>& f, double dx) {
+double largestBlockSpeed(const Scene<Dim>& scene, const FluidBlock<Dim>& f) {
     double u = 0;
-    forEachBlockSample(f, dx, [&](const sph::Vector<Dim>& x) {
+    forEachBlockSample(scene, f, [&](const sph::Vector<Dim>& x) {
         u = std::max(u, norm(at<Dim>(f.velocity, x, 0.0)));
     });
     return u;
@@ -96,13 +109,14 @@ template <int Dim>
 double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
     if (scene.maxSpeed > 0) return scene.maxSpeed;
     double U = 0;
-    for (const auto& f : scene.fluids) U = std::max(U, largestBlockSpeed(f, scene.spacing));
+    for (const auto& f : scene.fluids) U = std::max(U, largestBlockSpeed(scene, f));
     bool open = false;
     for (int k = 0; k < Dim; ++k)
         for (const auto& side : scene.sides[k]) {
             U = std::max(U, side->surfaceSpeed());
             open |= side->letsFluidOut();
         }
+    for (const auto& w : scene.walls) U = std::max(U, w.boundary->surfaceSpeed());
     for (const auto& e : scene.emitters) U = std::max(U, e.speed);
     const double gravity = norm(g);
     if (gravity > 0) {
@@ -111,13 +125,7 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
             height += std::abs(g[k]) / gravity * (scene.domainMax[k] - scene.domainMin[k]);
             domainVolume *= scene.domainMax[k] - scene.domainMin[k];
         }
-        for (const auto& f : scene.fluids) {
-            double v = 1;
-            for (int k = 0; k < Dim; ++k) v *= f.max[k] - f.min[k];
-            if (f.shape != ShapeKind::BOX)
-                v = Dim == 2 ? M_PI * f.radius * f.radius : 4 / 3.0 * M_PI * std::pow(f.radius, 3);
-            fluidVolume += v;
-        }
+        for (const auto& f : scene.fluids) fluidVolume += blockVolume(scene, f);
         const bool freeSurface =
             open || !scene.emitters.empty() || fluidVolume < 0.99 * domainVolume;
         if (freeSurface) {
@@ -129,10 +137,12 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
             double tMin = 1e300, tMax = -1e300, beta = 0;
             auto see = [&](double T) { tMin = std::min(tMin, T), tMax = std::max(tMax, T); };
             for (const auto& f : scene.fluids)
-                forEachBlockSample(f, scene.spacing, [&](const sph::Vector<Dim>& x) {
+                forEachBlockSample(scene, f, [&](const sph::Vector<Dim>& x) {
                     see(at<Dim>(f.temperature, x, 0.0));
                 });
             for (const auto& b : scene.bodies) see(b.temperature);
+            for (const auto& w : scene.walls)
+                if (const auto held = w.boundary->heldTemperature()) see(*held);
             for (int k = 0; k < Dim; ++k)
                 for (const auto& side : scene.sides[k])
                     if (const auto held = side->heldTemperature()) see(*held);
@@ -150,7 +160,9 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
 /// block.
 template <int Dim>
 bool filledClosedBox(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo) {
-    if (!scene.bodies.empty() || !scene.emitters.empty() || geo.fluid.empty()) return false;
+    if (!scene.bodies.empty() || !scene.walls.empty() || !scene.emitters.empty() ||
+        geo.fluid.empty())
+        return false;
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)
             if (!scene.sides[k][hi]->closes()) return false;
@@ -169,7 +181,7 @@ bool filledClosedBox(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo
             rest /= n[k];
         }
         bool inside = false;
-        for (const sph::FluidRegion<Dim>& r : geo.fluid) inside |= r.shape.contains(x);
+        for (const sph::FluidRegion<Dim>& r : geo.fluid) inside |= r.contains(x);
         if (!inside) return false;
     }
     return true;
@@ -361,36 +373,64 @@ void buildDomain(const Scene<Dim>& scene, double temperature, int material,
         }
 }
 
+/// Where a shape's initial temperature is taken: a box's or ball's centre, another shape's
+/// bounding box's centre within the domain.
+template <int Dim>
+sph::Vector<Dim> centreOf(const Scene<Dim>& scene, const SceneShape<Dim>& f) {
+    if (f.shape == ShapeKind::BOX) return (f.min + f.max) * 0.5;
+    if (f.shape != ShapeKind::SOLID) return f.center;
+    const geometry::Bounds<Dim> b = f.solid->bounds();
+    sph::Vector<Dim> c;
+    for (int k = 0; k < Dim; ++k)
+        c[k] =
+            0.5 * (std::max(b.min[k], scene.domainMin[k]) + std::min(b.max[k], scene.domainMax[k]));
+    return c;
+}
+
 /// A fluid block as the engine's region: its shape, its temperature at its centre (the
 /// per-particle expression comes later) and its velocity field.
 template <int Dim>
-sph::FluidRegion<Dim> fluidRegion(const FluidBlock<Dim>& f, int material) {
+sph::FluidRegion<Dim> fluidRegion(const Scene<Dim>& scene, const FluidBlock<Dim>& f, int material) {
     sph::FluidRegion<Dim> r;
-    r.shape = shapeOf<Dim>(f.shape, f.min, f.max, f.center, f.radius);
-    r.temperature =
-        at<Dim>(f.temperature,
-                r.shape.type == sph::Shape<Dim>::Type::BOX ? (f.min + f.max) * 0.5 : f.center, 0.0);
+    static_cast<sph::PlacedShape<Dim>&>(r) = f.placed();
+    r.temperature = at<Dim>(f.temperature, centreOf(scene, f), 0.0);
     r.material = material;
     const VectorField<Dim> v = f.velocity;
     r.velocity = [v](const sph::Vector<Dim>& x) { return at<Dim>(v, x, 0.0); };
     return r;
 }
 
+/// A wall inside the domain as the engine's: its shape and its module's velocity, slip and
+/// held temperature (else the fluid's reference temperature); of the fluid's material.
+template <int Dim>
+sph::InteriorWall<Dim> interiorWall(const Wall<Dim>& w, double temperature, int material) {
+    sph::InteriorWall<Dim> wall;
+    static_cast<sph::PlacedShape<Dim>&>(wall) = w.placed();
+    wall.velocity = w.boundary->velocity();
+    wall.slip = w.boundary->slip();
+    wall.temperature = w.boundary->heldTemperature().value_or(temperature);
+    wall.material = material;
+    return wall;
+}
+
 /// The geometry: domain and walls, fluid regions, solid bodies (of the fluid's material where
-/// they name none).
+/// they name none), walls inside the domain.
 template <int Dim>
 void buildGeometry(const Scene<Dim>& scene, const MaterialSpec& fluid, SceneSetup<Dim>& setup) {
     sph::FluidGeometry<Dim>& geo = setup.geometry;
     buildDomain(scene, fluid.referenceTemperature, setup.fluidMaterial, geo);
     for (const FluidBlock<Dim>& f : scene.fluids)
-        geo.fluid.push_back(fluidRegion(f, setup.materialIndex[f.material]));
+        geo.fluid.push_back(fluidRegion(scene, f, setup.materialIndex[f.material]));
     for (const Body<Dim>& b : scene.bodies) {
         sph::SolidBody<Dim> body;
-        body.shape = shapeOf<Dim>(b.shape, b.min, b.max, b.center, b.radius);
+        static_cast<sph::PlacedShape<Dim>&>(body) = b.placed();
         body.temperature = b.temperature;
         body.material = b.material.empty() ? setup.fluidMaterial : setup.materialIndex[b.material];
         geo.bodies.push_back(body);
     }
+    for (const Wall<Dim>& w : scene.walls)
+        geo.interiorWalls.push_back(
+            interiorWall(w, fluid.referenceTemperature, setup.fluidMaterial));
 }
 
 /// Density by kernel summation where asked, or, for "auto", where gravity acts on a filled
@@ -422,6 +462,80 @@ sph::Storage<Dim> emitterTemplate(const Emitter<Dim>& e, int material, double dx
     t.gather({0});
     t.materials().clear();
     return t;
+}
+
+/// The boundary particle of a box wall beyond the domain at x: the side it lies deepest beyond
+/// (axis -1 inside the domain) and how far.
+template <int Dim>
+double depthBeyondSide(const Scene<Dim>& scene, const sph::FluidGeometry<Dim>& geo,
+                       const sph::Vector<Dim>& x, int& axis, int& hi) {
+    double depth = 0;
+    axis = -1, hi = 0;
+    for (int k = 0; k < Dim; ++k) {
+        if (geo.domain.periodic[k]) continue;
+        const double below = scene.domainMin[k] - x[k], above = x[k] - scene.domainMax[k];
+        if (below > depth) depth = below, axis = k, hi = 0;
+        if (above > depth) depth = above, axis = k, hi = 1;
+    }
+    return depth;
+}
+
+/// The boundary particles of one wall (a box side or an interior wall) with their depths.
+struct WallParticles {
+    std::vector<Size> index;
+    std::vector<Float> depth;
+};
+
+/// Thermal conditions: bodies by their material, box walls by the side they lie beyond,
+/// interior walls by the wall they lie in (a heat flux spread over the area of the layer next
+/// to the fluid: its particles times dx^(Dim-1)).
+template <int Dim>
+void setBoundaryThermal(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
+                        sph::Storage<Dim>& st) {
+    using TC = sph::ThermalCondition;
+    const auto x = st.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto kind = st.template getValue<int>(QuantityId::KIND);
+    const auto cond = st.template getValue<int>(sph::heat_ids::THERMAL_CONDITION);
+    const sph::FluidGeometry<Dim>& geo = setup.geometry;
+    const double dx = scene.spacing;
+    std::array<std::array<WallParticles, 2>, Dim> beyond;
+    std::vector<WallParticles> inWall(scene.walls.size());
+    for (Size i = 0; i < st.size(); ++i) {
+        if (kind[i] == int(sph::ParticleKind::BODY)) {
+            int body = -1;
+            for (std::size_t b = 0; b < scene.bodies.size() && body < 0; ++b)
+                if (geo.bodies[b].contains(x[i])) body = int(b);
+            cond[i] =
+                int(body >= 0 && !scene.bodies[body].material.empty() ? TC::CONDUCTING
+                                                                      : TC::FIXED_TEMPERATURE);
+            continue;
+        }
+        if (kind[i] != int(sph::ParticleKind::WALL)) continue;
+        int axis, hi;
+        const double depth = depthBeyondSide(scene, geo, x[i], axis, hi);
+        if (axis >= 0) {
+            beyond[axis][hi].index.push_back(i), beyond[axis][hi].depth.push_back(depth);
+            continue;
+        }
+        for (std::size_t w = 0; w < geo.interiorWalls.size(); ++w)
+            if (const double d = geo.interiorWalls[w].signedDistance(x[i]); d < 0) {
+                inWall[w].index.push_back(i), inWall[w].depth.push_back(-d);
+                break;
+            }
+    }
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) {
+            double area = 1;
+            for (int j = 0; j < Dim; ++j)
+                if (j != k) area *= scene.domainMax[j] - scene.domainMin[j];
+            scene.sides[k][hi]->setThermal(st, beyond[k][hi].index, beyond[k][hi].depth, area, dx);
+        }
+    for (std::size_t w = 0; w < inWall.size(); ++w) {
+        const double surface = double(std::count_if(inWall[w].depth.begin(), inWall[w].depth.end(),
+                                                    [&](Float d) { return d < dx; }));
+        scene.walls[w].boundary->setThermal(st, inWall[w].index, inWall[w].depth,
+                                            surface * std::pow(dx, Dim - 1), dx);
+    }
 }
 
 }  // namespace
@@ -464,11 +578,10 @@ sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& s
     const auto rho = st.template getValue<Float>(QuantityId::DENSITY);
     const auto p = st.template getValue<Float>(QuantityId::PRESSURE);
     const sph::EquationOfState eos = setup.model.equationOfState();
-    const double dx = scene.spacing;
     for (Size i = 0; i < st.size(); ++i) {
         if (kind[i] != int(sph::ParticleKind::FLUID)) continue;
         for (std::size_t b = 0; b < scene.fluids.size(); ++b) {
-            if (!setup.geometry.fluid[b].shape.contains(x[i])) continue;
+            if (!setup.geometry.fluid[b].contains(x[i])) continue;
             const FluidBlock<Dim>& f = scene.fluids[b];
             if (!f.temperature.isConstant()) T[i] = at<Dim>(f.temperature, x[i], 0.0);
             if (!f.pressure.isConstant() || f.pressure(0, 0, 0, 0) != 0) {
@@ -478,41 +591,8 @@ sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& s
             break;
         }
     }
-    if (!scene.physics.heat || !st.has(sph::heat_ids::THERMAL_CONDITION)) return st;
-    // Thermal conditions: bodies by their material, walls by the side they lie beyond.
-    using TC = sph::ThermalCondition;
-    const auto cond = st.template getValue<int>(sph::heat_ids::THERMAL_CONDITION);
-    std::array<std::array<std::vector<Size>, 2>, Dim> beyond;
-    std::array<std::array<std::vector<Float>, 2>, Dim> depths;
-    for (Size i = 0; i < st.size(); ++i) {
-        if (kind[i] == int(sph::ParticleKind::BODY)) {
-            int body = -1;
-            for (std::size_t b = 0; b < scene.bodies.size() && body < 0; ++b)
-                if (setup.geometry.bodies[b].shape.contains(x[i])) body = int(b);
-            cond[i] =
-                int(body >= 0 && !scene.bodies[body].material.empty() ? TC::CONDUCTING
-                                                                      : TC::FIXED_TEMPERATURE);
-            continue;
-        }
-        if (kind[i] != int(sph::ParticleKind::WALL)) continue;
-        double depth = 0;
-        int axis = -1, hi = 0;
-        for (int k = 0; k < Dim; ++k) {
-            if (setup.geometry.domain.periodic[k]) continue;
-            const double below = scene.domainMin[k] - x[i][k], above = x[i][k] - scene.domainMax[k];
-            if (below > depth) depth = below, axis = k, hi = 0;
-            if (above > depth) depth = above, axis = k, hi = 1;
-        }
-        if (axis < 0) continue;
-        beyond[axis][hi].push_back(i), depths[axis][hi].push_back(depth);
-    }
-    for (int k = 0; k < Dim; ++k)
-        for (int hi = 0; hi < 2; ++hi) {
-            double area = 1;
-            for (int j = 0; j < Dim; ++j)
-                if (j != k) area *= scene.domainMax[j] - scene.domainMin[j];
-            scene.sides[k][hi]->setThermal(st, beyond[k][hi], depths[k][hi], area, dx);
-        }
+    if (scene.physics.heat && st.has(sph::heat_ids::THERMAL_CONDITION))
+        setBoundaryThermal(scene, setup, st);
     return st;
 }
 

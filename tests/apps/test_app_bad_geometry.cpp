@@ -1,0 +1,134 @@
+// Bad geometry through the apps: a shape that misses the domain, a fluid volume without
+// particles, a mesh that is not closed, a file that is not a mesh, fluid overlapping a wall, a
+// shape in other units (a warning), and the CUDA back end refusing walls and general shapes.
+// Each is one line with the key path and exit code 5 (docs/scenes.md), never a crash.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "app_runner.hpp"
+
+using namespace apptest;
+using nlohmann::json;
+
+namespace {
+
+constexpr int kScene = 5;
+
+json tiny2d() {
+    json j = json::parse(readFile(scene("tiny_2d.json")));
+    j.erase("bodies");
+    return j;
+}
+
+json tiny3d() {
+    json j = json::parse(readFile(scene("tiny_3d.json")));
+    j.erase("emitters");
+    return j;
+}
+
+/// Runs the app of the scene's dimension on it, written to <dir>/scene.json with `files`
+/// beside it.
+Result runScene(const std::string& name, const json& j, const std::string& extra = "--quiet",
+                const std::map<std::string, std::string>& files = {}) {
+    const std::string dir = freshDir("geometry_" + name);
+    writeFile(dir + "/scene.json", j.dump());
+    for (const auto& [file, text] : files) writeFile(dir + "/" + file, text);
+    const char* app = j["dimension"] == 2 ? FLUID_SIM : FLUID_SIM_3D;
+    return run(app, "scene.json --out out --end-time 0.002 " + extra, dir);
+}
+
+void expectMessage(const Result& r, std::initializer_list<const char*> parts) {
+    EXPECT_EQ(r.code, kScene) << r.output;
+    for (const char* p : parts)
+        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+json polygon(std::initializer_list<std::array<double, 2>> points) {
+    json p = {{"shape", "polygon"}, {"points", json::array()}};
+    for (const auto& q : points) p["points"].push_back({q[0], q[1]});
+    return p;
+}
+
+/// A tetrahedron as ASCII STL; without its last face it is open (three open edges).
+std::string tetrahedron(bool closed) {
+    const char* faces[] = {"0 0 0\n vertex 0 0.05 0\n vertex 0.05 0 0",
+                           "0 0 0\n vertex 0.05 0 0\n vertex 0 0 0.05",
+                           "0 0 0\n vertex 0 0 0.05\n vertex 0 0.05 0",
+                           "0.05 0 0\n vertex 0 0.05 0\n vertex 0 0 0.05"};
+    std::string stl = "solid t\n";
+    for (int f = 0; f < (closed ? 4 : 3); ++f)
+        stl += std::string("facet normal 0 0 0\n outer loop\n vertex ") + faces[f] +
+               "\n endloop\nendfacet\n";
+    return stl + "endsolid t\n";
+}
+
+}  // namespace
+
+TEST(BadGeometry, FluidShapeOutsideTheDomain) {
+    json j = tiny2d();
+    json f = polygon({{1, 1}, {1.1, 1}, {1, 1.1}});
+    f["material"] = "water";
+    j["fluids"] = json::array({f});
+    expectMessage(runScene("fluid_outside", j), {"fluids[0]", "inside the domain", "spanning"});
+}
+
+TEST(BadGeometry, WallOutsideTheDomain) {
+    json j = tiny2d();
+    j["walls"] = json::array({polygon({{-1, -1}, {-0.5, -1}, {-1, -0.5}})});
+    expectMessage(runScene("wall_outside", j), {"walls[0]", "a wall inside the domain"});
+}
+
+TEST(BadGeometry, FluidVolumeWithoutParticles) {
+    json j = tiny2d();
+    json f = polygon({{0.101, 0.101}, {0.105, 0.101}, {0.101, 0.105}});  // between lattice points
+    f["material"] = "water";
+    j["fluids"].push_back(f);
+    expectMessage(runScene("empty_volume", j), {"fluids[1]", "holding particles", "found none"});
+}
+
+TEST(BadGeometry, FluidOverlappingAWall) {
+    json j = tiny2d();
+    j["walls"] = json::array({polygon({{0.02, 0.02}, {0.08, 0.02}, {0.05, 0.08}})});
+    expectMessage(runScene("overlap_wall", j),
+                  {"fluids[0]", "does not overlap a wall", "walls[0]"});
+}
+
+TEST(BadGeometry, MeshNotClosed) {
+    json j = tiny3d();
+    j["bodies"] =
+        json::array({{{"shape", "mesh"}, {"file", "open.stl"}, {"translate", {0.1, 0.04, 0.04}}}});
+    const Result r = runScene("open_mesh", j, "--quiet", {{"open.stl", tetrahedron(false)}});
+    expectMessage(r, {"bodies[0]", "not closed", "3 open edges"});
+}
+
+TEST(BadGeometry, FileNotAMesh) {
+    json j = tiny3d();
+    j["walls"] = json::array({{{"shape", "mesh"}, {"file", "notes.stl"}}});
+    const Result r = runScene("not_mesh", j, "--quiet", {{"notes.stl", "not a mesh at all\n"}});
+    expectMessage(r, {"walls[0]", "notes.stl"});
+}
+
+TEST(BadGeometry, ShapeInOtherUnitsIsAWarning) {
+    json j = tiny2d();
+    json f = polygon({{-50, -50}, {150, -50}, {150, 150}, {-50, 150}});  // in cm, say
+    f["material"] = "water";
+    j["fluids"] = json::array({f});
+    j["boundaries"]["y_max"] = {{"type", "wall"}};
+    const Result r = runScene("units", j, "--set output.images=false");
+    EXPECT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "fluids[0]")) << r.output;
+    EXPECT_TRUE(contains(r.output, "times larger than the domain")) << r.output;
+}
+
+TEST(BadGeometry, CudaBackendRefusesWallsAndGeneralShapes) {
+    json j = tiny2d();
+    j["walls"] = json::array({polygon({{0.12, 0.02}, {0.18, 0.02}, {0.15, 0.08}})});
+    expectMessage(runScene("cuda_walls", j, "--quiet --backend cuda"),
+                  {"--backend cuda", "walls", "CPU back end only"});
+    json k = tiny2d();
+    k["bodies"] = json::array({polygon({{0.12, 0.02}, {0.18, 0.02}, {0.15, 0.08}})});
+    expectMessage(runScene("cuda_shape", k, "--quiet --backend cuda"),
+                  {"--backend cuda", "bodies[0].shape", "a shape other than a box or a ball"});
+}

@@ -37,7 +37,7 @@ std::vector<typename BodyForces<Dim>::Vec> BodyForces<Dim>::operator()(
     const sph::Storage<Dim>& s) const {
     namespace f = sph::formulas;
     using sph::QuantityId;
-    std::vector<Vec> force(bodies_, Vec{});
+    std::vector<Vec> force(targets_, Vec{});
     const auto x = s.template getValue<Vec>(QuantityId::POSITION);
     const auto kind = s.template getValue<int>(QuantityId::KIND);
     const PairFields<Dim> q(s);
@@ -47,9 +47,9 @@ std::vector<typename BodyForces<Dim>::Vec> BodyForces<Dim>::operator()(
     CellGrid<Dim> grid;
     grid.build(x, support, domain_);
     for (sph::Size j = 0; j < s.size(); ++j) {
-        if (kind[j] != int(sph::ParticleKind::BODY)) continue;
-        const int b = bodyOf_(x[j]);
-        if (b < 0 || b >= bodies_) continue;
+        if (sph::isFluid(kind[j])) continue;
+        const int b = targetOf_(kind[j], x[j]);
+        if (b < 0 || b >= targets_) continue;
         const bool noSlip = q.slip.empty() || q.slip[j] == int(sph::WallSlip::NO_SLIP);
         const double pr2j = f::pressureOverDensity2(q.p[j], q.rho[j]);
         grid.forEachNeighbour(x[j], [&](sph::Size i, const Vec& dxji, double r2) {

@@ -1,6 +1,8 @@
-// The force the fluid exerts on each solid body, as the engine's pair terms give it:
+// The force the fluid exerts on each solid body or interior wall b, as the engine's pair terms
+// give it:
 //   F_b = - sum_{fluid i} sum_{j in b} m_i a_ij,
-// a_ij the acceleration body particle j gives fluid particle i (sph/formulas/fluid_pairs.hpp):
+// a_ij the acceleration boundary particle j of b gives fluid particle i
+// (sph/formulas/fluid_pairs.hpp):
 //   pressure gradient  a_ij = -m_j (p_i / rho_i^2 + p_j / rho_j^2) grad_i W_ij (Monaghan 1992,
 //                      eq. 3.3), p_j and rho_j those of the wall condition (Adami et al. 2012,
 //                      eq. 27-28);
@@ -26,24 +28,25 @@ template <int Dim>
 class BodyForces {
   public:
     using Vec = sph::Vector<Dim>;
-    /// `bodyOf(x)`: the body a body particle at x belongs to (-1: none); `alpha`, `c0`: the
-    /// artificial viscosity's (alpha = 0: off).
-    BodyForces(const sph::RunSettings& settings, const Domain<Dim>& domain, int bodies,
-               std::function<int(const Vec&)> bodyOf, double alpha, double c0)
+    /// `targetOf(kind, x)`: which of the `targets` solids a boundary particle of that
+    /// ParticleKind at x belongs to (-1: none); `alpha`, `c0`: the artificial viscosity's
+    /// (alpha = 0: off).
+    BodyForces(const sph::RunSettings& settings, const Domain<Dim>& domain, int targets,
+               std::function<int(int, const Vec&)> targetOf, double alpha, double c0)
         : kernel_(settings),
           domain_(domain),
-          bodies_(bodies),
-          bodyOf_(std::move(bodyOf)),
+          targets_(targets),
+          targetOf_(std::move(targetOf)),
           alphaC0h_(alpha * c0 * kernel_.h) {}
 
-    /// F_b of every body b at the storage's state.
+    /// F_b of every target b at the storage's state.
     std::vector<Vec> operator()(const sph::Storage<Dim>& s) const;
 
   private:
     sph::RunKernel<Dim> kernel_;
     Domain<Dim> domain_;
-    int bodies_;
-    std::function<int(const Vec&)> bodyOf_;
+    int targets_;
+    std::function<int(int, const Vec&)> targetOf_;
     double alphaC0h_;
 };
 

@@ -67,19 +67,26 @@ RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim
     return render;
 }
 
-/// The forces on the bodies, where a probe records one.
+/// The forces on the bodies and then the interior walls, where a probe records one.
 template <int Dim>
 std::optional<BodyForces<Dim>> bodyForces(const Scene<Dim>& scene, const SceneSetup<Dim>& setup) {
     if (std::none_of(scene.probes.begin(), scene.probes.end(),
                      [](const Probe<Dim>& p) { return p.body >= 0; }))
         return std::nullopt;
-    auto bodyOf = [bodies = setup.geometry.bodies](const sph::Vector<Dim>& x) {
-        for (std::size_t b = 0; b < bodies.size(); ++b)
-            if (bodies[b].shape.contains(x)) return int(b);
+    const auto& bodies = setup.geometry.bodies;
+    const auto& walls = setup.geometry.interiorWalls;
+    auto targetOf = [bodies, walls](int kind, const sph::Vector<Dim>& x) {
+        if (kind == int(sph::ParticleKind::BODY)) {
+            for (std::size_t b = 0; b < bodies.size(); ++b)
+                if (bodies[b].contains(x)) return int(b);
+        } else if (kind == int(sph::ParticleKind::WALL)) {
+            for (std::size_t w = 0; w < walls.size(); ++w)
+                if (walls[w].contains(x)) return int(bodies.size() + w);
+        }
         return -1;
     };
-    return BodyForces<Dim>(setup.settings, setup.geometry.domain, int(scene.bodies.size()), bodyOf,
-                           setup.model.artificialViscosity, setup.model.c0());
+    return BodyForces<Dim>(setup.settings, setup.geometry.domain, int(bodies.size() + walls.size()),
+                           targetOf, setup.model.artificialViscosity, setup.model.c0());
 }
 
 }  // namespace

@@ -900,9 +900,9 @@ case("heat_slabs_k2_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0
 _MEASURED = "Measured 2026-12-05 on 2 CPU cores shared with other work (wall times are not comparable)"
 case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.02], (0.04, None), issue=48,
      note=_MEASURED)
-# c_D at D / dx = 10 (the CI spacing) misses the gate; CI asserts a regression bound on it, the
-# error measured there times 1.5; Re is held to the gate.
-CYLINDER_CI_BOUND = 0.16
+# c_D at D / dx = 10 (the CI spacing) misses the gate: 0.180 (2026-12-05) -> regression bound
+# 0.27 (times 1.5); Re is held to the gate.
+CYLINDER_CI_BOUND = 0.27
 CYLINDER_NOTE = (
     "The set-up differs from the benchmark's in one way: the channel is periodic along x, 1 m (10 D) "
     "long, and driven by a body force (gravity along x, 0.056 m/s^2, set so that U comes to about "
@@ -912,11 +912,24 @@ CYLINDER_NOTE = (
     "correction; Dennis & Chang's (1970) 2.05 is for an unbounded flow at the same Re, and the walls "
     "1.5 D from the cylinder raise the drag to 5.58. U is read half a period from the cylinder, where "
     "the wake has recovered to a parabola. " + _MEASURED)
+CYLINDER_MISS = (
+    "c_D is low, and comes closer to the benchmark as the particles get finer, at about first order: "
+    "18 % low at D / dx = 10, 8.7 % at D / dx = 20 (the table below), so about 4 % at D / dx = 40, which "
+    "was not run (8 times the run at D / dx = 20: some 1.5 h on 2 cores). What sets the error is the "
+    "kernel's width against the diameter: the same run at D / dx = 10 with h = 1.2 dx instead of the "
+    "default 1.5 dx (particles.h_over_spacing) gives c_D 5.03 to 5.15 over successive 2 s windows, "
+    "about what the default gives at D / dx = 20 (5.09); the shear the no-slip wall condition gives "
+    "is spread over the kernel. Not the cause: the periodic channel's length (1.5 m instead of 1 m at "
+    "D / dx = 10: c_D 4.50 against 4.57, 1.5 %); the time given (the means over the last four 2 s "
+    "windows at D / dx = 20 are 5.02, 5.15, 5.15, 5.09). PySPH was not run on this set-up")
 case("cylinder_re20", "cylinder_re20.json", cylinder_drag, 0.005, [0.01, 0.005], (0.01, [CYLINDER_CI_BOUND, None]),
-     issue=48, note=CYLINDER_NOTE)
+     issue=48, note=CYLINDER_NOTE, miss_note=CYLINDER_MISS)
 OBSTACLE_NOTE = (
     "The box is a triangle mesh (scenes/meshes/obstacle.stl, 12 triangles, moved into place by the "
-    "scene's translate); the particles of the box are those of the lattice inside it. " + _MEASURED)
+    "scene's translate): the same particles, and the same heights to every digit at spacing 0.1, as "
+    "the box given as a \"box\" body. The front reaches H2 later than in the experiment (at t = 0.40 s "
+    "the experiment's water there is 4.6 cm deep, the app's not yet arrived), then follows it within "
+    "about 2.5 cm; H4, the reservoir draining, within 2 cm throughout. " + _MEASURED)
 case("dam_break_obstacle", "dam_break_obstacle.json", dam_break_obstacle, 0.05, [0.1, 0.05], (0.1, None),
      issue=48, note=OBSTACLE_NOTE)
 

@@ -71,7 +71,7 @@ RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim
 template <int Dim>
 std::optional<BodyForces<Dim>> bodyForces(const Scene<Dim>& scene, const SceneSetup<Dim>& setup) {
     if (std::none_of(scene.probes.begin(), scene.probes.end(),
-                     [](const Probe<Dim>& p) { return p.body >= 0; }))
+                     [](const Probe<Dim>& p) { return p.body >= 0 || p.wall >= 0; }))
         return std::nullopt;
     const auto& bodies = setup.geometry.bodies;
     const auto& walls = setup.geometry.interiorWalls;
@@ -119,7 +119,7 @@ void Outputs<Dim>::makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& s
     if (!scene.probes.empty())
         writers_.push_back(std::make_unique<ProbesWriter<Dim>>(
             context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth),
-            bodyForces(scene, setup)));
+            bodyForces(scene, setup), int(setup.geometry.bodies.size())));
 }
 
 template <int Dim>

@@ -55,8 +55,11 @@ void ProbesWriter<Dim>::write(const sph::Storage<Dim>& s, const std::vector<Outp
     if (bodyForces_) forces = (*bodyForces_)(s);
     for (const auto& p : probes_)
         for (const auto& f : p.fields)
-            if (p.body >= 0)
-                for (int k = 0; k < Dim; ++k) row += formatted(",%.10g", forces.at(p.body)[k]);
+            if (const int target = p.body >= 0   ? p.body
+                                   : p.wall >= 0 ? bodies_ + p.wall
+                                                 : -1;
+                target >= 0)
+                for (int k = 0; k < Dim; ++k) row += formatted(",%.10g", forces.at(target)[k]);
             else
                 for (double v : probe(s, kernel_, p.point, f)) row += formatted(",%.10g", v);
     appendToFile(c_.path("probes.csv"), row + "\n");

@@ -1,5 +1,5 @@
 // The probes of a run: a row of probes.csv per output time (the fields interpolated at each
-// probe's point, or the force on a probe's body), and at the end their plot, probes.png.
+// probe's point, or the force on a probe's body or wall), and at the end their plot, probes.png.
 // Internal to numerics_io.
 #pragma once
 
@@ -16,15 +16,17 @@ namespace num::io {
 template <int Dim>
 class ProbesWriter final : public IWriter<Dim> {
   public:
-    /// `plotWidth`: of probes.png [px]; `bodyForces`: what the probes on bodies read.
+    /// `plotWidth`: of probes.png [px]; `bodyForces`: what the probes on bodies and walls
+    /// read, the scene's `bodies` first, then its walls.
     ProbesWriter(const WriterContext& context, std::vector<Probe<Dim>> probes,
                  const sph::RunSettings& settings, int plotWidth,
-                 std::optional<BodyForces<Dim>> bodyForces = std::nullopt)
+                 std::optional<BodyForces<Dim>> bodyForces = std::nullopt, int bodies = 0)
         : c_(context),
           probes_(std::move(probes)),
           kernel_(settings),
           plotWidth_(plotWidth),
-          bodyForces_(std::move(bodyForces)) {}
+          bodyForces_(std::move(bodyForces)),
+          bodies_(bodies) {}
 
     /// A fresh probes.csv: its header.
     void start() override;
@@ -43,6 +45,7 @@ class ProbesWriter final : public IWriter<Dim> {
     sph::RunKernel<Dim> kernel_;
     int plotWidth_;
     std::optional<BodyForces<Dim>> bodyForces_;
+    int bodies_;
 };
 
 }  // namespace num::io

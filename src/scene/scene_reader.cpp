@@ -454,7 +454,7 @@ void readOutput(const At& o, OutputSpec& out) {
 /// A probe; `names` holds those of the probes before it (a name must be unique).
 template <int Dim>
 Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
-    e.object({"name", "point", "body", "fields"}, {"name"});
+    e.object({"name", "point", "body", "wall", "fields"}, {"name"});
     Probe<Dim> pr;
     pr.name = e["name"].string();
     // Column names of probes.csv: letters, digits, '_' and '-' only (no separator,
@@ -465,10 +465,13 @@ Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
                        });
     if (!plain) e["name"].fail("a name of 1 to 64 letters, digits, '_' or '-'");
     if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
-    if (e.has("point") == e.has("body")) e.fail("either a \"point\" or a \"body\"");
-    const bool onBody = e.has("body");
-    if (onBody)
+    if (int(e.has("point")) + int(e.has("body")) + int(e.has("wall")) != 1)
+        e.fail("one of a \"point\", a \"body\" or a \"wall\"");
+    const bool onBody = e.has("body") || e.has("wall");
+    if (e.has("body"))
         pr.body = int(e["body"].integer(0, 1 << 30));
+    else if (e.has("wall"))
+        pr.wall = int(e["wall"].integer(0, 1 << 30));
     else
         pr.point = readVec<Dim>(e["point"], "m");
     if (e.has("fields")) {

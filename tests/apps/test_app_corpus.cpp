@@ -280,7 +280,7 @@ const std::vector<Case>& corpus() {
              return "";
          },
          kScene,
-         {"probes[0]", "either a \"point\" or a \"body\""}},
+         {"probes[0]", "one of a \"point\", a \"body\" or a \"wall\""}},
         {"probe_on_missing_body",
          2,
          [](json& j) {
@@ -289,6 +289,14 @@ const std::vector<Case>& corpus() {
          },
          kScene,
          {"probes[0].body", "one of the scene's 1 bodies"}},
+        {"probe_on_missing_wall",
+         2,
+         [](json& j) {
+             j["probes"] = json::array({{{"name", "drag"}, {"wall", 0}}});
+             return "";
+         },
+         kScene,
+         {"probes[0].wall", "one of the scene's 0 walls"}},
         {"probe_on_body_with_pressure",
          2,
          [](json& j) {

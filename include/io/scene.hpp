@@ -61,7 +61,7 @@ struct SceneShape {
     sph::PlacedShape<Dim> placed() const {
         sph::PlacedShape<Dim> p;
         if (shape == ShapeKind::SOLID)
-            p.solid = solid;
+            p.solid = solid, p.solidBounds = solid->bounds();
         else
             p.shape = shape == ShapeKind::BOX ? sph::Shape<Dim>::box(min, max)
                                               : sph::Shape<Dim>::ball(center, radius);

@@ -193,7 +193,7 @@ void readGeneralShape(const At& a, const std::vector<std::string>& own, SceneSha
     } catch (const AppError&) {
         throw;
     } catch (const std::exception& e) {
-        throw sceneError(a.file, a.path, "a shape the geometry can be made of", "", e.what());
+        throw sceneError(a.file, a.path, "a usable shape", "", e.what());
     }
 }
 

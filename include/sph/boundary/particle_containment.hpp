@@ -35,9 +35,9 @@ class ParticleContainment : public IEquationTerm<Dim> {
                     formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
                                              g.hasWall(k, 0), g.hasWall(k, 1));
                 for (const SolidBody<Dim>& body : g.bodies)
-                    formulas::containOutsideBody<Dim>(x[i], v[i], body);
+                    if (body.mayContain(x[i])) formulas::containOutsideBody<Dim>(x[i], v[i], body);
                 for (const InteriorWall<Dim>& wall : g.interiorWalls)
-                    formulas::containOutsideBody<Dim>(x[i], v[i], wall);
+                    if (wall.mayContain(x[i])) formulas::containOutsideBody<Dim>(x[i], v[i], wall);
             }
         });
     }

@@ -11,8 +11,10 @@ namespace num::sph {
 
 template <int Dim>
 struct PlacedShape {
-    Shape<Dim> shape;               ///< the box or ball, used when `solid` is empty
-    geometry::SolidPtr<Dim> solid;  ///< any other solid (host only)
+    Shape<Dim> shape;                         ///< the box or ball, used when `solid` is empty
+    geometry::SolidPtr<Dim> solid = nullptr;  ///< any other solid (host only)
+    /// A box holding `solid`, kept for mayContain (infinite, the default: not known).
+    geometry::Bounds<Dim> solidBounds{};
 
     bool isGeneral() const { return solid != nullptr; }
     /// Signed distance to the surface: negative inside, positive outside.
@@ -20,6 +22,13 @@ struct PlacedShape {
         return solid ? solid->signedDistance(x) : shape.signedDistance(x);
     }
     bool contains(const Vector<Dim>& x) const { return signedDistance(x) < 0; }
+    /// False where x is surely outside: beyond `solidBounds` (a cheap test before a solid's
+    /// signed distance, which for a mesh is a tree search); true otherwise.
+    bool mayContain(const Vector<Dim>& x) const {
+        for (int k = 0; k < Dim; ++k)
+            if (x[k] < solidBounds.min[k] || x[k] > solidBounds.max[k]) return false;
+        return true;
+    }
     /// Unit normal of the nearest surface, pointing out of the solid.
     Vector<Dim> outwardNormal(const Vector<Dim>& x) const {
         return solid ? solid->outwardNormal(x) : shape.outwardNormal(x);

@@ -556,6 +556,102 @@ def conduction_walls(run):
     return checks, f"Nu {nu:.5f}; mean |T - T_exact| / (T_h - T_c) {float(err.mean()):.3g}", profile
 
 
+def buoyancy(run):
+    """The force the water at rest exerts on a submerged body (probe "body") against the buoyancy
+    rho g V, its mean over the last second: the weakly-compressible water rings acoustically
+    about its rest state, a few per cent of rho g V from one output to the next."""
+    rho = next(iter(run.scene["materials"].values()))["density"]
+    g = abs(run.scene["gravity"][1])
+    body = run.scene["bodies"][0]
+    ref = rho * g * math.prod(hi - lo for lo, hi in zip(body["min"], body["max"]))
+    pr = run.probes()
+    last = steady_rows(pr, 1.0)
+    fx, fy = float(pr["body.force_x"][last].mean()), float(pr["body.force_y"][last].mean())
+    profile = {"xlabel": "t [s]", "ylabel": "F_y [N/m]", "series": [
+        {"label": "app: force on the body", "x": pr["time"].tolist(), "y": pr["body.force_y"].tolist(), "style": "line"},
+        {"label": "rho g V", "x": [0.0, float(pr["time"][-1])], "y": [ref, ref], "style": "line"}]}
+    checks = [{"metric": "|F_y - rho g V| / (rho g V), mean over the last 1 s", "value": abs(fy - ref) / ref, "gate": 0.01},
+              {"metric": "|F_x| / (rho g V), mean over the last 1 s", "value": abs(fx) / ref, "gate": 0.01}]
+    return checks, f"F = ({fx:.4g}, {fy:.5g}) N/m against rho g V = {ref:.5g} N/m", profile
+
+
+# Schaefer & Turek (1996), benchmark 2D-1: c_D = 5.57 to 5.59 (their bounds; 5.5795 the later
+# reference value, John 2004) for a cylinder of diameter D = 0.1 m, 0.2 m above the floor of a
+# channel H = 0.41 m high (blockage D / H = 0.244), Re = U D / nu = 20 with U the mean velocity.
+SCHAEFER_TUREK_CD = 5.5795
+
+
+def channel_mean_velocity(pr, names, ys, height):
+    """The mean velocity of a channel flow from the probes `names` at heights `ys` across one
+    section: the least-squares u = a y (H - y), whose mean is a H^2 / 6, one value per row."""
+    basis = np.asarray(ys) * (height - np.asarray(ys))
+    u = np.array([pr[n] for n in names])
+    return (basis @ u) / (basis @ basis) * height**2 / 6
+
+
+def cylinder_drag(run):
+    """Drag coefficient c_D = 2 F_x / (rho U^2 D) of the cylinder (probe "cylinder") in a channel
+    periodic along x, driven by a body force, against Schaefer & Turek's 2D-1 at Re = 20: U is the
+    mean velocity through the section half a period from the cylinder (the "u<k>" probes), F_x
+    and U their means over the last 2 s."""
+    mat = next(iter(run.scene["materials"].values()))
+    rho, nu = mat["density"], mat["viscosity"]
+    D, H = 2 * run.scene["bodies"][0]["radius"], run.scene["domain"]["max"][1]
+    pr = run.probes()
+    names = sorted(n for n in pr if n.startswith("u") and n.endswith(".vx"))
+    ys = [next(p["point"][1] for p in run.scene["probes"] if p["name"] == n[:-3]) for n in names]
+    U = channel_mean_velocity(pr, names, ys, H)
+    last = steady_rows(pr, 2.0)
+    F, Um = float(pr["cylinder.force_x"][last].mean()), float(U[last].mean())
+    cd, re = 2 * F / (rho * Um**2 * D), Um * D / nu
+    with np.errstate(divide="ignore", invalid="ignore"):
+        cd_t = 2 * pr["cylinder.force_x"] / (rho * U**2 * D)
+    profile = {"xlabel": "t [s]", "ylabel": "c_D", "series": [
+        {"label": "app (each output)", "x": pr["time"].tolist(), "y": np.nan_to_num(cd_t).tolist(), "style": "line"},
+        {"label": "Schaefer & Turek (1996), 2D-1", "x": [0.0, float(pr["time"][-1])],
+         "y": [SCHAEFER_TUREK_CD] * 2, "style": "line"}]}
+    checks = [{"metric": "|c_D - 5.5795| / 5.5795 (Schaefer & Turek 1996, 2D-1), means over the last 2 s",
+               "value": abs(cd - SCHAEFER_TUREK_CD) / SCHAEFER_TUREK_CD, "gate": 0.05},
+              {"metric": "|Re - 20| / 20, Re = U D / nu", "value": abs(re - 20) / 20, "gate": 0.05}]
+    notes = (f"c_D {cd:.4f} at Re {re:.3f} (U {Um:.5f} m/s, F_x {F:.4f} N/m, lift "
+             f"{float(pr['cylinder.force_y'][last].mean()):+.4f} N/m); D / dx {D / run.spacing:g}")
+    return checks, notes, profile
+
+
+def water_height(p, x0, y0, radius):
+    """The depth of water at (x0, y0): the particles' volumes m / rho in the vertical column
+    around it, weighted by the 2D Wendland C2 kernel of support `radius` (unit integral)."""
+    q = np.hypot(p["x"] - x0, p["y"] - y0) / radius
+    w = np.where(q < 1, 7 / (math.pi * radius**2) * (1 - q)**4 * (1 + 4 * q), 0.0)
+    return float(np.sum(p["mass"] / p["density"] * w))
+
+
+# Kleefsman et al. (2005): the probes H2 and H4 (x, y) and the initial depth of the water.
+KLEEFSMAN_PROBES = {"h2": (0.992, 0.5), "h4": (2.638, 0.5)}
+KLEEFSMAN_DEPTH = 0.55
+
+
+def dam_break_obstacle(run):
+    """Water heights at H2 and H4 against Kleefsman et al. (2005) at the tabulated times: the mean
+    of |h - h_exp| over them, over the initial depth 0.55 m. The depth is read from the particle
+    frames within the kernel support (2 h) around each probe's vertical line."""
+    ref = read_table("kleefsman2005_h2_h4.csv")
+    radius = 2 * run.summary["smoothing_length"]
+    ts = np.array([run.time(k) for k in range(len(run.frames))])
+    frames = [run.particles(k) for k in range(len(run.frames))]
+    checks, series, notes = [], [], []
+    sel = ref["t"] <= ts[-1] + 1e-9
+    for key, (x0, y0) in KLEEFSMAN_PROBES.items():
+        h = np.array([water_height(p, x0, y0, radius) for p in frames])
+        err = np.abs(np.interp(ref["t"][sel], ts, h) - ref[key][sel]) / KLEEFSMAN_DEPTH
+        checks.append({"metric": f"mean |{key.upper()} - {key.upper()}_exp| / 0.55 m over the tabulated times",
+                       "value": float(err.mean()), "gate": 0.05})
+        notes.append(f"{key.upper()}: mean {err.mean():.4f}, largest {err.max():.4f} at t = {ref['t'][sel][np.argmax(err)]:g} s")
+        series += [{"label": f"app {key.upper()}", "x": ts.tolist(), "y": h.tolist(), "style": "line"},
+                   {"label": f"Kleefsman et al. (2005) {key.upper()}", "x": ref["t"].tolist(), "y": ref[key].tolist(), "style": "points"}]
+    return checks, "; ".join(notes), {"xlabel": "t [s]", "ylabel": "water height [m]", "series": series}
+
+
 # ---------------------------------------------------------------------------------------------
 # The cases. "doc": documentation resolution; "study": spacings of the convergence study;
 # "ci": the fast check of tests/validation (spacing, bound, where the bound comes from).
@@ -800,6 +896,43 @@ case("heat_slabs_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0.00
 case("heat_slabs_k2_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0.005], (0.02, None),
      sets=["materials.right.conductivity=2"])
 
+# The cases with geometry (issue 48): the force on a body, a curved wall, a mesh wall.
+_MEASURED = "Measured 2026-12-05 on 2 CPU cores shared with other work (wall times are not comparable)"
+case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.02], (0.04, None), issue=48,
+     note=_MEASURED)
+# c_D at D / dx = 10 (the CI spacing) misses the gate: 0.180 (2026-12-05) -> regression bound
+# 0.27 (times 1.5); Re is held to the gate.
+CYLINDER_CI_BOUND = 0.27
+CYLINDER_NOTE = (
+    "The set-up differs from the benchmark's in one way: the channel is periodic along x, 1 m (10 D) "
+    "long, and driven by a body force (gravity along x, 0.056 m/s^2, set so that U comes to about "
+    "0.2 m/s), where Schaefer & Turek give a parabolic inflow 0.15 m upstream and a free outflow 2 m "
+    "downstream (the app has no inflow boundary). The blockage, D / H = 0.244, and the cylinder's "
+    "height in the channel are the benchmark's, so its c_D is compared as it is, without a blockage "
+    "correction; Dennis & Chang's (1970) 2.05 is for an unbounded flow at the same Re, and the walls "
+    "1.5 D from the cylinder raise the drag to 5.58. U is read half a period from the cylinder, where "
+    "the wake has recovered to a parabola. " + _MEASURED)
+CYLINDER_MISS = (
+    "c_D is low, and comes closer to the benchmark as the particles get finer, at about first order: "
+    "18 % low at D / dx = 10, 8.7 % at D / dx = 20 (the table below), so about 4 % at D / dx = 40, which "
+    "was not run (8 times the run at D / dx = 20: some 1.5 h on 2 cores). What sets the error is the "
+    "kernel's width against the diameter: the same run at D / dx = 10 with h = 1.2 dx instead of the "
+    "default 1.5 dx (particles.h_over_spacing) gives c_D 5.03 to 5.15 over successive 2 s windows, "
+    "about what the default gives at D / dx = 20 (5.09), and at D / dx = 20 with h = 1.2 dx 5.36, 5.33 "
+    "and 5.41 (the last three 2 s windows, at Re 19.7 to 19.4: the same body force drives the flow "
+    "slower), 3 to 4 % low; the shear the no-slip wall condition gives is spread over the kernel. Not the cause: the periodic channel's length (1.5 m instead of 1 m at "
+    "D / dx = 10: c_D 4.50 against 4.57, 1.5 %); the time given (the means over the last four 2 s "
+    "windows at D / dx = 20 are 5.02, 5.15, 5.15, 5.09). PySPH was not run on this set-up")
+case("cylinder_re20", "cylinder_re20.json", cylinder_drag, 0.005, [0.01, 0.005], (0.01, [CYLINDER_CI_BOUND, None]),
+     issue=48, note=CYLINDER_NOTE, miss_note=CYLINDER_MISS)
+OBSTACLE_NOTE = (
+    "The box is a triangle mesh (scenes/meshes/obstacle.stl, 12 triangles, moved into place by the "
+    "scene's translate): the same particles, and the same heights to every digit at spacing 0.1, as "
+    "the box given as a \"box\" body. The front reaches H2 later than in the experiment (at t = 0.40 s "
+    "the experiment's water there is 4.6 cm deep, the app's not yet arrived), then follows it within "
+    "about 2.5 cm; H4, the reservoir draining, within 2 cm throughout. " + _MEASURED)
+case("dam_break_obstacle", "dam_break_obstacle.json", dam_break_obstacle, 0.05, [0.1, 0.05], (0.1, None),
+     issue=48, note=OBSTACLE_NOTE)
 
 def app_commit():
     # NUMERICS_APP_BUILD names the build where the apps do not come from this working tree

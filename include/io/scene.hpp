@@ -101,6 +101,8 @@ template <int Dim>
 struct Probe {
     std::string name;
     SceneVec<Dim> point{};
+    int body = -1;  ///< the body whose force the probe records; -1: none
+    int wall = -1;  ///< the interior wall whose force the probe records; -1: none (a point)
     std::vector<std::string> fields;
 };
 

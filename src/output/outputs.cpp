@@ -67,6 +67,28 @@ RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim
     return render;
 }
 
+/// The forces on the bodies and then the interior walls, where a probe records one.
+template <int Dim>
+std::optional<BodyForces<Dim>> bodyForces(const Scene<Dim>& scene, const SceneSetup<Dim>& setup) {
+    if (std::none_of(scene.probes.begin(), scene.probes.end(),
+                     [](const Probe<Dim>& p) { return p.body >= 0 || p.wall >= 0; }))
+        return std::nullopt;
+    const auto& bodies = setup.geometry.bodies;
+    const auto& walls = setup.geometry.interiorWalls;
+    auto targetOf = [bodies, walls](int kind, const sph::Vector<Dim>& x) {
+        if (kind == int(sph::ParticleKind::BODY)) {
+            for (std::size_t b = 0; b < bodies.size(); ++b)
+                if (bodies[b].contains(x)) return int(b);
+        } else if (kind == int(sph::ParticleKind::WALL)) {
+            for (std::size_t w = 0; w < walls.size(); ++w)
+                if (walls[w].contains(x)) return int(bodies.size() + w);
+        }
+        return -1;
+    };
+    return BodyForces<Dim>(setup.settings, setup.geometry.domain, int(bodies.size() + walls.size()),
+                           targetOf, setup.model.artificialViscosity, setup.model.c0());
+}
+
 }  // namespace
 
 template <int Dim>
@@ -96,7 +118,8 @@ void Outputs<Dim>::makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& s
     }
     if (!scene.probes.empty())
         writers_.push_back(std::make_unique<ProbesWriter<Dim>>(
-            context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth)));
+            context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth),
+            bodyForces(scene, setup), int(setup.geometry.bodies.size())));
 }
 
 template <int Dim>

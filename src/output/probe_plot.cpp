@@ -52,6 +52,7 @@ std::string panelOf(const std::string& column) {
     if (field == "temperature") return "temperature [C]";
     if (field == "pressure") return "pressure [Pa]";
     if (field == "density") return "density [kg/m3]";
+    if (field.rfind("force_", 0) == 0) return "force [N, in 2D N/m]";
     return field;
 }
 
@@ -110,7 +111,8 @@ Image plotProbes(const std::string& csvText, const std::string& title, int width
             }
             img.fillRect(left + plotW + 16, legendY + 4, left + plotW + 36, legendY + 8, ink);
             const std::string& name = t.names[c];  // the probe; velocity keeps its component
-            const bool component = panels[p] == "velocity [m/s]";
+            const bool component =
+                panels[p] == "velocity [m/s]" || panels[p] == "force [N, in 2D N/m]";
             img.text(left + plotW + 42, legendY, component ? name : name.substr(0, name.rfind('.')),
                      kInk, 2);
             legendY += 22;

@@ -23,9 +23,10 @@ void ProbesWriter<Dim>::start() {
     const char* axes = "xyz";
     for (const auto& p : probes_)
         for (const auto& f : p.fields) {
-            if (f == "velocity")
+            if (f == "velocity" || f == "force")
                 for (int k = 0; k < Dim; ++k)
-                    header += "," + field(p.name + ".v" + std::string(1, axes[k]));
+                    header += "," + field(p.name + (f == "force" ? ".force_" : ".v") +
+                                          std::string(1, axes[k]));
             else
                 header += "," + field(p.name + "." + f);
         }
@@ -50,9 +51,17 @@ template <int Dim>
 void ProbesWriter<Dim>::write(const sph::Storage<Dim>& s, const std::vector<OutputField>&, double t,
                               int) {
     std::string row = formatted("%.10g", t);
+    std::vector<sph::Vector<Dim>> forces;
+    if (bodyForces_) forces = (*bodyForces_)(s);
     for (const auto& p : probes_)
         for (const auto& f : p.fields)
-            for (double v : probe(s, kernel_, p.point, f)) row += formatted(",%.10g", v);
+            if (const int target = p.body >= 0   ? p.body
+                                   : p.wall >= 0 ? bodies_ + p.wall
+                                                 : -1;
+                target >= 0)
+                for (int k = 0; k < Dim; ++k) row += formatted(",%.10g", forces.at(target)[k]);
+            else
+                for (double v : probe(s, kernel_, p.point, f)) row += formatted(",%.10g", v);
     appendToFile(c_.path("probes.csv"), row + "\n");
 }
 

@@ -1,11 +1,14 @@
 // The probes of a run: a row of probes.csv per output time (the fields interpolated at each
-// probe's point), and at the end their plot, probes.png. Internal to numerics_io.
+// probe's point, or the force on a probe's body or wall), and at the end their plot, probes.png.
+// Internal to numerics_io.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "io/output_writer.hpp"
 #include "io/scene.hpp"
+#include "output/body_force.hpp"
 #include "sph/kernel_choice.hpp"
 
 namespace num::io {
@@ -13,10 +16,17 @@ namespace num::io {
 template <int Dim>
 class ProbesWriter final : public IWriter<Dim> {
   public:
-    /// `plotWidth`: of probes.png [px].
+    /// `plotWidth`: of probes.png [px]; `bodyForces`: what the probes on bodies and walls
+    /// read, the scene's `bodies` first, then its walls.
     ProbesWriter(const WriterContext& context, std::vector<Probe<Dim>> probes,
-                 const sph::RunSettings& settings, int plotWidth)
-        : c_(context), probes_(std::move(probes)), kernel_(settings), plotWidth_(plotWidth) {}
+                 const sph::RunSettings& settings, int plotWidth,
+                 std::optional<BodyForces<Dim>> bodyForces = std::nullopt, int bodies = 0)
+        : c_(context),
+          probes_(std::move(probes)),
+          kernel_(settings),
+          plotWidth_(plotWidth),
+          bodyForces_(std::move(bodyForces)),
+          bodies_(bodies) {}
 
     /// A fresh probes.csv: its header.
     void start() override;
@@ -34,6 +44,8 @@ class ProbesWriter final : public IWriter<Dim> {
     std::vector<Probe<Dim>> probes_;
     sph::RunKernel<Dim> kernel_;
     int plotWidth_;
+    std::optional<BodyForces<Dim>> bodyForces_;
+    int bodies_;
 };
 
 }  // namespace num::io

@@ -251,12 +251,27 @@ void checkEmitters(const Scene<Dim>& s) {
     }
 }
 
+/// A probe's body or wall index names one of the scene's (`what`: "bodies" or "walls").
+template <int Dim>
+void checkProbeIndex(const Scene<Dim>& s, std::size_t i, const char* key, int index,
+                     std::size_t count, const char* what) {
+    if (index >= int(count))
+        throw sceneError(
+            s.file, "probes[" + std::to_string(i) + "]." + key,
+            "the index of one of the scene's " + std::to_string(count) + " " + what + " (from 0)",
+            std::to_string(index));
+}
+
 template <int Dim>
 void checkProbes(const Scene<Dim>& s) {
-    for (std::size_t i = 0; i < s.probes.size(); ++i)
-        if (!insideDomain(s, s.probes[i].point, s.probes[i].point))
+    for (std::size_t i = 0; i < s.probes.size(); ++i) {
+        const Probe<Dim>& p = s.probes[i];
+        checkProbeIndex(s, i, "body", p.body, s.bodies.size(), "bodies");
+        checkProbeIndex(s, i, "wall", p.wall, s.walls.size(), "walls");
+        if (p.body < 0 && p.wall < 0 && !insideDomain(s, p.point, p.point))
             throw sceneError(s.file, "probes[" + std::to_string(i) + "].point",
-                             "a point inside " + domainText(s), text<Dim>(s.probes[i].point));
+                             "a point inside " + domainText(s), text<Dim>(p.point));
+    }
 }
 
 /// The scene makes fluid particles, at most 20 million of them at the start.

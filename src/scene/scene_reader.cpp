@@ -454,7 +454,7 @@ void readOutput(const At& o, OutputSpec& out) {
 /// A probe; `names` holds those of the probes before it (a name must be unique).
 template <int Dim>
 Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
-    e.object({"name", "point", "fields"}, {"name", "point"});
+    e.object({"name", "point", "body", "wall", "fields"}, {"name"});
     Probe<Dim> pr;
     pr.name = e["name"].string();
     // Column names of probes.csv: letters, digits, '_' and '-' only (no separator,
@@ -465,14 +465,25 @@ Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
                        });
     if (!plain) e["name"].fail("a name of 1 to 64 letters, digits, '_' or '-'");
     if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
-    pr.point = readVec<Dim>(e["point"], "m");
+    if (int(e.has("point")) + int(e.has("body")) + int(e.has("wall")) != 1)
+        e.fail("one of a \"point\", a \"body\" or a \"wall\"");
+    const bool onBody = e.has("body") || e.has("wall");
+    if (e.has("body"))
+        pr.body = int(e["body"].integer(0, 1 << 30));
+    else if (e.has("wall"))
+        pr.wall = int(e["wall"].integer(0, 1 << 30));
+    else
+        pr.point = readVec<Dim>(e["point"], "m");
     if (e.has("fields")) {
         const At fl = e["fields"];
         if (!fl.v.is_array() || fl.v.empty()) fl.fail("a non-empty array of field names");
         for (std::size_t k = 0; k < fl.v.size(); ++k)
-            pr.fields.push_back(fl[k].choice({"velocity", "density", "pressure", "temperature"}));
+            pr.fields.push_back(
+                onBody ? fl[k].choice({"force"})
+                       : fl[k].choice({"velocity", "density", "pressure", "temperature"}));
     } else {
-        pr.fields = {"velocity", "pressure", "temperature"};
+        pr.fields = onBody ? std::vector<std::string>{"force"}
+                           : std::vector<std::string>{"velocity", "pressure", "temperature"};
     }
     return pr;
 }

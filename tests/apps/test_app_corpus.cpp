@@ -272,6 +272,39 @@ const std::vector<Case>& corpus() {
          },
          kScene,
          {"probes[0].name"}},
+        // A probe on a body: one of point and body, a body that exists, the force only.
+        {"probe_with_point_and_body",
+         2,
+         [](json& j) {
+             j["probes"][0]["body"] = 0;
+             return "";
+         },
+         kScene,
+         {"probes[0]", "one of a \"point\", a \"body\" or a \"wall\""}},
+        {"probe_on_missing_body",
+         2,
+         [](json& j) {
+             j["probes"] = json::array({{{"name", "drag"}, {"body", 1}}});
+             return "";
+         },
+         kScene,
+         {"probes[0].body", "one of the scene's 1 bodies"}},
+        {"probe_on_missing_wall",
+         2,
+         [](json& j) {
+             j["probes"] = json::array({{{"name", "drag"}, {"wall", 0}}});
+             return "";
+         },
+         kScene,
+         {"probes[0].wall", "one of the scene's 0 walls"}},
+        {"probe_on_body_with_pressure",
+         2,
+         [](json& j) {
+             j["probes"] = json::array({{{"name", "drag"}, {"body", 0}, {"fields", {"pressure"}}}});
+             return "";
+         },
+         kScene,
+         {"probes[0].fields[0]", "force"}},
     };
     return cases;
 }

@@ -20,9 +20,7 @@ import numpy as np
 
 import numerics
 
-ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
-SCENE = os.path.join(ROOT, "scenes", "validation", "dam_break_martin_moyce.json")
-DATA = os.path.join(ROOT, "validation", "data", "martin_moyce1952.csv")
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "validation", "data", "martin_moyce1952.csv")
 
 # Particles across the column, end time [s] and bound on |Z - Z_exp| / Z_exp at the tabulated
 # times the run reaches. The model releases the column at once; the front leads the experiment
@@ -62,7 +60,7 @@ def main():
     args = ap.parse_args()
     settings = SETTINGS["quick" if args.quick else "full"]
 
-    scene = numerics.Scene.load(SCENE)
+    scene = numerics.Scene.load(numerics.scenes()["dam_break_martin_moyce"])
     d = scene.to_dict()
     a, g = d["fluids"][0]["max"][0], -d["gravity"][1]
     spacing = a / settings["per_width"]
@@ -70,7 +68,7 @@ def main():
     support = 2 * d["particles"].get("h_over_spacing", 1.5) * spacing  # 2 h (Wendland C2)
     sim = numerics.Simulation(scene, threads=args.threads, out=args.out, quiet=True, end_time=settings["end"])
 
-    # The front at every 0.01 s, read from the particles while the run goes.
+    # The front at the start, then every 0.01 s, read from the particles while the run goes.
     times, fronts = [], []
 
     def track(sim):
@@ -78,6 +76,7 @@ def main():
         times.append(sim.time)
         fronts.append(surge_front(p.position[p.kind == 0, 0], support, spacing))
 
+    track(sim)
     sim.run(until=settings["end"], every=0.01, callback=track, progress=False)
 
     T, Z = np.array(times) * np.sqrt(2 * g / a), np.array(fronts) / a

@@ -20,8 +20,6 @@ import numpy as np
 
 import numerics
 
-SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes", "validation", "natural_convection_ra1e3.json")
-
 # de Vahl Davis (1983), Ra = 1e3: the mean Nusselt number (as validation/cases.py states it).
 NU_REFERENCE = 1.118
 # |Nu - NU_REFERENCE| / NU_REFERENCE must stay under the validation's gate, 3 % (validation/
@@ -57,7 +55,7 @@ def main():
     args = ap.parse_args()
     settings = SETTINGS["quick" if args.quick else "full"]
 
-    scene = numerics.Scene.load(SCENE)
+    scene = numerics.Scene.load(numerics.scenes()["natural_convection_ra1e3"])
     scene.set("particles.spacing", settings["spacing"])
     d = scene.to_dict()
     fluid = d["materials"]["fluid"]

@@ -19,8 +19,6 @@ import numpy as np
 
 import numerics
 
-SCENE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes", "validation", "poiseuille_2d.json")
-
 # The channel is L = 1 mm wide; spacing L / 40, or L / 10 for --quick. The bound on the L2 error
 # over the peak speed is the largest measured at that spacing (2026-12-05, through the app with
 # the same settings: 0.0044 at L / 40, 0.021 at L / 10) plus 50 %. The error comes from the
@@ -65,7 +63,7 @@ def main():
     fig, ax = plt.subplots(figsize=(7, 4.5))
     worst = 0.0
     for nu in settings["viscosities"]:
-        scene = numerics.Scene.load(SCENE)
+        scene = numerics.Scene.load(numerics.scenes()["poiseuille_2d"])
         force, width = channel(scene)
         y, u = steady_profile(scene, nu, settings["spacing"], args.threads, os.path.join(args.out, f"nu_{nu:g}"))
         exact = force / (2 * nu) * y * (width - y)

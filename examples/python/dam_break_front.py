@@ -25,10 +25,9 @@ DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "val
 # Particles across the column, end time [s] and bound on |Z - Z_exp| / Z_exp at the tabulated
 # times the run reaches. The model releases the column at once; the front leads the experiment
 # early on by 12 to 16 % at every spacing from a / 20 to a / 80 (validation/cases.py), while a
-# coarse surge lags late. Measured through the app with these settings (2026-12-05): at a / 30 to
-# T = 9.3, at most 0.19 (-0.19 at T = 9.2, +0.14 at T = 1.2); at a / 10 to T = 4.6, at most
-# 0.08 (+0.08 at T = 1.2). The bounds are those plus 50 %; a front that stays put or runs off
-# misses them by far.
+# coarse surge lags late. Measured with these settings (2026-12-05): at a / 30 to T = 9.3, at
+# most 0.19 (-0.19 at T = 9.2, +0.14 at T = 1.2); at a / 10 to T = 4.6, at most 0.08 (+0.08 at
+# T = 1.2). The bounds are those plus 50 %; a front that stays put or runs off misses them by far.
 SETTINGS = {
     "full": {"per_width": 30, "end": 0.5, "bound": 0.28},
     "quick": {"per_width": 10, "end": 0.25, "bound": 0.12},

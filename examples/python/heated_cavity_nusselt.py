@@ -22,10 +22,10 @@ import numerics
 
 # de Vahl Davis (1983), Ra = 1e3: the mean Nusselt number (as validation/cases.py states it).
 NU_REFERENCE = 1.118
-# |Nu - NU_REFERENCE| / NU_REFERENCE must stay under the validation's gate, 3 % (validation/
-# cases.py), at both resolutions: measured through the app with these settings (2026-12-05),
-# 0.6 % at 40 x 40 (mean over t = 10 to 15 s), 0.2 % at 20 x 20 (t = 5 to 8 s). Heat carried by
-# conduction alone (no flow) gives Nu = 1, 10.6 % low. The flow is steady from t = 5 s on.
+# |Nu - NU_REFERENCE| / NU_REFERENCE must stay under the validation's gate, 3 %
+# (validation/cases.py), at both resolutions; measured with these settings (2026-12-05): 0.6 % at
+# 40 x 40 (mean over t = 10 to 15 s), 0.2 % at 20 x 20 (t = 5 to 8 s). Heat carried by conduction
+# alone (no flow) gives Nu = 1, 10.6 % low. The flow is steady from t = 5 s on.
 SETTINGS = {
     "full": {"spacing": 0.025, "end": 15.0, "mean_from": 10.0},
     "quick": {"spacing": 0.05, "end": 8.0, "mean_from": 5.0},

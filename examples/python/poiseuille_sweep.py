@@ -20,8 +20,8 @@ import numpy as np
 import numerics
 
 # The channel is L = 1 mm wide; spacing L / 40, or L / 10 for --quick. The bound on the L2 error
-# over the peak speed is the largest measured at that spacing (2026-12-05, through the app with
-# the same settings: 0.0044 at L / 40, 0.021 at L / 10) plus 50 %. The error comes from the
+# over the peak speed is the largest measured at that spacing (2026-12-05: 0.0044 at L / 40,
+# 0.021 at L / 10) plus 50 %. The error comes from the
 # discretisation and falls with the spacing (0.0052 at L / 25); the start-up transient left at
 # the end of the run (see steady_profile) is 5e-5 of the peak.
 SETTINGS = {
@@ -36,13 +36,18 @@ def channel(scene):
     return d["gravity"][0], d["domain"]["max"][1]
 
 
+def analytic(y, force, width, nu):
+    """The steady profile between no-slip plates y = 0 and y = L: u = F y (L - y) / (2 nu)."""
+    return force / (2 * nu) * y * (width - y)
+
+
 def steady_profile(scene, nu, spacing, threads, out):
     """Runs the channel at viscosity nu until it is steady; returns y and u of its particles."""
     force, width = channel(scene)
     scene.set("particles.spacing", spacing)
     scene.set("materials.water.viscosity", nu)
-    # The peak speed F L^2 / (8 nu) sets the sound speed (the app cannot derive it from a force).
-    scene.set("physics.max_speed", force * width**2 / (8 * nu))
+    # The peak speed sets the sound speed (the app cannot derive it from a body force).
+    scene.set("physics.max_speed", analytic(width / 2, force, width, nu))
     # The start-up transient decays as exp(-pi^2 nu t / L^2): after one viscous time L^2 / nu it is
     # exp(-pi^2) = 5e-5 of the peak.
     sim = numerics.Simulation(scene, threads=threads, out=out, quiet=True, end_time=width**2 / nu)
@@ -63,16 +68,15 @@ def main():
     fig, ax = plt.subplots(figsize=(7, 4.5))
     worst = 0.0
     for nu in settings["viscosities"]:
-        scene = numerics.Scene.load(numerics.scenes()["poiseuille_2d"])
+        scene = numerics.Scene.load(numerics.scenes()["poiseuille_2d"])  # the shipped scene, afresh
         force, width = channel(scene)
         y, u = steady_profile(scene, nu, settings["spacing"], args.threads, os.path.join(args.out, f"nu_{nu:g}"))
-        exact = force / (2 * nu) * y * (width - y)
-        peak = force * width**2 / (8 * nu)
-        error = np.sqrt(np.mean((u - exact) ** 2)) / peak
+        peak = analytic(width / 2, force, width, nu)
+        error = np.sqrt(np.mean((u - analytic(y, force, width, nu)) ** 2)) / peak
         worst = max(worst, error)
         print(f"nu = {nu:g} m^2/s: peak {u.max():.4g} m/s (analytic {peak:.4g}), L2 error / peak {error:.2e}")
         line = np.linspace(0, width, 200)
-        shown = ax.plot(line * 1e3, force / (2 * nu) * line * (width - line) * 1e6, lw=1)[0]
+        shown = ax.plot(line * 1e3, analytic(line, force, width, nu) * 1e6, lw=1)[0]
         ax.plot(y * 1e3, u * 1e6, ".", ms=3, color=shown.get_color(), label=f"nu = {nu:g} m²/s")
     ax.set(xlabel="y [mm]", ylabel="u [µm/s]", title="Poiseuille flow: particles (dots) and analytic (lines)")
     ax.legend()

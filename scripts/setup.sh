@@ -18,6 +18,9 @@ packages=(
   python3-numpy                  # validation: comparison of the apps' outputs (validation/cases.py)
   python3-matplotlib             # validation: plots of docs/validation.md (validation/run.sh)
   libopenmpi-dev openmpi-bin     # several processes (mpirun): MPI domain decomposition
+  pybind11-dev python3-pybind11  # the Python module numerics (python/): its build
+  python3-dev                    # the Python module numerics: Python's headers
+  python3-tqdm                   # the Python module numerics: the progress bar of sim.run()
 )
 
 # Test-only: the outputs opened by the tools users open them with (tests/tools, label tools).
@@ -27,6 +30,7 @@ test_packages=(
   xvfb                           # tests/tools: a virtual X display for pvbatch (Xvfb)
   python3-meshio                 # tests/tools: meshio reads the VTU files
   python3-pil                    # tests/tools: reads the pixels of ParaView's picture
+  python3-pytest                 # tests/python: the Python module's tests (pytest)
 )
 case "${1:-}" in
   "") ;;

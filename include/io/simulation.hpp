@@ -31,6 +31,11 @@ struct RunOptions {
     std::optional<std::string> restart;  ///< checkpoint to continue from
     double checkpointEvery = 0;          ///< simulated seconds between checkpoints (0: none)
     bool quiet = false;
+    /// The live progress line on standard output (off: a front end draws its own).
+    bool progressLine = true;
+    /// The run handles SIGINT, SIGTERM and SIGHUP (the apps); false: the caller handles them
+    /// and calls Simulation::requestStop (the Python module).
+    bool handleSignals = true;
     FieldNames fieldNames;  ///< names of user quantities in the outputs
     /// The processes of the run (mpirun); nullptr: this process alone.
     const parallel::Communicator* communicator = nullptr;
@@ -94,8 +99,17 @@ class Simulation {
     std::uint64_t steps() const;
     /// This process's particles, up to date (copied back from the GPU when needed).
     const sph::Storage<Dim>& particles();
+    /// This process's particles for a front end to change between steps (on the CUDA back end
+    /// they are copied to the device before the next step).
+    sph::Storage<Dim>& particlesToChange();
     /// Whether a process asked to stop (a signal on any process stops all of them).
     bool stopRequested() const;
+    /// Asks the run to stop after the step in progress, as a signal does.
+    void requestStop();
+    /// The scene as read, with the options applied (end time, output directory).
+    const Scene<Dim>& scene() const;
+    /// The names of the user and plugin quantities in the outputs.
+    const FieldNames& fieldNames() const;
 
     void addObserver(std::unique_ptr<IStepObserver<Dim>> observer);
     RunParts<Dim>& parts() { return *parts_; }

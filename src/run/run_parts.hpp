@@ -60,6 +60,7 @@ struct RunParts {
     /// count, and `storage` is brought up to date when an observer needs it.
     std::unique_ptr<device::DeviceRun<Dim>> gpu;
     bool storageCurrent = true;
+    bool hostChanged = false;  ///< a front end changed the particles: upload them (CUDA)
     /// Each process keeps its share of the particles and a halo; one process keeps them all.
     std::unique_ptr<parallel::DomainDecomposition<Dim>> decomposition;
     std::optional<Emitters<Dim>> emitters;
@@ -70,9 +71,13 @@ struct RunParts {
     std::int64_t owned = 0;        ///< this process's particles, after the last step
     std::int64_t particles = 0;    ///< over the processes, after the last step
     double lastOutput = -1;        ///< the time of the last output written; -1: none
+    bool stopAsked = false;        ///< Simulation::requestStop
 
     RunParts(const SceneDocument& document, const RunOptions& opt)
-        : options(opt), comm(opt.communicator ? *opt.communicator : single), doc(document) {}
+        : signalsOnExit(opt.handleSignals),
+          options(opt),
+          comm(opt.communicator ? *opt.communicator : single),
+          doc(document) {}
 
     bool root() const { return comm.isRoot(); }
 

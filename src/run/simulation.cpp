@@ -179,7 +179,8 @@ Simulation<Dim>::Simulation(const SceneDocument& doc, const RunOptions& options)
     // Plugin libraries by absolute path: the scene a checkpoint stores finds them anywhere.
     : parts_(std::make_unique<RunParts<Dim>>(withAbsolutePluginPaths(doc), options)) {
     RunParts<Dim>& p = *parts_;
-    stop::duringSetUp(options.program);  // a signal ends the program at once until the loop
+    // A signal ends the program at once until the loop.
+    if (options.handleSignals) stop::duringSetUp(options.program);
     readRunScene(p);
     sph::Storage<Dim> initial = setUpParticles(p);
     if (options.restart)
@@ -197,10 +198,10 @@ Simulation<Dim>::Simulation(const SceneDocument& doc, const RunOptions& options)
     // From here a signal asks for a stop (stop_signals.hpp): after the step in progress, or at
     // once when that step is still running half a second later. Several processes finish the
     // step in progress together: one alone cannot abandon it.
-    stop::duringRun();
+    if (options.handleSignals) stop::duringRun();
     if (p.comm.size() == 1 && !p.gpu)
         p.solver->setAbandonCheck([&p] { return stop::abandonStep(p.run->steps() + 1); });
-    p.progress.emplace(options.quiet || !p.root() ? Progress::Mode::QUIET
+    p.progress.emplace(options.quiet || !options.progressLine || !p.root() ? Progress::Mode::QUIET
                        : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
                                                   : Progress::Mode::PLAIN,
                        p.run->time(), p.scene.endTime);
@@ -225,7 +226,22 @@ std::uint64_t Simulation<Dim>::steps() const {
 
 template <int Dim>
 bool Simulation<Dim>::stopRequested() const {
-    return parts_->comm.any(stop::requested() != 0);
+    return parts_->comm.any(stop::requested() != 0 || parts_->stopAsked);
+}
+
+template <int Dim>
+void Simulation<Dim>::requestStop() {
+    parts_->stopAsked = true;
+}
+
+template <int Dim>
+const Scene<Dim>& Simulation<Dim>::scene() const {
+    return parts_->scene;
+}
+
+template <int Dim>
+const FieldNames& Simulation<Dim>::fieldNames() const {
+    return parts_->fieldNames;
 }
 
 template <int Dim>
@@ -242,6 +258,13 @@ void Simulation<Dim>::copyParticlesToHost() {
 template <int Dim>
 const sph::Storage<Dim>& Simulation<Dim>::particles() {
     copyParticlesToHost();
+    return parts_->storage;
+}
+
+template <int Dim>
+sph::Storage<Dim>& Simulation<Dim>::particlesToChange() {
+    copyParticlesToHost();
+    parts_->hostChanged = parts_->gpu != nullptr;
     return parts_->storage;
 }
 
@@ -268,6 +291,7 @@ double Simulation<Dim>::stepTowards(double limit) {
         time() + (p.gpu ? p.gpu->timeStepLimits().dt() : p.solver->timeStepLimits(p.storage).dt()) >
             target;
     for (auto& o : observers_) o->beforeStep(*this, endStep);
+    if (p.hostChanged) p.gpu->upload(p.storage, false), p.hostChanged = false;
     double dt = 0;
     try {
         if (p.gpu) {

@@ -80,7 +80,7 @@ int Simulation<Dim>::finishRun(RunEnd end) {
         writeFileAtomically(p.outputs->path("summary.json"), end.summary.dump(2) + "\n");
     });
     // Until here a first signal only sets the flag: the video and the summary are still made.
-    stop::restoreDefaults();
+    if (p.options.handleSignals) stop::restoreDefaults();
     if (end.status == "unstable" || end.status == "failed")
         throw AppError(end.failure, end.message + " (last good output kept in " +
                                         p.scene.output.directory + ")");

@@ -36,12 +36,16 @@ struct TestSignal {
 };
 TestSignal testSignal();
 
-/// Restores the default signal actions when a run ends, also by an exception.
+/// Restores the default signal actions when a run ends, also by an exception (when `active`:
+/// the run installed its handlers).
 struct DefaultsOnExit {
-    DefaultsOnExit() = default;
+    explicit DefaultsOnExit(bool active_ = true) : active(active_) {}
     DefaultsOnExit(const DefaultsOnExit&) = delete;
     DefaultsOnExit& operator=(const DefaultsOnExit&) = delete;
-    ~DefaultsOnExit() { restoreDefaults(); }
+    ~DefaultsOnExit() {
+        if (active) restoreDefaults();
+    }
+    const bool active;
 };
 
 }  // namespace num::io::stop

@@ -1,0 +1,33 @@
+// _numerics.SceneDocument over io::SceneDocument: the scene as the apps read it, with --set.
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "io/scene_loader.hpp"
+
+namespace num::python {
+
+void bindScene(py::module_& m) {
+    using io::SceneDocument;
+    py::class_<SceneDocument>(m, "SceneDocument")
+        .def_static("from_file", &SceneDocument::fromFile, py::arg("path"),
+                    "Reads and parses a scene file.")
+        .def_static("from_text", &SceneDocument::fromText, py::arg("text"), py::arg("file"),
+                    "Parses scene text; `file` names it in messages.")
+        .def("set", &SceneDocument::set, py::arg("assignment"),
+             "Applies \"a.b.c=VALUE\" as --set does.")
+        .def_property_readonly("dimension", &SceneDocument::dimension)
+        .def_property_readonly("file", &SceneDocument::file)
+        .def("dump", &SceneDocument::dump, "The document as JSON text.")
+        .def(
+            "check",
+            [](const SceneDocument& d) {
+                if (d.dimension() == 3)
+                    io::readScene<3>(d);
+                else
+                    io::readScene<2>(d);
+            },
+            "Reads and checks every key as a run does (its errors).")
+        .def("copy", [](const SceneDocument& d) { return SceneDocument(d); });
+}
+
+}  // namespace num::python

@@ -1,4 +1,4 @@
-// NumPy views of a run's particles (particle_views.hpp).
+// NumPy views of a run's particles and the keeper of their buffers (particle_views.hpp).
 #include <algorithm>
 #include <optional>
 

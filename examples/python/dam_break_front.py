@@ -52,10 +52,10 @@ def surge_front(x, support, spacing):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", default="out/dam_break_front", help="directory of the plot and the run")
     ap.add_argument("--quick", action="store_true", help="coarse and short: the CI run")
-    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--threads", type=int, default=2, help="threads of the run (default: 2)")
     args = ap.parse_args()
     settings = SETTINGS["quick" if args.quick else "full"]
 

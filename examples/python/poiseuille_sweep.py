@@ -58,10 +58,10 @@ def steady_profile(scene, nu, spacing, threads, out):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", default="out/poiseuille_sweep", help="directory of the plot and the runs")
     ap.add_argument("--quick", action="store_true", help="coarse and short: the CI run")
-    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--threads", type=int, default=2, help="threads of the run (default: 2)")
     args = ap.parse_args()
     settings = SETTINGS["quick" if args.quick else "full"]
 

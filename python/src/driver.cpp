@@ -5,6 +5,8 @@
 #include <string>
 #include <utility>
 
+#include "io/formatted.hpp"
+
 namespace num::python {
 
 namespace {
@@ -42,13 +44,17 @@ Driver<Dim>::Driver(const io::SceneDocument& doc, const io::RunOptions& options)
 
 template <int Dim>
 void Driver<Dim>::checkCanStep() const {
+    if (armed_)
+        throw io::AppError(io::ExitCode::USAGE,
+                           "step() and run() cannot be called from a callback of run(): return "
+                           "from it, and the run goes on");
     if (finished_)
         throw io::AppError(io::ExitCode::USAGE,
                            "the run has ended (summary.json written): make a new Simulation to "
                            "run again");
     if (reached(sim_.time(), sim_.endTime()))
         throw io::AppError(io::ExitCode::USAGE,
-                           "the run is at its end time (t = " + std::to_string(sim_.time()) +
+                           "the run is at its end time (t = " + io::formatted("%g", sim_.time()) +
                                " s): call run() to write its end, or give a later end_time");
 }
 
@@ -61,7 +67,7 @@ double Driver<Dim>::step() {
 
 template <int Dim>
 int Driver<Dim>::advance(double until, double every, py::object callback, py::object progress) {
-    if (finished_) checkCanStep();
+    if (finished_ || armed_) checkCanStep();
     armed_ = true, every_ = every, callback_ = std::move(callback), progress_ = std::move(progress);
     nextCall_ = every_ > 0 ? (std::floor(sim_.time() / every_ + 1e-9) + 1) * every_ : 0;
     lastLook_ = lastProgress_ = Clock::now();

@@ -100,3 +100,22 @@ def test_3d(tiny3d, tmp_path):
     assert sim.dimension == 3 and sim.particles.position.shape[1] == 3
     assert sim.run(progress=False) == 0
     assert sim.summary["status"] == "completed" and sim.steps == sim.summary["steps"]
+
+
+def test_steps_to_the_end_then_run_writes_the_end(tiny2d, tmp_path):
+    sim = numerics.Simulation(tiny2d, out=tmp_path, quiet=True, end_time=0.002)
+    while sim.time < sim.end_time * (1 - 1e-9):
+        sim.step()
+    with pytest.raises(numerics.RunError, match="at its end time") as e:
+        sim.step()
+    assert e.value.exit_code == 2 and not sim.finished
+    assert sim.run(progress=False) == 0 and sim.summary["status"] == "completed"
+
+
+def test_no_steps_from_inside_a_callback(sim2d):
+    def nested(s):
+        s.step()
+
+    with pytest.raises(numerics.RunError, match="from a callback") as e:
+        sim2d.run(until=0.005, callback=nested, progress=False)
+    assert e.value.exit_code == 2 and sim2d.steps == 1

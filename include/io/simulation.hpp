@@ -119,6 +119,7 @@ class Simulation {
     /// One step towards limit (at most the end time), landing on the observers' times.
     double stepTowards(double limit);
     void copyParticlesToHost();
+    void acceptChangedParticles();
     void reportAbandonedStep(RunEnd& end);
     /// summary.json, the report and the exit code.
     int finishRun(RunEnd end);

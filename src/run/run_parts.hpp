@@ -60,7 +60,7 @@ struct RunParts {
     /// count, and `storage` is brought up to date when an observer needs it.
     std::unique_ptr<device::DeviceRun<Dim>> gpu;
     bool storageCurrent = true;
-    bool hostChanged = false;  ///< a front end changed the particles: upload them (CUDA)
+    bool hostChanged = false;  ///< a front end may have changed the particles since the step
     /// Each process keeps its share of the particles and a halo; one process keeps them all.
     std::unique_ptr<parallel::DomainDecomposition<Dim>> decomposition;
     std::optional<Emitters<Dim>> emitters;

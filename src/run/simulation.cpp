@@ -264,8 +264,25 @@ const sph::Storage<Dim>& Simulation<Dim>::particles() {
 template <int Dim>
 sph::Storage<Dim>& Simulation<Dim>::particlesToChange() {
     copyParticlesToHost();
-    parts_->hostChanged = parts_->gpu != nullptr;
+    parts_->hostChanged = true;
     return parts_->storage;
+}
+
+/// Particles a front end wrote between steps: their positions must be numbers (the neighbour
+/// search bins them); on the CUDA back end they go up to the GPU again.
+template <int Dim>
+void Simulation<Dim>::acceptChangedParticles() {
+    RunParts<Dim>& p = *parts_;
+    p.hostChanged = false;
+    const auto x = p.storage.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+    for (std::size_t i = 0; i < x.size(); ++i)
+        for (int k = 0; k < Dim; ++k)
+            if (!std::isfinite(x[i][k]))
+                throw AppError(ExitCode::USAGE,
+                               "particle " + std::to_string(i) + " was given the position " +
+                                   formatted("%g", x[i][k]) + " on axis " + std::to_string(k) +
+                                   " between steps: write finite positions");
+    if (p.gpu) p.gpu->upload(p.storage, false);
 }
 
 template <int Dim>
@@ -282,6 +299,7 @@ void Simulation<Dim>::advanceTo(double t) {
 template <int Dim>
 double Simulation<Dim>::stepTowards(double limit) {
     RunParts<Dim>& p = *parts_;
+    if (p.hostChanged) acceptChangedParticles();
     double landing = std::numeric_limits<double>::infinity();
     for (const auto& o : observers_) landing = std::min(landing, o->landingTime());
     // A limit on a landing time (to round-off) steps to that time exactly, as a longer run does.
@@ -291,7 +309,6 @@ double Simulation<Dim>::stepTowards(double limit) {
         time() + (p.gpu ? p.gpu->timeStepLimits().dt() : p.solver->timeStepLimits(p.storage).dt()) >
             target;
     for (auto& o : observers_) o->beforeStep(*this, endStep);
-    if (p.hostChanged) p.gpu->upload(p.storage, false), p.hostChanged = false;
     double dt = 0;
     try {
         if (p.gpu) {

@@ -114,3 +114,10 @@ def test_unstable_run_is_an_exception(sim2d):
         sim2d.run(progress=False)
     assert e.value.exit_code == 9 and "unstable" in str(e.value)
     assert sim2d.finished and sim2d.summary["status"] == "unstable"
+
+
+def test_position_that_is_not_a_number_refused(sim2d):
+    w = sim2d.particles_writable()
+    w.position[3, 1] = np.nan
+    with pytest.raises(numerics.Error, match="particle 3 was given the position nan on axis 1"):
+        sim2d.step()

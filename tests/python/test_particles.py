@@ -119,5 +119,6 @@ def test_unstable_run_is_an_exception(sim2d):
 def test_position_that_is_not_a_number_refused(sim2d):
     w = sim2d.particles_writable()
     w.position[3, 1] = np.nan
-    with pytest.raises(numerics.Error, match="particle 3 was given the position nan on axis 1"):
+    with pytest.raises(numerics.RunError, match="particle 3 was given the position nan on axis 1") as e:
         sim2d.step()
+    assert e.value.exit_code == 2

@@ -64,7 +64,7 @@ class Emitters {
   private:
     const Scene<Dim>& scene_;
     const SceneSetup<Dim>& setup_;
-    std::vector<std::vector<sph::Vector<Dim>>> discs_;  ///< lattice offsets of each nozzle
+    std::vector<std::vector<sph::Vector<Dim>>> discs_;  ///< each nozzle's open lattice offsets
     std::vector<std::uint64_t> layers_;
     std::size_t emitted_ = 0;
     std::uint64_t blocked_ = 0;

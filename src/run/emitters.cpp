@@ -5,42 +5,12 @@
 #include <cstring>
 
 #include "io/formatted.hpp"
+#include "io/nozzle.hpp"
 
 namespace num::io {
 
 using sph::QuantityId;
 using sph::Size;
-
-namespace {
-
-/// The particles one emitter injects per layer: offsets across its nozzle, on the lattice.
-template <int Dim>
-std::vector<sph::Vector<Dim>> nozzle(const Emitter<Dim>& e, double dx) {
-    std::vector<sph::Vector<Dim>> out;
-    const int m = std::max(1, int(std::lround(2 * e.radius / dx)));
-    auto offset = [&](int j) { return (j + 0.5 - 0.5 * m) * dx; };
-    if constexpr (Dim == 2) {
-        const sph::Vector<2> across{{-e.direction[1], e.direction[0]}};
-        for (int j = 0; j < m; ++j) out.push_back(across * offset(j));
-    } else {
-        // An orthonormal pair across the direction d.
-        sph::Vector<3> a{{1, 0, 0}};
-        if (std::abs(e.direction[0]) > 0.9) a = {{0, 1, 0}};
-        sph::Vector<3> e1 = a - e.direction * dot(a, e.direction);
-        e1 /= norm(e1);
-        const sph::Vector<3> e2{{e.direction[1] * e1[2] - e.direction[2] * e1[1],
-                                 e.direction[2] * e1[0] - e.direction[0] * e1[2],
-                                 e.direction[0] * e1[1] - e.direction[1] * e1[0]}};
-        for (int i = 0; i < m; ++i)
-            for (int j = 0; j < m; ++j)
-                if (offset(i) * offset(i) + offset(j) * offset(j) <= e.radius * e.radius + 1e-12)
-                    out.push_back(e1 * offset(i) + e2 * offset(j));
-        if (out.empty()) out.push_back({});
-    }
-    return out;
-}
-
-}  // namespace
 
 std::vector<char> WaterAt::occupied() const {
     std::vector<char> taken(near.size());
@@ -121,7 +91,8 @@ Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
       setup_(setup),
       layers_(scene.emitters.size(), 0),
       warned_(scene.emitters.size(), 0) {
-    for (const auto& e : scene.emitters) discs_.push_back(nozzle<Dim>(e, scene.spacing));
+    for (std::size_t e = 0; e < scene.emitters.size(); ++e)
+        discs_.push_back(openNozzle(scene, e).open);
 }
 
 template <int Dim>

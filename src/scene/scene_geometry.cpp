@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "io/formatted.hpp"
+#include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
 #include "sph/setup/particle_generation.hpp"
 
@@ -230,8 +231,23 @@ void checkBodiesAndWalls(const Scene<Dim>& s) {
         check(s.walls[j], "walls[" + std::to_string(j) + "]", "wall");
 }
 
+/// Emitter i's nozzle is at least one spacing wide and no wider than the domain.
+template <int Dim>
+void checkEmitterRadius(const Scene<Dim>& s, std::size_t i) {
+    const Emitter<Dim>& e = s.emitters[i];
+    double extent = 0;
+    for (int k = 0; k < Dim; ++k) extent = std::max(extent, s.domainMax[k] - s.domainMin[k]);
+    if (2 * e.radius < s.spacing || 2 * e.radius > extent)
+        throw sceneError(s.file, "emitters[" + std::to_string(i) + "].radius",
+                         "a radius of at least half the spacing (" +
+                             formatted("%g", s.spacing / 2) +
+                             " m) and at most half the domain's largest extent (" +
+                             formatted("%g", extent / 2) + " m)",
+                         formatted("%g", e.radius) + " m");
+}
+
 /// Every emitter lies inside the domain, with a nozzle at least one spacing wide and no wider
-/// than the domain (which bounds the set-up's work).
+/// than the domain (which bounds the set-up's work), not wholly inside bodies and walls.
 template <int Dim>
 void checkEmitters(const Scene<Dim>& s) {
     for (std::size_t i = 0; i < s.emitters.size(); ++i) {
@@ -239,15 +255,14 @@ void checkEmitters(const Scene<Dim>& s) {
         if (!insideDomain(s, e.position, e.position))
             throw sceneError(s.file, "emitters[" + std::to_string(i) + "].position",
                              "a point inside " + domainText(s), text<Dim>(e.position));
-        double extent = 0;
-        for (int k = 0; k < Dim; ++k) extent = std::max(extent, s.domainMax[k] - s.domainMin[k]);
-        if (2 * e.radius < s.spacing || 2 * e.radius > extent)
-            throw sceneError(s.file, "emitters[" + std::to_string(i) + "].radius",
-                             "a radius of at least half the spacing (" +
-                                 formatted("%g", s.spacing / 2) +
-                                 " m) and at most half the domain's largest extent (" +
-                                 formatted("%g", extent / 2) + " m)",
-                             formatted("%g", e.radius) + " m");
+        checkEmitterRadius(s, i);
+        if (const Nozzle<Dim> nozzle = openNozzle(s, i); nozzle.open.empty())
+            throw sceneError(
+                s.file, "emitters[" + std::to_string(i) + "].position",
+                "a nozzle with points at least half a spacing outside every body "
+                "and wall",
+                text<Dim>(e.position) + ": every nozzle point is in or next to " + nozzle.cutBy,
+                "move the nozzle into the open");
     }
 }
 

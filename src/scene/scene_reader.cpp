@@ -8,6 +8,7 @@
 #include "geometry/scale_check.hpp"
 #include "io/density_choice.hpp"
 #include "io/formatted.hpp"
+#include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
 #include "scene/boundary_types.hpp"
 #include "scene/json_check.hpp"
@@ -264,6 +265,21 @@ void warnShapeScales(Scene<Dim>& s) {
         check(s.bodies[i], "bodies[" + std::to_string(i) + "]");
     for (std::size_t i = 0; i < s.walls.size(); ++i)
         check(s.walls[i], "walls[" + std::to_string(i) + "]");
+}
+
+/// Warns of nozzles that a body or wall cuts: they inject across their open part only.
+template <int Dim>
+void warnCutNozzles(Scene<Dim>& s) {
+    for (std::size_t i = 0; i < s.emitters.size(); ++i) {
+        const Nozzle<Dim> nozzle = openNozzle(s, i);
+        if (nozzle.cut == 0) continue;
+        s.warnings.push_back(s.file + ": emitters[" + std::to_string(i) +
+                             "]: " + std::to_string(nozzle.cut) + " of " +
+                             std::to_string(nozzle.cut + nozzle.open.size()) +
+                             " nozzle points are in or within half a spacing of " + nozzle.cutBy +
+                             ": they are left out, so the nozzle injects across its open part "
+                             "only");
+    }
 }
 
 /// "dimension" must be this app's: a 3D scene is run with fluid_sim_3d.
@@ -549,6 +565,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     if (root.has("physics")) readPhysics(root["physics"], s);
     warnShapeScales(s);
     checkSceneGeometry(s);
+    warnCutNozzles(s);
     warnSidewaysOpenSides(s);
     return s;
 }

@@ -132,3 +132,16 @@ TEST(BadGeometry, CudaBackendRefusesWallsAndGeneralShapes) {
     expectMessage(runScene("cuda_shape", k, "--quiet --backend cuda"),
                   {"--backend cuda", "bodies[0].shape", "a shape other than a box or a ball"});
 }
+
+TEST(BadGeometry, EmitterNozzleInsideAWall) {
+    // The nozzle's only point (radius = half a spacing) lies inside the wall.
+    json j = tiny2d();
+    j["walls"] = json::array({polygon({{0.145, 0.13}, {0.2, 0.13}, {0.2, 0.19}, {0.145, 0.19}})});
+    j["emitters"] = json::array({{{"position", {0.17, 0.16}},
+                                  {"direction", {0, -1}},
+                                  {"speed", 1},
+                                  {"radius", 0.01},
+                                  {"material", "water"}}});
+    expectMessage(runScene("nozzle_in_wall", j),
+                  {"emitters[0].position", "in or next to walls[0]", "move the nozzle"});
+}

@@ -5,6 +5,7 @@
 #include <random>
 
 #include "io/emitters.hpp"
+#include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
 
 using namespace num;
@@ -103,4 +104,37 @@ TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
     EXPECT_EQ(emitters.emit(storage, 2.2 * dx, occupied), 2u);
     EXPECT_EQ(emitters.layers()[0], 3u);
     EXPECT_EQ(emitters.emitted(), 4u);
+}
+
+TEST(Emitters, NozzleAgainstAWallInjectsAcrossItsOpenPart) {
+    // A wall (a polygon from x = 0.145 on) takes the two right-hand points of a nozzle whose
+    // four points lie at x = 0.11, 0.13, 0.15, 0.17: the scene warns once, and each layer is
+    // the two open points; they are not counted as left out for water.
+    SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    doc.set(R"(walls=[{"shape": "polygon",
+                       "points": [[0.145, 0.13], [0.2, 0.13], [0.2, 0.19], [0.145, 0.19]]}])");
+    doc.set(R"(emitters=[{"position": [0.14, 0.16], "direction": [0, -1], "speed": 1,
+                          "radius": 0.04, "material": "water"}])");
+    const Scene<2> scene = readScene<2>(doc);
+    ASSERT_EQ(scene.warnings.size(), 1u);
+    EXPECT_NE(scene.warnings[0].find("emitters[0]: 2 of 4 nozzle points are in or within half a "
+                                     "spacing of walls[0]"),
+              std::string::npos)
+        << scene.warnings[0];
+    const Nozzle<2> nozzle = openNozzle(scene, 0);
+    EXPECT_EQ(nozzle.open.size(), 2u);
+    EXPECT_EQ(nozzle.cut, 2u);
+    SceneSetup<2> setup = makeSceneSetup<2>(scene, 1);
+    sph::Storage<2> storage = makeInitialStorage<2>(scene, setup);
+    const std::size_t initial = storage.size();
+    Emitters<2> emitters(scene, setup);
+    auto nothingThere = [](const std::vector<sph::Vector<2>>& points) {
+        return std::vector<char>(points.size(), 0);
+    };
+    EXPECT_EQ(emitters.emit(storage, 0.0, nothingThere), 2u);
+    EXPECT_EQ(emitters.emit(storage, 1.0 * scene.spacing, nothingThere), 2u);
+    EXPECT_EQ(emitters.blocked(), 0u);
+    const auto x = storage.getValue<sph::Vector<2>>(sph::QuantityId::POSITION);
+    for (std::size_t e = initial; e < storage.size(); ++e)
+        EXPECT_LT(x[e][0], 0.145 - 0.5 * scene.spacing) << "particle " << e;
 }

@@ -17,6 +17,7 @@
 #include "plugin/elf_check.hpp"
 #include "plugin/plugin_term.hpp"
 #include "plugin/plugin_writer.hpp"
+#include "scene/file_hash.hpp"
 #include "scene/json_check.hpp"
 
 namespace num::io {
@@ -119,19 +120,6 @@ class HostRegistry final : public plugin::Registry {
     Library& lib_;
     WriterRegistry& writers_;
 };
-
-std::string fileHash(const std::string& path) {
-    // FNV-1a (64 bit): tells a rebuilt library from the one a checkpoint was written with.
-    std::ifstream in(path, std::ios::binary);
-    std::uint64_t h = 1469598103934665603ull;
-    char buf[65536];
-    while (in.read(buf, sizeof buf) || in.gcount() > 0) {
-        for (std::streamsize k = 0; k < in.gcount(); ++k)
-            h = (h ^ (unsigned char)buf[k]) * 1099511628211ull;
-        if (!in) break;
-    }
-    return formatted("%016llx", (unsigned long long)h);
-}
 
 std::string absoluteLibrary(const std::string& library, const std::string& sceneFile) {
     fs::path p(library);

@@ -1,10 +1,12 @@
 // The fingerprint of a run (internal to numerics_io): everything that shapes its particle set and
-// its equations, as "key = value" lines. A checkpoint stores it; a restart whose fingerprint
-// differs is refused, naming what differs. What may change on restart is left out: the end time,
-// the output settings, the threads and the backend, and the engine settings that change no
-// result (the neighbour lists' skin), also where a checkpoint of an older version lists them.
+// its equations, as "key = value" lines (the content of the mesh files its shapes read too). A
+// checkpoint stores it; a restart whose fingerprint differs is refused, naming what differs. What
+// may change on restart is left out: the end time, the output settings, the threads and the
+// backend, and the engine settings that change no result (the neighbour lists' skin), also where a
+// checkpoint of an older version lists them.
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -14,6 +16,7 @@
 #include "io/errors.hpp"
 #include "io/scene_loader.hpp"
 #include "io/scene_setup.hpp"
+#include "scene/file_hash.hpp"
 
 namespace num::io {
 
@@ -47,6 +50,24 @@ inline void flattenScene(const nlohmann::json& v, const std::string& path,
     }
 }
 
+/// One line per mesh file a shape reads ("mesh", "section"; names relative to `sceneDir`):
+/// "walls[0].file content (FNV-1a) = ...", so that a restart notices an edited mesh.
+inline void hashShapeFiles(const nlohmann::json& v, const std::string& path,
+                           const std::string& sceneDir, std::map<std::string, std::string>& out) {
+    if (v.is_object()) {
+        const auto shape = v.find("shape"), file = v.find("file");
+        if (shape != v.end() && file != v.end() && file->is_string() &&
+            (*shape == "mesh" || *shape == "section"))
+            out[path + ".file content (FNV-1a)"] =
+                fileHash((std::filesystem::path(sceneDir) / file->get<std::string>()).string());
+        for (const auto& [key, value] : v.items())
+            hashShapeFiles(value, path.empty() ? key : path + "." + key, sceneDir, out);
+    } else if (v.is_array()) {
+        for (std::size_t i = 0; i < v.size(); ++i)
+            hashShapeFiles(v[i], path + "[" + std::to_string(i) + "]", sceneDir, out);
+    }
+}
+
 inline std::map<std::string, std::string> parseFingerprint(const std::string& text) {
     std::map<std::string, std::string> lines;
     std::istringstream in(text);
@@ -65,6 +86,8 @@ std::string runFingerprint(const SceneDocument& doc, const SceneSetup<Dim>& setu
                            const sph::Storage<Dim>& initial) {
     std::map<std::string, std::string> lines;
     detail::flattenScene(doc.json(), "", lines);
+    detail::hashShapeFiles(doc.json(), "", std::filesystem::path(doc.file()).parent_path().string(),
+                           lines);
     for (const auto& [key, spec] : setup.settings.specs()) {
         if (detail::changesNoResult("engine setting " + key)) continue;
         // Every setting is one of bool, integer, number, string: print whichever it holds.

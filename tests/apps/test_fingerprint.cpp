@@ -4,6 +4,8 @@
 // neighbour lists' skin) may differ or be absent.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "scene/fingerprint.hpp"
@@ -56,4 +58,32 @@ TEST(Fingerprint, TheNeighbourSkinMayDifferOrBeAbsent) {
     EXPECT_EQ(refusal(older, kQuantities + kScene), "");
     EXPECT_NE(refusal(older + "engine setting cfl = 0.2\n", kQuantities + kScene), "")
         << "a setting results depend on is still compared";
+}
+
+TEST(Fingerprint, AnEditedMeshFileIsNamed) {
+    // A wall read from a mesh file: the fingerprint holds the file's content hash, so a restart
+    // after the file was edited is refused naming the shape's key.
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "fingerprint_mesh";
+    std::filesystem::create_directories(dir);
+    auto write = [&](const std::string& text) { std::ofstream(dir / "cup.stl") << text; };
+    const nlohmann::json scene = nlohmann::json::parse(
+        R"({"walls": [{"shape": "difference", "shapes": [{"shape": "box", "min": [0, 0, 0],
+            "max": [1, 1, 1]}, {"shape": "mesh", "file": "cup.stl", "scale": 0.001}]}]})");
+    auto fingerprint = [&] {
+        std::map<std::string, std::string> lines;
+        detail::hashShapeFiles(scene, "", dir.string(), lines);
+        std::string text;
+        for (const auto& [key, value] : lines) text += key + " = " + value + "\n";
+        return text;
+    };
+    write("solid cup\nendsolid cup\n");
+    const std::string before = fingerprint();
+    EXPECT_NE(before.find("walls[0].shapes[1].file content (FNV-1a) = "), std::string::npos)
+        << before;
+    EXPECT_EQ(refusal(kQuantities + before, kQuantities + fingerprint()), "");
+    write("solid cup\n\nendsolid cup\n");
+    const std::string message = refusal(kQuantities + before, kQuantities + fingerprint());
+    EXPECT_NE(message.find("walls[0].shapes[1].file content (FNV-1a) is "), std::string::npos)
+        << message;
+    std::filesystem::remove_all(dir);
 }

@@ -59,6 +59,9 @@ RenderSettings<Dim> renderSettings(const Scene<Dim>& scene, const SceneSetup<Dim
         for (int h = 0; h < 2; ++h)
             if (const auto held = scene.sides[k][h]->heldTemperature())
                 lo = std::min(lo, *held), hi = std::max(hi, *held);
+    for (const auto& w : scene.walls)
+        if (const auto held = w.boundary->heldTemperature())
+            lo = std::min(lo, *held), hi = std::max(hi, *held);
     for (const auto& e : scene.emitters)
         lo = std::min(lo, e.temperature), hi = std::max(hi, e.temperature);
     if (!(hi > lo)) lo = (lo < 1e299 ? lo : 20) - 1, hi = lo + 2;

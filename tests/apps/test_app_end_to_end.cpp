@@ -181,3 +181,17 @@ TEST(Apps, EveryShippedSceneStarts) {
     }
     EXPECT_GE(count, 5);
 }
+
+TEST(Apps, HeldWallTemperaturesAreInTheColourRange) {
+    // The tiny scene's water is 20 to 30 C, its body 60 C and its x_max side held at 10 C; an
+    // interior wall held at 90 C widens the default colour range of the pictures and of the
+    // ParaView script to [10, 90].
+    nlohmann::json j = nlohmann::json::parse(readFile(scene("tiny_2d.json")));
+    j["walls"] = nlohmann::json::parse(R"([{"shape": "polygon",
+        "points": [[0.12, 0.14], [0.18, 0.14], [0.18, 0.18]], "thermal": {"temperature": 90}}])");
+    const std::string dir = freshDir("wall_colour_range");
+    writeFile(dir + "/scene.json", j.dump());
+    ASSERT_EQ(run(FLUID_SIM, "scene.json --quiet --out out --end-time 0.002", dir).code, 0);
+    const std::string script = readFile(dir + "/out/particles_paraview.py");
+    EXPECT_TRUE(contains(script, "temperature_range = [10, 90]")) << script.substr(0, 600);
+}

@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 """Checks of the readings validation/cases.py takes from the apps' particle files (run by ctest as
 validation.readings; needs Debian's python3-numpy only)."""
+import json
 import os
 import sys
+import tempfile
 import unittest
 
 import numpy as np
@@ -69,6 +71,34 @@ class SurgeFront(unittest.TestCase):
 
     def test_without_a_gap_is_the_farthest_particle(self):
         self.assertAlmostEqual(cases.surge_front([0.3, 0.1, 0.2], 0.15, 0.1), 0.35, places=12)
+
+
+class CylinderDrag(unittest.TestCase):
+    def test_adds_the_force_of_the_pressure_that_the_body_force_replaces(self):
+        # A steady run: F_x = 10 N/m, the channel's profile u = 6 U y (H - y) / H^2 with U = 0.2;
+        # the scene's body force g = 0.056 and cylinder D = 0.1 add rho g pi D^2 / 4 = 0.4398 N/m.
+        with tempfile.TemporaryDirectory() as out:
+            with open(os.path.join(cases.SCENES, "cylinder_re20.json")) as f:
+                scene = json.load(f)
+            probes = [p for p in scene["probes"] if p["name"].startswith("u")]
+            names = ["time", "cylinder.force_x", "cylinder.force_y"]
+            names += [p["name"] + ".v" + c for p in probes for c in "xy"]
+            rows = []
+            for t in np.arange(0, 10.001, 0.5):
+                row = [t, 10.0, 0.0]
+                for p in probes:
+                    y = p["point"][1]
+                    row += [6 * 0.2 * y * (0.41 - y) / 0.41**2, 0.0]
+                rows.append(",".join(f"{v:.17g}" for v in row))
+            with open(os.path.join(out, "probes.csv"), "w") as f:
+                f.write(",".join(names) + "\n" + "\n".join(rows) + "\n")
+            run = cases.Run(scene, out, {"final_time": 10.0}, "", 0)
+            checks, notes, _ = cases.cylinder_drag(run)
+        F = 10.0 + 1000 * 0.056 * np.pi * 0.1**2 / 4
+        cd = 2 * F / (1000 * 0.2**2 * 0.1)
+        self.assertAlmostEqual(checks[0]["value"], abs(cd - 5.5795) / 5.5795, places=10)
+        self.assertAlmostEqual(checks[1]["value"], 0.0, places=10)
+        self.assertIn("+ 0.4398 N/m", notes)
 
 
 if __name__ == "__main__":

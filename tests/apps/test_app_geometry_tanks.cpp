@@ -1,14 +1,18 @@
 // Hydrostatic tanks whose walls are shapes inside the domain, through the apps (scenes in
 // tests/apps/scenes/): a 2D tank with slanted sides (a polygon), a 3D tank in a box turned by
-// 30 degrees and one in a cylinder. Water starts at rest in hydrostatic equilibrium; at the end
+// 30 degrees and one in a cylinder. Water starts at rest in hydrostatic equilibrium; after 5 s
 // the pressure at probes in the water, away from the walls, must be within 1 % of
-// rho g (H - z), measured as the hydrostatic tank validation cases measure it (the error over
-// rho g H, validation/cases.py "hydrostatic"), and no fluid particle may be outside the tank
-// (the analytic inside of its walls, written here independently of the shapes library) or lost.
-// Each runs the 5 s (the 3D tanks about a minute of CPU each). Measured (spacing 0.05 m
-// in 2D, 0.04 m in 3D; error over rho g H at the probes, bottom to top): polygon +0.59, +0.35,
-// +0.19 %; turned box +0.68, +0.57, +0.61 %; cylinder -0.31, -0.78, -0.90 % (at 1 s the
-// cylinder is still at -0.43, -0.97, -1.11 %: its water settles for a few seconds).
+// rho g (H - z), and no fluid particle may be outside the tank (the analytic inside of its
+// walls, written here independently of the shapes library) or lost. The 2D tank (16 particles
+// deep) meets the 1 % against the local rho g (H - z) at every probe. The 3D tanks run here at
+// 10 particles deep (spacing 0.04 m, about a minute of CPU each), where the upper probe, 2.5
+// spacings under the surface, misses it (turned box +2.4 %, cylinder -3.6 %), so they are held
+// to 1 % of rho g H, as the hydrostatic tank validation cases measure (validation/cases.py
+// "hydrostatic"); at 20 particles deep (spacing 0.02 m, 27 min each on one core, not run here)
+// both meet 1 % of the local pressure at every probe. Measured (error over the local
+// rho g (H - z) at the probes, bottom to top): polygon at 0.05 m +0.67, +0.70, +0.76 %; turned
+// box at 0.04 m +0.85, +1.14, +2.4 %, at 0.02 m +0.56, +0.62, +0.87 %; cylinder at 0.04 m
+// -0.39, -1.6, -3.6 %, at 0.02 m +0.55, +0.61, +0.85 % (2026-12-05).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,6 +36,7 @@ struct Tank {
     double depth;                                        ///< H: the water's depth [m]
     std::vector<std::pair<std::string, double>> probes;  ///< name, height
     std::function<bool(double, double, double)> inside;  ///< the tank's inside at (x, y, z)
+    bool localGate = false;  ///< 1 % of rho g (H - z) at each probe, else 1 % of rho g H
 };
 
 /// The last particles_NNNN.csv of a run's output folder.
@@ -55,11 +60,12 @@ void checkTank(const Tank& tank) {
     const Table probes = readCsv(dir + "/out/probes.csv");
     for (const auto& [name, height] : tank.probes) {
         const double p = probes.at(name + ".pressure").back(),
-                     exact = kRhoG * (tank.surface - height), scale = kRhoG * tank.depth;
+                     exact = kRhoG * (tank.surface - height),
+                     scale = tank.localGate ? exact : kRhoG * tank.depth;
         EXPECT_LE(std::abs(p - exact), 0.01 * scale)
             << tank.scene << ": probe " << name << " at height " << height << ": p = " << p
             << " Pa, rho g (H - z) = " << exact << " Pa, off by " << 100 * (p - exact) / scale
-            << " % of rho g H";
+            << " % of " << (tank.localGate ? "rho g (H - z)" : "rho g H");
     }
     const Table first = readCsv(dir + "/out/particles_0000.csv");
     const Table last = readCsv(lastParticles(dir + "/out"));
@@ -79,6 +85,7 @@ TEST(GeometryTanks, SlantedPolygonTank2d) {
     const double slope = 0.2 / 1.05;
     Tank t{"tank_polygon_2d", false, 5.0, 1.05, 0.8, {{"bottom", 0.35}, {"middle", 0.65}}, {}};
     t.probes.push_back({"upper", 0.85});
+    t.localGate = true;
     t.inside = [slope](double x, double y, double) {
         const double rise = y - 0.25;
         return rise >= 0 && x >= 0.45 - slope * rise && x <= 1.05 + slope * rise;

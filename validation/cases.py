@@ -69,12 +69,15 @@ def run_app(case, spacing, bin_dir, threads, sets=()):
     if spacing is not None:
         all_sets.append(f"particles.spacing={spacing:.10g}")
         scene["particles"]["spacing"] = spacing
-    for s in case.get("sets", ()):
+    for s in all_sets:  # the scene as run, for the readings
         key, value = s.split("=", 1)
         node, parts = scene, key.split(".")
         for p in parts[:-1]:
             node = node[int(p)] if isinstance(node, list) else node[p]
-        node[parts[-1]] = json.loads(value)
+        try:
+            node[parts[-1]] = json.loads(value)
+        except ValueError:  # a plain word, as the app takes it
+            node[parts[-1]] = value
     out = tempfile.mkdtemp(prefix=f"val_{case['name']}_")
     cmd = [exe, scene_path, "--out", out, "--threads", str(threads), "-q"]
     for s in all_sets:
@@ -582,19 +585,22 @@ SCHAEFER_TUREK_CD = 5.5795
 
 
 def channel_mean_velocity(pr, names, ys, height):
-    """The mean velocity of a channel flow from the probes `names` at heights `ys` across one
-    section: the least-squares u = a y (H - y), whose mean is a H^2 / 6, one value per row."""
-    basis = np.asarray(ys) * (height - np.asarray(ys))
-    u = np.array([pr[n] for n in names])
-    return (basis @ u) / (basis @ basis) * height**2 / 6
+    """The mean velocity of a channel flow, its flux over its height, from the probes `names` at
+    heights `ys` across one section: the trapezoidal rule over the probes and the no-slip walls
+    (u = 0 at y = 0 and y = height), one value per row. The flux is the same at every section,
+    whatever the profile there (the wake of a body has not recovered to a parabola 5 D on)."""
+    y = np.concatenate([[0.0], np.asarray(ys, dtype=float), [height]])
+    u = np.array([np.zeros_like(pr[names[0]])] + [pr[n] for n in names] +
+                 [np.zeros_like(pr[names[0]])])
+    return np.trapz(u, y, axis=0) / height
 
 
 def cylinder_drag(run):
     """Drag coefficient c_D = 2 F / (rho U^2 D) of the cylinder (probe "cylinder") in a channel
     periodic along x, driven by a body force g, against Schaefer & Turek's 2D-1 at Re = 20: U is
-    the mean velocity through the section half a period from the cylinder (the "u<k>" probes), F
-    and U their means over the last 2 s. F is the force the benchmark's pressure-driven flow
-    exerts: with p* = p - rho g x the momentum equation rho Du/Dt = -grad p + mu lap u + rho g
+    the mean velocity (the flux over the height) through the section half a period from the
+    cylinder (the "u<k>" probes, across the whole height), F and U their means over the last 2 s.
+    F is the force the benchmark's pressure-driven flow exerts: with p* = p - rho g x the momentum equation rho Du/Dt = -grad p + mu lap u + rho g
     becomes rho Du/Dt = -grad p* + mu lap u, the same flow driven by a pressure falling along the
     channel, and the force of p* on the cylinder is that of p plus rho g V (the divergence theorem
     over the cylinder's area V = pi D^2 / 4): F = F_x + rho g V."""
@@ -907,25 +913,36 @@ case("heat_slabs_k2_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0
 _MEASURED = "Measured 2026-12-05 on 2 CPU cores shared with other work (wall times are not comparable)"
 case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.02], (0.04, None), issue=48,
      note=_MEASURED)
-# c_D at D / dx = 10 (the CI spacing) misses the gate: 0.141 (2026-12-05) -> regression bound
-# 0.21 (times 1.5); Re is held to the gate.
-CYLINDER_CI_BOUND = 0.21
+# c_D at D / dx = 10 (the CI spacing) misses the gate: 0.193 (2026-12-05) -> regression bound
+# 0.29 (times 1.5); Re is held to the gate.
+CYLINDER_CI_BOUND = 0.29
 CYLINDER_NOTE = (
     "The set-up differs from the benchmark's in one way: the channel is periodic along x, 1 m (10 D) "
-    "long, and driven by a body force (gravity along x, g = 0.056 m/s^2, set so that U comes to about "
-    "0.2 m/s), where Schaefer & Turek give a parabolic inflow 0.15 m upstream and a free outflow 2 m "
+    "long, and driven by a body force (gravity along x, g = 0.052 m/s^2, set so that U comes to 0.2 "
+    "m/s), where Schaefer & Turek give a parabolic inflow 0.15 m upstream and a free outflow 2 m "
     "downstream (the app has no inflow boundary). The body force stands in for the pressure that "
     "falls along the benchmark's channel: with p* = p - rho g x the flow is the same flow driven by "
-    "p*, whose force on the cylinder is that of p plus rho g V (V = pi D^2 / 4; 0.44 N/m, 4 % of the "
-    "drag), and that sum is F. Without it c_D reads 4.575, 5.094 and 5.196 at D / dx = 10, 20 and "
-    "40, 7 to 18 % low. The blockage, D / H = 0.244, and the cylinder's height in the channel are the "
-    "benchmark's, so its c_D is compared as it is, without a blockage correction; Dennis & Chang's "
-    "(1970) 2.05 is for an unbounded flow at the same Re, and the walls 1.5 D from the cylinder raise "
-    "the drag to 5.58. U is read half a period from the cylinder, where the wake has recovered to a "
-    "parabola; the same body force gives Re 20.1 to 20.5 as the spacing changes. c_D converges from "
-    "below, at about second order from D / dx = 10 to 40 (the gaps 0.52 and 0.10). " + _MEASURED)
-case("cylinder_re20", "cylinder_re20.json", cylinder_drag, 0.0025, [0.01, 0.005, 0.0025],
-     (0.01, [CYLINDER_CI_BOUND, None]), issue=48, note=CYLINDER_NOTE)
+    "p*, whose force on the cylinder is that of p plus rho g V (V = pi D^2 / 4; 0.41 N/m, 4 % of the "
+    "drag), and that sum is F. U is the mean velocity, the flux over the height through the section "
+    "half a period from the cylinder (41 probes across it): the wake has not recovered there (the "
+    "profile has two maxima and a dip behind the cylinder), so the flow that meets the next "
+    "cylinder is not the benchmark's parabola. The blockage, D / H = 0.244, and the cylinder's "
+    "height in the channel are the benchmark's, so its c_D is compared as it is, without a blockage "
+    "correction; Dennis & Chang's (1970) 2.05 is for an unbounded flow at the same Re, and the walls "
+    "1.5 D from the cylinder raise the drag to 5.58. " + _MEASURED)
+CYLINDER_MISS = (
+    "c_D is low and comes closer to the benchmark as the particles get finer: 19 % low at "
+    "D / dx = 10, 12 % at D / dx = 20 (the table below; D / dx = 40 is some 1.5 h on 2 cores, not run "
+    "with this body force). What sets most of the error is the kernel's width against the diameter: "
+    "at D / dx = 10 with h = 1.2 dx instead of the default 1.5 dx (particles.h_over_spacing) c_D is "
+    "4.993 (Re 20.08), 10.5 % low. The unrecovered wake accounts for about 2 %: the same run at "
+    "D / dx = 10 in a channel 3 m long (g = 0.027 m/s^2, Re 20.02) gives 4.598 against 4.504. "
+    "Another code on the same set-up (the channel, lattice, cylinder, body force, initial profile "
+    "and measure of c_D and U; validation/pysph_cylinder_re20.py): PySPH's transport-velocity "
+    "scheme (TVFScheme, quintic spline, h = 1.2 dx, Debian's python3-pysph 1.0b1) gives 5.255 at "
+    "D / dx = 10 (Re 20.07), 5.8 % low, nearer the benchmark than this app at h = 1.2 dx")
+case("cylinder_re20", "cylinder_re20.json", cylinder_drag, 0.005, [0.01, 0.005],
+     (0.01, [CYLINDER_CI_BOUND, None]), issue=48, note=CYLINDER_NOTE, miss_note=CYLINDER_MISS)
 OBSTACLE_NOTE = (
     "The box is a triangle mesh (scenes/meshes/obstacle.stl, 12 triangles, moved into place by the "
     "scene's translate): the same particles, and the same heights to every digit at spacing 0.1, as "

@@ -40,7 +40,8 @@ class Run:
         self.scene, self.out, self.summary = scene, out, summary
         self.command, self.exit_code = command, exit_code
         self.spacing = scene["particles"]["spacing"]
-        files = sorted(f for f in os.listdir(out) if f.endswith(".csv") and f != "probes.csv")
+        files = sorted(f for f in os.listdir(out)
+                       if f.endswith(".csv") and f not in ("probes.csv", "bodies.csv"))
         every, final = scene["output"].get("every", 0.05), summary["final_time"]
         self.frames = [(min(k * every, final), os.path.join(out, f)) for k, f in enumerate(files)]
 
@@ -51,6 +52,12 @@ class Run:
 
     def time(self, k=-1):
         return self.frames[k][0]
+
+    def bodies(self):
+        """bodies.csv (the moving bodies over time) as a dict of columns."""
+        path = os.path.join(self.out, "bodies.csv")
+        data = np.genfromtxt(path, delimiter=",", names=True, dtype=None, encoding="utf-8")
+        return {n: np.atleast_1d(data[n]) for n in data.dtype.names}
 
     def probes(self):
         path = os.path.join(self.out, "probes.csv")
@@ -637,6 +644,106 @@ def water_height(p, x0, y0, radius):
     q = np.hypot(p["x"] - x0, p["y"] - y0) / radius
     w = np.where(q < 1, 7 / (math.pi * radius**2) * (1 - q)**4 * (1 + 4 * q), 0.0)
     return float(np.sum(p["mass"] / p["density"] * w))
+
+
+def floating_draft(run):
+    """A free box lighter than water at its Archimedes draft d = (rho_b / rho_w) H: the mean
+    height of its centre after the first 0.5 s (it bobs about its rest), with the still water
+    level L from the water's area A and the box's displacement, L W = A + B d_m, so that
+    d_m = (A / W - y_bottom) / (1 - B / W); and upright (its angle)."""
+    body, fluid = run.scene["bodies"][0], run.scene["fluids"][0]
+    rho_w = next(iter(run.scene["materials"].values()))["density"]
+    B, H = (body["max"][0] - body["min"][0]), (body["max"][1] - body["min"][1])
+    W = run.scene["domain"]["max"][0] - run.scene["domain"]["min"][0]
+    d = body["motion"]["density"] / rho_w * H
+    area = run.summary["fluid_particles"] * run.spacing**2
+    b = run.bodies()
+    late = b["time"] >= 0.5
+    bottom = float(b["y"][late].mean()) - H / 2
+    d_m = (area / W - bottom) / (1 - B / W)
+    rest = area / W + B * d / W - d + H / 2  # the centre's height at rest
+    profile = {"xlabel": "t [s]", "ylabel": "y of the box's centre [m]", "series": [
+        {"label": "app: the box's centre", "x": b["time"].tolist(), "y": b["y"].tolist(), "style": "line"},
+        {"label": "at the Archimedes draft", "x": [0.0, float(b["time"][-1])], "y": [rest, rest], "style": "line"}]}
+    checks = [{"metric": "|d - d_Archimedes| / d_Archimedes (mean after 0.5 s)", "value": abs(d_m - d) / d, "gate": 0.05},
+              {"metric": "largest |angle| [rad]", "value": float(np.abs(b["angle"]).max()), "gate": 0.05}]
+    return checks, f"draft {d_m:.4g} m against {d:.4g} m", profile
+
+
+def biesel_height_over_stroke(period, depth, g=9.81):
+    """Linear piston wave-maker theory (Biesel & Suquet 1951; Dean & Dalrymple 1991, eq. 6.9):
+    H / S = 2 (cosh 2kd - 1) / (sinh 2kd + 2kd), k from omega^2 = g k tanh(kd)."""
+    omega = 2 * math.pi / period
+    k = omega**2 / g
+    for _ in range(50):  # Newton on f(k) = g k tanh(kd) - omega^2
+        f = g * k * math.tanh(k * depth) - omega**2
+        df = g * math.tanh(k * depth) + g * k * depth / math.cosh(k * depth)**2
+        k -= f / df
+    kd2 = 2 * k * depth
+    return 2 * (math.cosh(kd2) - 1) / (math.sinh(kd2) + kd2), k
+
+
+PISTON = {"stroke": 0.04, "period": 1.0, "depth": 0.4, "probe_x": 1.5, "window": (3.0, 5.0)}
+
+
+def piston_waves(run):
+    """Wave height H at x = 1.5 m (the water's depth there from the fluid particles' volumes in a
+    strip two spacings wide, minus the still depth), crest to trough in each period of the
+    window 3-5 s (after the front has passed, before the reflection from the far wall returns),
+    against Biesel's H = S (H / S)."""
+    P = PISTON
+    ratio, k = biesel_height_over_stroke(P["period"], P["depth"])
+    ts, eta = [], []
+    for i in range(len(run.frames)):
+        t = run.time(i)
+        if t < P["window"][0] - 1e-9 or t > P["window"][1] + 1e-9:
+            continue
+        p = run.particles(i)
+        fluid = p["kind"] == 0
+        strip = fluid & (np.abs(p["x"] - P["probe_x"]) < 2 * run.spacing)
+        depth = float(np.sum(p["mass"][strip] / p["density"][strip])) / (4 * run.spacing)
+        ts.append(t), eta.append(depth - P["depth"])
+    ts, eta = np.array(ts), np.array(eta)
+    heights = []
+    start = P["window"][0]
+    while start + P["period"] <= P["window"][1] + 1e-9:
+        w = (ts >= start - 1e-9) & (ts < start + P["period"] - 1e-9)
+        heights.append(float(eta[w].max() - eta[w].min()))
+        start += P["period"]
+    H, ref = float(np.mean(heights)), ratio * P["stroke"]
+    profile = {"xlabel": "t [s]", "ylabel": "eta at x = 1.5 m [m]", "series": [
+        {"label": "app: surface elevation", "x": ts.tolist(), "y": eta.tolist(), "style": "line"},
+        {"label": "Biesel: +-H/2", "x": [ts[0], ts[-1]], "y": [ref / 2, ref / 2], "style": "line"}]}
+    checks = [{"metric": "|H - H_Biesel| / H_Biesel (3-5 s)", "value": abs(H - ref) / ref, "gate": 0.05}]
+    return checks, f"H = {H:.4g} m against Biesel's {ref:.4g} m (kd = {k * P['depth']:.3g}, H/S = {ratio:.3f})", profile
+
+
+def body_heat(run, frame):
+    """sum m c T of the body particles and of the fluid in a particle frame [J]."""
+    p = run.particles(frame)
+    mats = list(run.scene["materials"].values())
+    c = np.array([m.get("heat_capacity", 4186) for m in mats])[p["material"].astype(int)]
+    heat = p["mass"] * c * p["temperature"]
+    return float(heat[p["kind"] == 2].sum()), float(heat[p["kind"] == 0].sum())
+
+
+def hot_ball(run):
+    """A hot conducting ball dropped into cold water: the heat it gives equals the heat the water
+    gains (sum m c T of its particles and of the fluid, first and last frames; adiabatic walls),
+    and, denser than water, it comes to rest on the floor (its centre one radius above it)."""
+    body_0, water_0 = body_heat(run, 0)
+    body_1, water_1 = body_heat(run, -1)
+    given, gained = body_0 - body_1, water_1 - water_0
+    b = run.bodies()
+    radius = run.scene["bodies"][0]["radius"]
+    z, speed = float(b["z"][-1]), float(np.sqrt(b["vx"][-1]**2 + b["vy"][-1]**2 + b["vz"][-1]**2))
+    profile = {"xlabel": "t [s]", "ylabel": "z of the ball's centre [m]", "series": [
+        {"label": "app: the ball's centre", "x": b["time"].tolist(), "y": b["z"].tolist(), "style": "line"},
+        {"label": "resting on the floor", "x": [0.0, float(b["time"][-1])], "y": [radius, radius], "style": "line"}]}
+    checks = [{"metric": "|heat gained by the water - heat given by the ball| / heat given", "value": abs(gained - given) / given, "gate": 0.01},
+              {"metric": "|z - r| / spacing at the end", "value": abs(z - radius) / run.spacing, "gate": 0.5},
+              {"metric": "the ball's speed at the end [m/s]", "value": speed, "gate": 0.02}]
+    return checks, f"ball gave {given:.5g} J, water gained {gained:.5g} J; ball at z = {z:.4g} m", profile
 
 
 # Kleefsman et al. (2005): the probes H2 and H4 (x, y) and the initial depth of the water.

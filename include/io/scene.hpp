@@ -104,6 +104,7 @@ struct BodyMotionSpec {
     SceneVec<spinDim> hingeAxis{};        ///< free, 3D: the hinge's axis (default z)
     std::vector<std::string> locked;      ///< free: x, y, (z), rotation (2D) or rx, ry, rz
     std::vector<SpringSpec<Dim>> springs;
+    double friction = 0.3;  ///< free: Coulomb coefficient of its contacts
 };
 
 template <int Dim>

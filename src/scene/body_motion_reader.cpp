@@ -89,7 +89,7 @@ void readLocked(const At& a, BodyMotionSpec<Dim>& m) {
 template <int Dim>
 void readFree(const At& a, BodyMotionSpec<Dim>& m) {
     a.object({"type", "density", "mass", "velocity", "angular_velocity", "center_of_mass",
-              "inertia", "locked", "hinge", "hinge_axis", "springs"});
+              "inertia", "locked", "hinge", "hinge_axis", "springs", "friction"});
     if (a.has("density") == a.has("mass"))
         a.fail("an object with one of \"density\" or \"mass\"",
                "a free body's mass: give its density [kg/m^3] or its mass [kg]");
@@ -100,6 +100,7 @@ void readFree(const At& a, BodyMotionSpec<Dim>& m) {
         for (int k = 0; k < Dim; ++k) m.velocity[k] = v[k];
     }
     if (a.has("angular_velocity")) m.angularVelocity = readSpin<Dim>(a["angular_velocity"], "");
+    m.friction = a.number("friction", m.friction, 0, 10);
     if (a.has("center_of_mass")) m.centerOfMass = readVec<Dim>(a["center_of_mass"], "m");
     if (a.has("inertia")) m.inertia = readInertia<Dim>(a["inertia"]);
     if (a.has("locked")) readLocked(a["locked"], m);

@@ -150,6 +150,7 @@ sph::MovingBody<Dim> freeBody(const Body<Dim>& b, double dx) {
         spec.inertia.empty() ? scaled(shape.inertia, density).shifted(m.mass, com - shape.centroid)
                              : givenInertia<Dim>(spec.inertia);
     holdDegrees(spec, m);
+    m.friction = spec.friction;
     body.initialPosition = spec.hinge.value_or(com);
     if (spec.hinge) {
         m.hinged = true, m.hingeAxis = spec.hingeAxis;

@@ -12,13 +12,16 @@
 // the body by one step (a staggered, explicit coupling, as in DualSPHysics' floating bodies,
 // Dominguez et al. 2022, sec. 3.4).
 // Contacts: a particle j of a free body closer than the spacing dx to a particle k of another
-// solid (a wall, the box's walls, another body) is pushed back by a damped spring (a linear
-// spring-dashpot, Cundall & Strack 1979):
-//   F_jk = max(0, k_n (dx - r) - c_n (v_j - v_k) . n) n,  n = (x_j - x_k) / r,
+// solid (a wall, the box's walls, another body) is pushed back by a damped spring and held by
+// Coulomb friction (a linear spring-dashpot, Cundall & Strack 1979):
+//   F_n = max(0, k_n (dx - r) - c_n (v_jk . n)),  n = (x_j - x_k) / r,  v_jk = v_j - v_k,
+//   F_jk = F_n n - min(mu F_n, c_n |v_t|) v_t / |v_t|,  v_t = v_jk - (v_jk . n) n,
 //   k_n = m_j (c0 / dx)^2 (a contact that lasts about ten steps), c_n = sqrt(k_n m_j)
-//   (damping ratio 1/2); on the body, F and its torque, as the fluid's.
+//   (damping ratio 1/2), mu the body's friction coefficient; on the body, F and its torque,
+//   as the fluid's.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -144,14 +147,19 @@ typename RigidBodyCoupling<Dim>::Vec RigidBodyCoupling<Dim>::contactForce(const 
     const auto v = s.template getDt<Vec>(QuantityId::POSITION);
     const Float m = s.template getValue<Float>(QuantityId::MASS)[j];
     const Float kn = m * (c0_ / dx_) * (c0_ / dx_), cn = std::sqrt(kn * m);
+    const Float mu = bodies_->bodies[body[j]].motion.friction;
     const auto otherSolid = [&](Size k) { return !isFluid(kind[k]) && body[k] != body[j]; };
     Vec f{};
     lists_->forEachNeighbourOf(j, otherSolid, [&](Size k, const Vec& dx, Float r2) {
         if (r2 >= dx_ * dx_ || r2 <= 0) return;
         const Float r = std::sqrt(r2);
-        const Vec n = dx / r;
-        const Float push = kn * (dx_ - r) - cn * dot(v[j] - v[k], n);
-        if (push > 0) f += n * push;
+        const Vec n = dx / r, vjk = v[j] - v[k];
+        const Float push = kn * (dx_ - r) - cn * dot(vjk, n);
+        if (!(push > 0)) return;
+        const Vec vt = vjk - n * dot(vjk, n);
+        const Float slide = norm(vt);
+        f += n * push;
+        if (slide > 0) f -= vt * (std::min(mu * push, cn * slide) / slide);
     });
     return f;
 }

@@ -45,6 +45,7 @@ struct BodyMotion {
     std::function<Vector<Dim>(Float)> velocity;      ///< prescribed V(t)
     std::function<Spin<Dim>(Float)> spin;            ///< prescribed omega(t)
     std::vector<BodySpring<Dim>> springs;
+    Float friction = 0.3;  ///< Coulomb coefficient of its contacts (body_coupling.hpp)
 
     bool moves() const { return type != MotionType::FIXED; }
 

@@ -1,0 +1,193 @@
+// Moving bodies through the apps (bodies[i].motion): bodies.csv, bitwise for any thread count,
+// restarts mid-motion, the refusals of bad motions (exit 5 or 6) and of bodies that leave the
+// domain (exit 9), and "fixed" equal to no motion.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app_runner.hpp"
+
+using namespace apptest;
+using json = nlohmann::json;
+
+namespace {
+
+constexpr int kScene = 5, kExpression = 6, kUnstable = 9;
+
+json sceneJson(int dim) {
+    return json::parse(
+        readFile(scene(dim == 2 ? "moving_bodies_2d.json" : "moving_bodies_3d.json")));
+}
+
+/// Runs the app of the scene's dimension on the scene text in a fresh folder.
+Result runText(const std::string& name, const json& j, const std::string& extra = "") {
+    const std::string dir = freshDir("bodies_" + name);
+    writeFile(dir + "/scene.json", j.dump());
+    const std::string app = j["dimension"] == 2 ? FLUID_SIM : FLUID_SIM_3D;
+    return run(app, "scene.json --quiet --out out " + extra, dir);
+}
+
+std::string outFile(const std::string& name, const std::string& file) {
+    return std::string(APP_TEST_WORK) + "/bodies_" + name + "/out/" + file;
+}
+
+std::vector<std::vector<std::string>> csvRows(const std::string& text) {
+    std::vector<std::vector<std::string>> rows;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> row;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) row.push_back(cell);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+void expectOneLine(const Result& r, int code, std::initializer_list<const char*> parts) {
+    EXPECT_EQ(r.code, code) << r.output;
+    for (const char* p : parts)
+        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+}
+
+}  // namespace
+
+// A row per moving body per output time; a prescribed body travels V t exactly and turns by
+// the integral of its angular velocity; the fixed body is not listed.
+TEST(MovingBodies, BodiesCsvHasARowPerMovingBodyPerOutput) {
+    const Result r = runText("csv", sceneJson(2));
+    ASSERT_EQ(r.code, 0) << r.output;
+    const auto rows = csvRows(readFile(outFile("csv", "bodies.csv")));
+    ASSERT_EQ(rows.size(), 1u + 2 * 5);  // header, t = 0, 0.01, ..., 0.04, two bodies
+    EXPECT_EQ(rows[0].front(), "time");
+    EXPECT_EQ(rows[0].back(), "heat");
+    EXPECT_EQ(rows[0].size(), 12u);
+    const auto& last = rows.back();
+    EXPECT_EQ(last[1], "paddle");
+    EXPECT_NEAR(std::stod(last[2]), 0.08 + 0.25 * 0.04, 1e-12);  // x = x0 + V t
+    EXPECT_NEAR(std::stod(last[6]), 0.25 * 0.04 * 0.04, 1e-12);  // angle = 0.5 t^2 / 2
+    EXPECT_EQ(rows[rows.size() - 2][1], "float");
+    EXPECT_NEAR(std::stod(rows[1][11]), 0.12 * 0.08 * 1000 * 500 * 60,
+                1e-3);  // sum m c T at t = 0 [J/m]
+}
+
+// The same bits with 1 and 2 threads, and from a restart mid-motion (2D and 3D).
+class MovingRestart : public ::testing::TestWithParam<int> {};
+
+TEST_P(MovingRestart, IsBitwiseForThreadsAndRestarts) {
+    const int dim = GetParam();
+    const std::string dir = freshDir("bodies_restart_" + std::to_string(dim));
+    writeFile(dir + "/scene.json", sceneJson(dim).dump());
+    const std::string app = dim == 2 ? FLUID_SIM : FLUID_SIM_3D;
+    const std::string common = "--quiet --backend omp ";
+    ASSERT_EQ(run(app, "scene.json " + common + "--threads 2 --out full", dir).code, 0);
+    ASSERT_EQ(run(app, "scene.json " + common + "--threads 1 --out one", dir).code, 0);
+    const Result first = run(
+        app,
+        "scene.json " + common + "--threads 2 --out part --end-time 0.02 --checkpoint-every 0.02",
+        dir);
+    ASSERT_EQ(first.code, 0) << first.output;
+    const std::string end = dim == 2 ? "0.04" : "0.03";
+    const Result resumed = run(
+        app,
+        common + "--threads 2 --out part --end-time " + end + " --restart part/checkpoint_0001.chk",
+        dir);
+    ASSERT_EQ(resumed.code, 0) << resumed.output;
+    const std::string last = dim == 2 ? "particles_0004.vtu" : "particles_0003.vtu";
+    const std::string a = readFile(dir + "/full/" + last);
+    ASSERT_FALSE(a.empty());
+    EXPECT_TRUE(a == readFile(dir + "/one/" + last)) << "1 thread differs from 2";
+    EXPECT_TRUE(a == readFile(dir + "/part/" + last)) << "the restart differs";
+    EXPECT_EQ(readFile(dir + "/full/bodies.csv"), readFile(dir + "/part/bodies.csv"));
+    EXPECT_EQ(readFile(dir + "/full/bodies.csv"), readFile(dir + "/one/bodies.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Apps, MovingRestart, ::testing::Values(2, 3));
+
+// "fixed" is the default: the same bytes as a body without motion.
+TEST(MovingBodies, FixedIsTheBodyWithoutMotion) {
+    json j = json::parse(readFile(scene("tiny_2d.json")));
+    ASSERT_EQ(runText("plain", j).code, 0);
+    j["bodies"][0]["motion"] = "fixed";
+    ASSERT_EQ(runText("fixed_word", j).code, 0);
+    j["bodies"][0]["motion"] = {{"type", "fixed"}};
+    ASSERT_EQ(runText("fixed_object", j).code, 0);
+    const std::string plain = readFile(outFile("plain", "particles_0002.vtu"));
+    ASSERT_FALSE(plain.empty());
+    EXPECT_TRUE(plain == readFile(outFile("fixed_word", "particles_0002.vtu")));
+    EXPECT_TRUE(plain == readFile(outFile("fixed_object", "particles_0002.vtu")));
+    EXPECT_FALSE(std::filesystem::exists(outFile("plain", "bodies.csv")));
+}
+
+TEST(MovingBodies, BadMotionsAreRefusedByKey) {
+    json j = sceneJson(2);
+    j["bodies"][0]["motion"] = {{"type", "free"}, {"density", 0}};
+    expectOneLine(runText("zero_density", j), kScene, {"bodies[0].motion.density"});
+    j["bodies"][0]["motion"] = {{"type", "free"}, {"density", 500}, {"mass", 3}};
+    expectOneLine(runText("both", j), kScene, {"bodies[0].motion", "density", "mass"});
+    j["bodies"][0]["motion"] = {{"type", "free"}, {"mass", -1}};
+    expectOneLine(runText("negative_mass", j), kScene, {"bodies[0].motion.mass"});
+    j["bodies"][0]["motion"] = {{"type", "free"}, {"density", 500}, {"locked", {"x", "spin"}}};
+    expectOneLine(runText("locked", j), kScene, {"bodies[0].motion.locked[1]", "rotation"});
+    j["bodies"][0]["motion"] = {{"type", "free"}, {"density", 500}, {"inertia", 0}};
+    expectOneLine(runText("inertia", j), kScene, {"bodies[0].motion.inertia"});
+    j["bodies"][0]["motion"] = {{"type", "sliding"}};
+    expectOneLine(runText("type", j), kScene, {"bodies[0].motion.type", "prescribed"});
+    j["bodies"][0]["motion"] = {{"type", "prescribed"}, {"velocity", {"x", 0}}};
+    expectOneLine(runText("variable", j), kExpression, {"bodies[0].motion.velocity[0]", "x"});
+    // The float moved into the paddle.
+    j["bodies"][0]["motion"] = {{"type", "free"}, {"density", 500}};
+    j["bodies"][0]["min"] = {0.04, 0.16};
+    j["bodies"][0]["max"] = {0.16, 0.24};
+    expectOneLine(runText("overlap", j), kScene, {"bodies[0]", "starts inside bodies[1]"});
+}
+
+TEST(MovingBodies, AThreeDimensionalInertiaMustBePositiveDefinite) {
+    json j = sceneJson(3);
+    j["bodies"][0]["motion"]["inertia"] = {{1, 0.5, 0}, {0, 1, 0}, {0, 0, 1}};
+    expectOneLine(runText("inertia_3d", j), kScene, {"bodies[0].motion.inertia", "symmetric"});
+    j["bodies"][0]["motion"]["inertia"] = {1, 2};
+    expectOneLine(runText("inertia_3d_short", j), kScene, {"bodies[0].motion.inertia"});
+}
+
+// A prescribed body driven through the floor stops the run, naming it.
+TEST(MovingBodies, ABodyThatLeavesTheDomainStopsTheRun) {
+    json j = sceneJson(2);
+    j["bodies"][1]["motion"] = {{"type", "prescribed"}, {"velocity", {0, -2}}};
+    const Result r = runText("leaves", j);
+    EXPECT_EQ(r.code, kUnstable) << r.output;
+    EXPECT_TRUE(contains(r.output, "paddle left the domain")) << r.output;
+    EXPECT_TRUE(contains(r.output, "y_min")) << r.output;
+    EXPECT_TRUE(contains(r.output, "passed through the wall")) << r.output;
+}
+
+// The CUDA back end refuses moving bodies by name rather than running them fixed.
+TEST(MovingBodies, TheCudaBackEndRefusesThem) {
+    json j = sceneJson(2);
+    j["boundaries"]["y_max"] = {{"type", "wall"}};  // an open side is refused first
+    const Result r = runText("cuda", j, "--backend cuda");
+    expectOneLine(r, kScene, {"--backend cuda", "moving bodies"});
+}
+
+// A heavy box dropped on the floor comes to rest on it, within half a spacing (the contact
+// holds its particles one spacing from the wall's), and at rest.
+TEST(MovingBodies, AHeavyBodyComesToRestOnTheFloor) {
+    json j = sceneJson(2);
+    j["bodies"] = json::array({{{"name", "stone"},
+                                {"shape", "box"},
+                                {"min", {0.26, 0.04}},
+                                {"max", {0.34, 0.12}},
+                                {"motion", {{"type", "free"}, {"density", 3000}}}}});
+    j["time"]["end"] = 0.5;
+    j["output"]["every"] = 0.1;
+    ASSERT_EQ(runText("rest", j).code, 0);
+    const auto rows = csvRows(readFile(outFile("rest", "bodies.csv")));
+    const auto& last = rows.back();
+    const double y = std::stod(last[3]), speed = std::hypot(std::stod(last[4]), std::stod(last[5]));
+    EXPECT_NEAR(y, 0.04, 0.5 * 0.02) << "the centre half its height above the floor";
+    EXPECT_LT(speed, 0.02);
+}

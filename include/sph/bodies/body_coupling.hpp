@@ -16,9 +16,10 @@
 // Coulomb friction (a linear spring-dashpot, Cundall & Strack 1979):
 //   F_n = max(0, k_n (dx - r) - c_n (v_jk . n)),  n = (x_j - x_k) / r,  v_jk = v_j - v_k,
 //   F_jk = F_n n - min(mu F_n, c_n |v_t|) v_t / |v_t|,  v_t = v_jk - (v_jk . n) n,
-//   k_n = m_j (c0 / dx)^2 (a contact that lasts about ten steps), c_n = sqrt(k_n m_j)
-//   (damping ratio 1/2), mu the body's friction coefficient; on the body, F and its torque,
-//   as the fluid's.
+//   k_n = m (c0 / dx)^2, c_n = sqrt(k_n m) (damping ratio 1/2), m = M / N the body's mass over
+//   its particle count, so that the body on n contacts rings at sqrt(n / N) c0 / dx, within
+//   what a step of dt ~ 0.3 dx / c0 integrates; mu the body's friction coefficient. On the
+//   body, F and its torque, as the fluid's.
 #pragma once
 
 #include <algorithm>
@@ -84,6 +85,13 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
   private:
     void sumParticleForces(IScheduler& scheduler, const Storage<Dim>& s);
     Vec contactForce(const Storage<Dim>& s, Size j) const;
+    /// Each body's number of particles (they keep their particles for the whole run).
+    void countParticles(const Storage<Dim>& s) {
+        if (!particleCount_.empty()) return;
+        particleCount_.assign(bodies_->bodies.size(), 0);
+        for (int b : s.template getValue<int>(QuantityId::BODY_INDEX))
+            if (b >= 0) ++particleCount_[std::size_t(b)];
+    }
     void sumBodyLoads(const Storage<Dim>& s);
 
     std::shared_ptr<MovingBodies<Dim>> bodies_;
@@ -93,6 +101,7 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
     std::optional<RunKernel<Dim>> kernel_;
     const VerletList<Dim>* lists_ = nullptr;
     std::vector<Vec> particleForce_, particleContact_;
+    std::vector<std::size_t> particleCount_;
 };
 
 /// BODY_INDEX and BODY_OFFSET from the particles' places at t = 0 (a storage that has them, a
@@ -126,6 +135,7 @@ void RigidBodyCoupling<Dim>::sumParticleForces(IScheduler& scheduler, const Stor
     const formulas::BoundaryPairForce<Dim> pair(s, *kernel_, alpha_, c0_);
     particleForce_.assign(s.size(), Vec{});
     particleContact_.assign(s.size(), Vec{});
+    countParticles(s);
     const auto fluid = [&](Size f) { return isFluid(kind[f]); };
     scheduler.parallelFor(s.size(), 1024, [&](Size b, Size e) {
         for (Size j = b; j < e; ++j) {
@@ -145,9 +155,10 @@ typename RigidBodyCoupling<Dim>::Vec RigidBodyCoupling<Dim>::contactForce(const 
     const auto kind = s.template getValue<int>(QuantityId::KIND);
     const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
     const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-    const Float m = s.template getValue<Float>(QuantityId::MASS)[j];
+    const MovingBody<Dim>& owner = bodies_->bodies[body[j]];
+    const Float m = owner.motion.mass / Float(particleCount_[body[j]]);
     const Float kn = m * (c0_ / dx_) * (c0_ / dx_), cn = std::sqrt(kn * m);
-    const Float mu = bodies_->bodies[body[j]].motion.friction;
+    const Float mu = owner.motion.friction;
     const auto otherSolid = [&](Size k) { return !isFluid(kind[k]) && body[k] != body[j]; };
     Vec f{};
     lists_->forEachNeighbourOf(j, otherSolid, [&](Size k, const Vec& dx, Float r2) {

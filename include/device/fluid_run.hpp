@@ -27,6 +27,8 @@ std::string unsupported(const sph::FluidModel<Dim>& model,
                         const sph::FluidGeometry<Dim>& /*geometry*/,
                         const sph::RunSettings& settings) {
     if (model.extraTerms.size() > 0) return "extra equation terms (plugins' or users' terms)";
+    if (model.movingBodies && model.movingBodies->anyMoves())
+        return "moving bodies (bodies[i].motion free or prescribed)";
     if (model.density == sph::DensityMode::SUMMATION) return "density by summation";
     if (sph::evaluationFromName(settings.get<std::string>("evaluation")) ==
         sph::Evaluation::SYMMETRIC)

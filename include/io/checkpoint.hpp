@@ -16,7 +16,7 @@
 namespace num::io {
 
 /// Format version: 2 added the run's fingerprint, 3 the count of emitter points left out.
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+inline constexpr std::uint32_t kCheckpointVersion = 4;
 
 /// Appends plain values, strings and vectors to a byte buffer.
 class ByteWriter {

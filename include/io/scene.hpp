@@ -13,6 +13,7 @@
 #include "io/errors.hpp"
 #include "io/expression.hpp"
 #include "spatial/vec.hpp"
+#include "sph/bodies/rigid_body.hpp"
 #include "sph/boundary/side_boundary.hpp"
 #include "sph/boundary/wall_boundary.hpp"
 #include "sph/defaults.hpp"
@@ -76,10 +77,41 @@ struct FluidBlock : SceneShape<Dim> {
     VectorField<Dim> velocity{};
 };
 
+/// A spring or mooring line from a fixed anchor to a point of a moving body (bodies[i].motion
+/// .springs).
+template <int Dim>
+struct SpringSpec {
+    SceneVec<Dim> anchor{};
+    std::optional<SceneVec<Dim>> point;  ///< on the body at t = 0; empty: its reference point
+    double stiffness = 0, damping = 0;
+    std::optional<double> length;  ///< rest length; empty: the distance at t = 0
+    bool mooring = false;          ///< pulls only when longer than its rest length
+};
+
+/// How a body moves (bodies[i].motion). Free: pushed by the fluid, gravity and springs;
+/// prescribed: velocity and angular velocity of t given.
+template <int Dim>
+struct BodyMotionSpec {
+    static constexpr int spinDim = Dim == 2 ? 1 : 3;
+    sph::MotionType type = sph::MotionType::FIXED;
+    double density = 0, mass = 0;               ///< free: one of the two is given, the other is 0
+    std::optional<SceneVec<Dim>> centerOfMass;  ///< free; empty: the shape's centroid
+    std::vector<double> inertia;  ///< free; empty: the shape's; 1 number (2D), 3 or 9 (3D)
+    VectorField<Dim> velocity{};  ///< free: initial (numbers); prescribed: of t
+    std::array<Expression, spinDim> angularVelocity{};  ///< [rad/s], as velocity
+    std::optional<SceneVec<Dim>> center;  ///< prescribed: the centre of rotation at t = 0
+    std::optional<SceneVec<Dim>> hinge;   ///< free: the hinge's point
+    SceneVec<spinDim> hingeAxis{};        ///< free, 3D: the hinge's axis (default z)
+    std::vector<std::string> locked;      ///< free: x, y, (z), rotation (2D) or rx, ry, rz
+    std::vector<SpringSpec<Dim>> springs;
+};
+
 template <int Dim>
 struct Body : SceneShape<Dim> {
     double temperature = sph::defaults::temperature;
     std::string material;  ///< empty: held at `temperature`; else conducting with this material
+    std::string name;      ///< empty: "bodies[i]"
+    BodyMotionSpec<Dim> motion;
 };
 
 /// A wall inside the domain (scene key "walls"): a shape whose surface layer is made of wall

@@ -37,7 +37,8 @@
 //   where a boundary slides, absent means every boundary is held),
 //   FluidId::PAIR_VELOCITY, FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY,
 //   heat_ids::BOUNDARY_TEMPERATURE.
-// Boundary particles (walls and bodies) never move; fluid particles never cross them.
+// Boundary particles of walls and fixed bodies never move; those of moving bodies
+// (model.movingBodies) move rigidly with their body; fluid particles never cross them.
 //
 // Order of the terms (each term's constrain, initialize, finalize and postStep run in this
 // order; the tension limit's density floor acts in constrain, before every evaluation; particle
@@ -45,8 +46,9 @@
 //   neighbour refresh (for the passes below) -> summation density -> equation of state ->
 //   tension limit at free surfaces -> wall condition (Adami et al. 2012) -> wall temperature ->
 //   continuity (+ delta-SPH) -> pressure gradient -> laminar viscosity -> artificial viscosity
-//   -> body force -> particle shifting -> model.extraTerms (e.g. heat) -> boundary hold (zeroes
-//   boundary accelerations) -> containment (no particle inside a wall or body).
+//   -> body force -> particle shifting -> model.extraTerms (e.g. heat) -> rigid body coupling
+//   (moving bodies: their loads, motion and particles) -> boundary hold (zeroes boundary
+//   accelerations) -> containment (no particle inside a wall or body).
 #pragma once
 
 #include <algorithm>
@@ -55,6 +57,7 @@
 #include <numbers>
 #include <vector>
 
+#include "sph/bodies/body_coupling.hpp"
 #include "sph/boundary/boundary_hold.hpp"
 #include "sph/boundary/generalized_wall.hpp"
 #include "sph/boundary/particle_containment.hpp"
@@ -140,6 +143,9 @@ struct FluidModel {
 
     /// Keep fluid particles out of walls and bodies by reflection (a safety net).
     bool containParticles = true;
+
+    /// The bodies of the geometry with their motions (sph/bodies/); empty: every body fixed.
+    std::shared_ptr<MovingBodies<Dim>> movingBodies;
 
     /// Terms appended after the fluid terms, before boundaries are held and particles
     /// contained: heat conduction, buoyancy, user terms.
@@ -269,8 +275,12 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
                                               model.shiftingNormalToWalls);
     eq += makeHeatEquations(model.heat, model.bodyForce);
     eq += model.extraTerms;
+    if (model.movingBodies)
+        eq += makeTerm<RigidBodyCoupling<Dim>>(model.movingBodies, geometry.bodies, model.bodyForce,
+                                               model.artificialViscosity, eos.c0, geometry.spacing);
     eq += makeTerm<BoundaryHold<Dim>>();
-    if (model.containParticles && boundaries) eq += makeTerm<ParticleContainment<Dim>>(geometry);
+    if (model.containParticles && boundaries)
+        eq += makeTerm<ParticleContainment<Dim>>(geometry, model.movingBodies);
     // The built-in pair sums in one pass over the pairs (DerivativeHolder::fuse).
     eq += makeTerm<FuseDerivatives<Dim, ContinuityDensityPart<Dim>, DeltaSphPart<Dim>,
                                    PressureGradientPart<Dim>, ArtificialViscosityPart<Dim>,

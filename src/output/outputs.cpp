@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "io/file.hpp"
+#include "output/bodies_writer.hpp"
 #include "output/pictures_writer.hpp"
 #include "output/probes_writer.hpp"
 
@@ -78,8 +79,14 @@ std::optional<BodyForces<Dim>> bodyForces(const Scene<Dim>& scene, const SceneSe
         return std::nullopt;
     const auto& bodies = setup.geometry.bodies;
     const auto& walls = setup.geometry.interiorWalls;
-    auto targetOf = [bodies, walls](int kind, const sph::Vector<Dim>& x) {
+    // A body's particles carry their body's index where bodies move; else, as walls, the
+    // solid that holds them.
+    auto targetOf = [bodies, walls](const sph::Storage<Dim>& s, sph::Size j) {
+        const int kind = s.template getValue<int>(sph::QuantityId::KIND)[j];
+        const auto x = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION)[j];
         if (kind == int(sph::ParticleKind::BODY)) {
+            if (s.has(sph::QuantityId::BODY_INDEX))
+                return s.template getValue<int>(sph::QuantityId::BODY_INDEX)[j];
             for (std::size_t b = 0; b < bodies.size(); ++b)
                 if (bodies[b].contains(x)) return int(b);
         } else if (kind == int(sph::ParticleKind::WALL)) {
@@ -119,6 +126,8 @@ void Outputs<Dim>::makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& s
         pictures_ = pictures.get();
         writers_.push_back(std::move(pictures));
     }
+    if (setup.model.movingBodies)
+        writers_.push_back(std::make_unique<BodiesWriter<Dim>>(context, setup.model.movingBodies));
     if (!scene.probes.empty())
         writers_.push_back(std::make_unique<ProbesWriter<Dim>>(
             context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth),
@@ -135,7 +144,8 @@ bool Outputs<Dim>::earlierRunFile(const std::string& name) const {
     const std::string& prefix = scene_.output.prefix;
     for (const std::string& own :
          {prefix + ".pvd", prefix + ".mp4", std::string("probes.csv"), std::string("probes.png"),
-          std::string("summary.json"), std::string("checkpoint_interrupted.chk")})
+          std::string("bodies.csv"), std::string("summary.json"),
+          std::string("checkpoint_interrupted.chk")})
         if (name == own) return true;
     // prefix_NNNN.vtu, .csv, .png and checkpoint_NNNN.chk: at least four digits.
     auto numbered = [&](const std::string& head, std::initializer_list<const char*> extensions) {

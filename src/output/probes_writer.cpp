@@ -7,6 +7,7 @@
 #include "io/diagnostics.hpp"
 #include "io/file.hpp"
 #include "io/probe_plot.hpp"
+#include "output/csv_rows.hpp"
 
 namespace num::io {
 
@@ -35,16 +36,7 @@ void ProbesWriter<Dim>::start() {
 
 template <int Dim>
 void ProbesWriter<Dim>::resume(double t, const OutputSeries&) {
-    std::ifstream in(c_.path("probes.csv"));
-    if (!in) return start();
-    std::string line, kept;
-    bool header = true;
-    while (std::getline(in, line)) {
-        if (!header && std::strtod(line.c_str(), nullptr) > t * (1 + 1e-12)) break;
-        kept += line + "\n";
-        header = false;
-    }
-    writeFileAtomically(c_.path("probes.csv"), kept);
+    if (!keepCsvRowsUpTo(c_.path("probes.csv"), t)) start();
 }
 
 template <int Dim>

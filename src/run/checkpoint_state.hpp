@@ -21,6 +21,7 @@ struct RunState {
     std::uint64_t emitterBlocked = 0;  ///< nozzle points left out: water was there
     std::vector<double> start;         ///< conservation at t = 0 (see conservationVector)
     std::vector<std::pair<double, std::string>> series;
+    std::vector<double> bodies;  ///< the moving bodies' states (MovingBodies::save); or empty
 
     void write(ByteWriter& w) const {
         w.put(time), w.put(steps), w.put(outputIndex), w.put(checkpointCount);
@@ -28,6 +29,7 @@ struct RunState {
         w.putVector(start);
         w.put<std::uint64_t>(series.size());
         for (const auto& [t, f] : series) w.put(t), w.putString(f);
+        w.putVector(bodies);
     }
     void read(ByteReader& r) {
         time = r.get<double>(), steps = r.get<std::uint64_t>();
@@ -43,6 +45,7 @@ struct RunState {
             if (!std::isfinite(t)) invalid(r, "an output time that is not finite");
         }
         if (series.size() != n) invalid(r, "fewer outputs than it counts");
+        bodies = r.getVector<double>();
         if (!std::isfinite(time) || time < 0) invalid(r, "a time that is not finite or below 0");
         if (outputIndex < 0 || checkpointCount < 0) invalid(r, "a negative output count");
     }

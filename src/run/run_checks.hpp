@@ -6,6 +6,7 @@
 #include <csignal>
 #include <string>
 
+#include "run/body_check.hpp"
 #include "run/physical_check.hpp"
 #include "run/run_parts.hpp"
 #include "run/run_state.hpp"
@@ -52,6 +53,8 @@ class HealthObserver final : public IStepObserver<Dim> {
         agreed(p.comm, [&] {
             checkHealth(*p.scheduler, p.storage, p.scene, sim.time(), sim.steps(), lastDt(p),
                         criterion, p.fieldNames);
+            if (const auto& bodies = p.setup->model.movingBodies)
+                checkBodiesInside(p.storage, p.scene, *bodies, sim.time());
         });
         if (const std::string w = physical_.check(p.storage, sim.time(), p.comm, *p.scheduler);
             !w.empty())

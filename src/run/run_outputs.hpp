@@ -88,6 +88,7 @@ class CheckpointObserver final : public IStepObserver<Dim> {
         r.time = sim.time(), r.steps = sim.steps();
         r.emitterLayers = p.emitters->layers(), r.emitted = p.emitters->emitted();
         r.emitterBlocked = p.emitters->blocked();
+        if (const auto& bodies = p.setup->model.movingBodies) r.bodies = bodies->save();
         if (p.root()) r.series = p.outputs->series().entries();
         return r;
     }

@@ -64,6 +64,10 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
         throw AppError(ExitCode::USAGE,
                        "particles.evaluation \"symmetric\" cannot run on several processes: "
                        "remove it (the default gathers) or run without mpirun");
+    if (p.comm.size() > 1 && setup.model.movingBodies)
+        throw AppError(ExitCode::USAGE,
+                       "moving bodies (bodies[i].motion) run on one process: run without mpirun "
+                       "(threads: --threads)");
     // The process that owns each particle (parallel/domain_decomposition.hpp); -1 until the
     // particles are distributed.
     initial.template insert<int>(QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
@@ -77,6 +81,19 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
     });
     p.initialParticles = initial.size();
     return initial;
+}
+
+/// The moving bodies' states at the checkpoint's time.
+template <int Dim>
+void restoreBodies(RunParts<Dim>& p, const std::string& file) {
+    const auto& bodies = p.setup->model.movingBodies;
+    if (!bodies && p.state.bodies.empty()) return;
+    try {
+        if (!bodies) throw std::invalid_argument("holds moving bodies, the scene has none");
+        bodies->restore(p.state.bodies);
+    } catch (const std::invalid_argument& e) {
+        throw AppError(ExitCode::CHECKPOINT, file + ": the checkpoint " + e.what());
+    }
 }
 
 /// The state and particles of the checkpoint options.restart names.
@@ -94,6 +111,7 @@ void readRestart(RunParts<Dim>& p, const sph::Storage<Dim>& initial) {
                                                  " emitters, the scene " +
                                                  std::to_string(p.scene.emitters.size()));
     p.storage = readStorage<Dim>(r, initial);
+    restoreBodies(p, file);
     if (p.state.time >= p.scene.endTime)
         throw AppError(ExitCode::USAGE,
                        file + ": the checkpoint is at t = " + formatted("%g", p.state.time) +

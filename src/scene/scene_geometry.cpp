@@ -178,8 +178,9 @@ double checkGeneralBlock(const Scene<Dim>& s, const FluidBlock<Dim>& f, const st
     return count;
 }
 
-/// Fluid block i lies inside the domain, holds particles and overlaps no body or wall by more
-/// than half a spacing. Returns an estimate of its particle count.
+/// Fluid block i lies inside the domain, holds particles and overlaps no wall by more than half
+/// a spacing (it fills its volume outside every body: a floating box placed in a tank). Returns
+/// an estimate of its particle count.
 template <int Dim>
 double checkFluidBlock(const Scene<Dim>& s, std::size_t i) {
     const FluidBlock<Dim>& f = s.fluids[i];
@@ -187,22 +188,16 @@ double checkFluidBlock(const Scene<Dim>& s, std::size_t i) {
     const bool general = f.shape == ShapeKind::SOLID;
     const double tol = 0.5 * s.spacing;
     const double cells = general ? 0 : checkBoxOrBallBlock(s, f, path);
-    auto fail = [&](const std::string& solid, const std::string& hint) {
-        throw sceneError(s.file, path, "a fluid block that does not overlap a " + solid,
-                         "an overlap with " + hint,
-                         "shrink or split the block around the " +
-                             std::string(solid == "wall" ? "wall" : "body"));
-    };
-    for (std::size_t j = 0; j < s.bodies.size(); ++j) {
-        const Body<Dim>& b = s.bodies[j];
-        const bool over = general || b.shape == ShapeKind::SOLID ? overlapOnLattice(s, f, b, tol)
-                                                                 : overlap<Dim>(f, b, tol);
-        if (over) fail("solid body", "bodies[" + std::to_string(j) + "]");
-    }
     for (std::size_t j = 0; j < s.walls.size(); ++j)
         if (overlapOnLattice(s, f, s.walls[j], tol))
-            fail("wall", "walls[" + std::to_string(j) + "]");
-    return general ? checkGeneralBlock(s, f, path) : cells;
+            throw sceneError(s.file, path, "a fluid block that does not overlap a wall",
+                             "an overlap with walls[" + std::to_string(j) + "]",
+                             "shrink or split the block around the wall");
+    // A block that overlaps a body: its particles counted on the lattice (none is refused).
+    bool cut = general;
+    for (const Body<Dim>& b : s.bodies)
+        cut = cut || b.shape == ShapeKind::SOLID || overlap<Dim>(f, b, tol);
+    return cut ? checkGeneralBlock(s, f, path) : cells;
 }
 
 /// Checks every fluid block; returns the estimated number of fluid particles.
@@ -211,6 +206,33 @@ double checkFluidBlocks(const Scene<Dim>& s) {
     double estimate = 0;
     for (std::size_t i = 0; i < s.fluids.size(); ++i) estimate += checkFluidBlock(s, i);
     return estimate;
+}
+
+/// A moving body starts clear of every other body and wall (by more than half a spacing), and
+/// a free body's given inertia is positive.
+template <int Dim>
+void checkMovingBodyClear(const Scene<Dim>& s, std::size_t i) {
+    const std::string path = "bodies[" + std::to_string(i) + "]";
+    const double tol = 0.5 * s.spacing;
+    auto refuse = [&](const std::string& other) {
+        throw sceneError(s.file, path, "a moving body clear of every other body and wall",
+                         "it starts inside " + other, "move it or make it smaller");
+    };
+    for (std::size_t j = 0; j < s.bodies.size(); ++j)
+        if (j != i && overlapOnLattice(s, s.bodies[i], s.bodies[j], tol))
+            refuse("bodies[" + std::to_string(j) + "]");
+    for (std::size_t j = 0; j < s.walls.size(); ++j)
+        if (overlapOnLattice(s, s.bodies[i], s.walls[j], tol))
+            refuse("walls[" + std::to_string(j) + "]");
+    const BodyMotionSpec<Dim>& m = s.bodies[i].motion;
+    if (m.inertia.size() == 9) {
+        sph::Inertia<3> I;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) I.rows[r][c] = m.inertia[3 * r + c];
+        if (!I.positive())
+            throw sceneError(s.file, path + ".motion.inertia",
+                             "a symmetric, positive definite tensor [kg m^2]", "one that is not");
+    }
 }
 
 /// Bodies lie inside the domain (a box or ball) or meet it (any other shape); walls meet it.
@@ -229,6 +251,8 @@ void checkBodiesAndWalls(const Scene<Dim>& s) {
         check(s.bodies[j], "bodies[" + std::to_string(j) + "]", "body");
     for (std::size_t j = 0; j < s.walls.size(); ++j)
         check(s.walls[j], "walls[" + std::to_string(j) + "]", "wall");
+    for (std::size_t j = 0; j < s.bodies.size(); ++j)
+        if (s.bodies[j].motion.type != sph::MotionType::FIXED) checkMovingBodyClear(s, j);
 }
 
 /// Emitter i's nozzle is at least one spacing wide and no wider than the domain.

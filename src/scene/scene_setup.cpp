@@ -1,5 +1,6 @@
 // Scene -> engine: settings, fluid model with heat terms, geometry, initial particles, emitters.
 #include "io/scene_setup.hpp"
+#include "scene/moving_bodies.hpp"
 
 #include <algorithm>
 #include <array>
@@ -563,6 +564,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
     setup.wallLayers =
         sph::wallLayersFor(sph::RunKernel<Dim>(setup.settings).supportRadius(), scene.spacing);
     m.density = densityMode(scene, setup.geometry, gravityOn);
+    m.movingBodies = makeMovingBodies(scene);
     for (const Emitter<Dim>& e : scene.emitters)
         setup.emitterTemplates.push_back(
             emitterTemplate(e, setup.materialIndex[e.material], scene.spacing, m, setup.settings));

@@ -90,10 +90,13 @@ TEST(BadInput, FluidBlockOutsideTheDomain) {
     expectMessage(runScene("outside", j.dump()), kScene, {"fluids[0]", "inside the domain"});
 }
 
-TEST(BadInput, FluidBlockOverlappingABody) {
+// A block fills its volume outside every body; one wholly inside a body holds no particle.
+TEST(BadInput, FluidBlockInsideABody) {
     json j = tiny();
-    j["fluids"][0]["max"] = {0.17, 0.12};
-    expectMessage(runScene("overlap", j.dump()), kScene, {"fluids[0]", "overlap", "bodies[0]"});
+    j["fluids"][0]["min"] = {0.14, 0.03};
+    j["fluids"][0]["max"] = {0.16, 0.05};
+    expectMessage(runScene("inside_body", j.dump()), kScene,
+                  {"fluids[0]", "holding particles", "outside every body"});
 }
 
 TEST(BadInput, EmptyScene) {

@@ -7,8 +7,10 @@
 // velocity a step ends with has no component into the solid.
 #pragma once
 
+#include <memory>
 #include <vector>
 
+#include "sph/bodies/moving_bodies.hpp"
 #include "sph/formulas/post_step.hpp"
 #include "sph/setup/fluid_geometry.hpp"
 
@@ -18,7 +20,10 @@ template <int Dim>
 class ParticleContainment : public IEquationTerm<Dim> {
   public:
     using Vec = Vector<Dim>;
-    explicit ParticleContainment(const FluidGeometry<Dim>& geometry) : geometry_(geometry) {}
+    /// moving: the bodies' motions (empty: every body fixed).
+    explicit ParticleContainment(const FluidGeometry<Dim>& geometry,
+                                 std::shared_ptr<const MovingBodies<Dim>> moving = nullptr)
+        : geometry_(geometry), moving_(std::move(moving)) {}
 
     void setDerivatives(DerivativeHolder<Dim>&, const RunSettings&) override {}
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
@@ -34,8 +39,8 @@ class ParticleContainment : public IEquationTerm<Dim> {
                 for (int k = 0; k < Dim; ++k)
                     formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
                                              g.hasWall(k, 0), g.hasWall(k, 1));
-                for (const SolidBody<Dim>& body : g.bodies)
-                    if (body.mayContain(x[i])) formulas::containOutsideBody<Dim>(x[i], v[i], body);
+                for (std::size_t b = 0; b < g.bodies.size(); ++b)
+                    containOutside(int(b), x[i], v[i]);
                 for (const InteriorWall<Dim>& wall : g.interiorWalls)
                     if (wall.mayContain(x[i])) formulas::containOutsideBody<Dim>(x[i], v[i], wall);
             }
@@ -44,7 +49,25 @@ class ParticleContainment : public IEquationTerm<Dim> {
     void create(Storage<Dim>&, IMaterial&) const override {}
 
   private:
+    /// Out of body b, where it is now: reflected in its initial pose, the velocity relative
+    /// to the body's (Vec x_0 = X_0 + R^T (x - X), v_0 = R^T (v - v_b(x))).
+    void containOutside(int b, Vec& x, Vec& v) const {
+        const SolidBody<Dim>& body = geometry_.bodies[b];
+        if (!moving_ || !moving_->moves(b)) {
+            if (body.mayContain(x)) formulas::containOutsideBody<Dim>(x, v, body);
+            return;
+        }
+        Vec x0 = moving_->toInitialPose(b, x);
+        if (!body.mayContain(x0)) return;
+        const auto& state = moving_->bodies[b].state;
+        Vec v0 = state.attitude.rotateBack(v - moving_->velocityAt(b, x));
+        formulas::containOutsideBody<Dim>(x0, v0, body);
+        x = state.position + moving_->turned(b, x0 - moving_->bodies[b].initialPosition);
+        v = moving_->velocityAt(b, x) + moving_->turned(b, v0);
+    }
+
     FluidGeometry<Dim> geometry_;
+    std::shared_ptr<const MovingBodies<Dim>> moving_;
 };
 
 }  // namespace num::sph

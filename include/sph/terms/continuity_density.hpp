@@ -1,9 +1,10 @@
 // Continuity equation (Monaghan 1992, eq. 2.9, in the volume form of Colagrossi & Landrini 2003):
 //   drho_i/dt = rho_i sum_j V_j (v_i - v_j) . grad_i W_ij,   V_j = m_j / rho_j
 // (FluidId::VOLUME, terms/pair_inputs.hpp). The formula: sph/formulas/fluid_pairs.hpp.
-// Only fluid densities evolve. Boundary particles enter with their own velocity, zero: they are
-// held in place (boundary_hold.hpp), and the equation is the time derivative of the kernel sum,
-// in which only their positions appear. A wall's prescribed surface velocity (a sliding lid,
+// Only fluid densities evolve. Boundary particles enter with their own velocity: zero for walls
+// and fixed bodies, held in place (boundary_hold.hpp), a moving body's rigid velocity for its
+// particles (sph/bodies/body_coupling.hpp); the equation is the time derivative of the kernel
+// sum, in which only their motion appears. A wall's prescribed surface velocity (a sliding lid,
 // WALL_VELOCITY) is a no-slip condition for the viscous terms, not a motion of its particles.
 // It used to enter here, which made a lid a mass source where its particle rows end: in the
 // lid-driven cavity the corner blocks of wall particles are split along the diagonal between
@@ -61,8 +62,8 @@ class ContinuityDensityPart : public DerivativeTemplate<ContinuityDensityPart<Di
     }
 
   private:
-    /// A boundary particle's velocity here is zero: it is held in place.
-    Vec velocity(Size j) const { return isFluid(kind_[j]) ? v_[j] : Vec{}; }
+    /// Every particle's own velocity (a held boundary particle's is zero).
+    Vec velocity(Size j) const { return v_[j]; }
 
     ArrayView<const Float> rho_, volume_;
     ArrayView<const int> kind_;

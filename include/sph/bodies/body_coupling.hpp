@@ -1,0 +1,194 @@
+// Two-way coupling of moving rigid bodies with the fluid.
+//
+// Each evaluation (finalize, in the last pass) sums the fluid's force on every particle j of a
+// moving body, F_j = -sum_{fluid i} m_i a_ij (sph/formulas/boundary_force.hpp), and from them
+// each body's force and torque about its reference point X:
+//   F_b = sum_{j in b} F_j,   tau_b = sum_{j in b} (x_j - X) x F_j
+// in storage order, on one thread, so the sums are the same for any number of threads.
+// Once per step (postStep, before containment) each body advances by its motion
+// (rigid_body.hpp) and its particles follow rigidly: x_j = X + R r_j and
+// v_j = V + omega x (R r_j), the velocity the wall condition (Adami et al. 2012, eq. 22-23)
+// and the continuity equation see (WALL_VELOCITY and the particles' velocity). The force lags
+// the body by one step (a staggered, explicit coupling, as in DualSPHysics' floating bodies,
+// Dominguez et al. 2022, sec. 3.4).
+// Contacts: a particle j of a free body closer than the spacing dx to a particle k of another
+// solid (a wall, the box's walls, another body) is pushed back by a damped spring (a linear
+// spring-dashpot, Cundall & Strack 1979):
+//   F_jk = max(0, k_n (dx - r) - c_n (v_j - v_k) . n) n,  n = (x_j - x_k) / r,
+//   k_n = m_j (c0 / dx)^2 (a contact that lasts about ten steps), c_n = sqrt(k_n m_j)
+//   (damping ratio 1/2); on the body, F and its torque, as the fluid's.
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "sph/bodies/moving_bodies.hpp"
+#include "sph/equation_term.hpp"
+#include "sph/formulas/boundary_force.hpp"
+#include "sph/setup/fluid_geometry.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+class RigidBodyCoupling : public IEquationTerm<Dim> {
+  public:
+    using Vec = Vector<Dim>;
+
+    /// shapes: the bodies at t = 0 (which particles are whose); gravity: g(t); alpha, c0: the
+    /// artificial viscosity's.
+    /// dx: the particle spacing.
+    RigidBodyCoupling(std::shared_ptr<MovingBodies<Dim>> bodies, std::vector<SolidBody<Dim>> shapes,
+                      std::function<Vec(Float)> gravity, Float alpha, Float c0, Float dx)
+        : bodies_(std::move(bodies)),
+          shapes_(std::move(shapes)),
+          gravity_(std::move(gravity)),
+          alpha_(alpha),
+          c0_(c0),
+          dx_(dx) {}
+
+    void setDerivatives(DerivativeHolder<Dim>&, const RunSettings& settings) override {
+        kernel_.emplace(settings);
+    }
+    void beginEvaluation(const EvaluationContext<Dim>& context) override {
+        lists_ = &context.neighbours;
+    }
+    void initialize(IScheduler&, Storage<Dim>&, Float) override {}
+    void finalize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
+        sumParticleForces(scheduler, s);
+        sumBodyLoads(s);
+    }
+    void postStep(IScheduler& scheduler, Storage<Dim>& s, Float t, Float dt) override {
+        const Vec g = gravity_ ? gravity_(t) : Vec{};
+        for (MovingBody<Dim>& b : bodies_->bodies) {
+            if (b.motion.type == MotionType::FREE)
+                advanceFree(b.motion, b.state, b.fluidForce + b.contactForce,
+                            b.fluidTorque + b.contactTorque, g, dt);
+            else if (b.motion.type == MotionType::PRESCRIBED)
+                advancePrescribed(b.motion, b.state, t, dt);
+        }
+        placeParticles(scheduler, s);
+    }
+    void create(Storage<Dim>& s, IMaterial&) const override;
+    /// The last pass: the wall condition has set the body particles' pressure and velocity.
+    TermAccess access() const override { return {.placement = PassPlacement::LAST}; }
+    std::string name() const override { return "rigid body coupling"; }
+
+    /// Puts every moving body's particles where its state says, with its velocity.
+    void placeParticles(IScheduler& scheduler, Storage<Dim>& s) const;
+
+  private:
+    void sumParticleForces(IScheduler& scheduler, const Storage<Dim>& s);
+    Vec contactForce(const Storage<Dim>& s, Size j) const;
+    void sumBodyLoads(const Storage<Dim>& s);
+
+    std::shared_ptr<MovingBodies<Dim>> bodies_;
+    std::vector<SolidBody<Dim>> shapes_;
+    std::function<Vec(Float)> gravity_;
+    Float alpha_, c0_, dx_;
+    std::optional<RunKernel<Dim>> kernel_;
+    const VerletList<Dim>* lists_ = nullptr;
+    std::vector<Vec> particleForce_, particleContact_;
+};
+
+/// BODY_INDEX and BODY_OFFSET from the particles' places at t = 0 (a storage that has them, a
+/// checkpoint's, keeps its own), and WALL_VELOCITY where it is missing.
+template <int Dim>
+void RigidBodyCoupling<Dim>::create(Storage<Dim>& s, IMaterial&) const {
+    if (!s.has(QuantityId::WALL_VELOCITY))
+        s.template insert<Vec>(QuantityId::WALL_VELOCITY, OrderEnum::ZERO, Vec{});
+    if (s.has(QuantityId::BODY_INDEX)) return;
+    s.template insert<int>(QuantityId::BODY_INDEX, OrderEnum::ZERO, -1);
+    s.template insert<Vec>(QuantityId::BODY_OFFSET, OrderEnum::ZERO, Vec{});
+    const auto x = s.template getValue<Vec>(QuantityId::POSITION);
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
+    auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    auto offset = s.template getValue<Vec>(QuantityId::BODY_OFFSET);
+    for (Size i = 0; i < s.size(); ++i) {
+        if (kind[i] != int(ParticleKind::BODY)) continue;
+        for (std::size_t b = 0; b < shapes_.size(); ++b)
+            if (shapes_[b].signedDistance(x[i]) < 0) {
+                body[i] = int(b);
+                offset[i] = x[i] - bodies_->bodies[b].initialPosition;
+                break;
+            }
+    }
+}
+
+template <int Dim>
+void RigidBodyCoupling<Dim>::sumParticleForces(IScheduler& scheduler, const Storage<Dim>& s) {
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
+    const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    const formulas::BoundaryPairForce<Dim> pair(s, *kernel_, alpha_, c0_);
+    particleForce_.assign(s.size(), Vec{});
+    particleContact_.assign(s.size(), Vec{});
+    const auto fluid = [&](Size f) { return isFluid(kind[f]); };
+    scheduler.parallelFor(s.size(), 1024, [&](Size b, Size e) {
+        for (Size j = b; j < e; ++j) {
+            if (!bodies_->moves(body[j])) continue;
+            lists_->forEachNeighbourOf(j, fluid, [&](Size i, const Vec& dx, Float r2) {
+                if (r2 > 0) particleForce_[j] += pair.onBoundary(i, j, -dx, std::sqrt(r2));
+            });
+            if (bodies_->bodies[body[j]].motion.type == MotionType::FREE)
+                particleContact_[j] = contactForce(s, j);
+        }
+    });
+}
+
+template <int Dim>
+typename RigidBodyCoupling<Dim>::Vec RigidBodyCoupling<Dim>::contactForce(const Storage<Dim>& s,
+                                                                          Size j) const {
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
+    const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    const auto v = s.template getDt<Vec>(QuantityId::POSITION);
+    const Float m = s.template getValue<Float>(QuantityId::MASS)[j];
+    const Float kn = m * (c0_ / dx_) * (c0_ / dx_), cn = std::sqrt(kn * m);
+    const auto otherSolid = [&](Size k) { return !isFluid(kind[k]) && body[k] != body[j]; };
+    Vec f{};
+    lists_->forEachNeighbourOf(j, otherSolid, [&](Size k, const Vec& dx, Float r2) {
+        if (r2 >= dx_ * dx_ || r2 <= 0) return;
+        const Float r = std::sqrt(r2);
+        const Vec n = dx / r;
+        const Float push = kn * (dx_ - r) - cn * dot(v[j] - v[k], n);
+        if (push > 0) f += n * push;
+    });
+    return f;
+}
+
+template <int Dim>
+void RigidBodyCoupling<Dim>::sumBodyLoads(const Storage<Dim>& s) {
+    const auto x = s.template getValue<Vec>(QuantityId::POSITION);
+    const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    for (MovingBody<Dim>& b : bodies_->bodies)
+        b.fluidForce = b.contactForce = Vec{}, b.fluidTorque = b.contactTorque = {};
+    for (Size j = 0; j < s.size(); ++j) {
+        if (!bodies_->moves(body[j])) continue;
+        MovingBody<Dim>& b = bodies_->bodies[body[j]];
+        const Vec arm = x[j] - b.state.position;
+        b.fluidForce += particleForce_[j];
+        b.fluidTorque += cross(arm, particleForce_[j]);
+        b.contactForce += particleContact_[j];
+        b.contactTorque += cross(arm, particleContact_[j]);
+    }
+}
+
+template <int Dim>
+void RigidBodyCoupling<Dim>::placeParticles(IScheduler& scheduler, Storage<Dim>& s) const {
+    auto x = s.template getValue<Vec>(QuantityId::POSITION);
+    auto v = s.template getDt<Vec>(QuantityId::POSITION);
+    auto wall = s.template getValue<Vec>(QuantityId::WALL_VELOCITY);
+    const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    const auto offset = s.template getValue<Vec>(QuantityId::BODY_OFFSET);
+    scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+        for (Size j = b; j < e; ++j) {
+            if (!bodies_->moves(body[j])) continue;
+            const BodyState<Dim>& state = bodies_->bodies[body[j]].state;
+            const Vec d = state.offset(offset[j]);
+            x[j] = state.position + d;
+            v[j] = wall[j] = state.velocityAt(d);
+        }
+    });
+}
+
+}  // namespace num::sph

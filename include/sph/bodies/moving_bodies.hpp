@@ -1,0 +1,94 @@
+// The bodies of a run that move (free or prescribed; sph/bodies/rigid_body.hpp), shared by the
+// coupling term that moves them, the containment that keeps fluid out of them and the outputs.
+// Indexed as the geometry's bodies (FluidGeometry::bodies); fixed bodies keep their place.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sph/bodies/rigid_body.hpp"
+
+namespace num::sph {
+
+template <int Dim>
+struct MovingBody {
+    std::string name;
+    BodyMotion<Dim> motion;
+    BodyState<Dim> state;
+    Vector<Dim> initialPosition{};  ///< the reference point at t = 0
+    Vector<Dim> fluidForce{};       ///< of the last evaluation [N; 2D: N/m]
+    Spin<Dim> fluidTorque{};        ///< about the reference point, of the last evaluation
+    Vector<Dim> contactForce{};     ///< of the contacts with other solids, last evaluation
+    Spin<Dim> contactTorque{};
+};
+
+template <int Dim>
+class MovingBodies {
+  public:
+    std::vector<MovingBody<Dim>> bodies;
+
+    bool moves(int b) const { return b >= 0 && bodies[b].motion.moves(); }
+    bool anyMoves() const {
+        for (const MovingBody<Dim>& b : bodies)
+            if (b.motion.moves()) return true;
+        return false;
+    }
+    /// The point of body b's initial pose that is at x now: X0 + R^T (x - X).
+    Vector<Dim> toInitialPose(int b, const Vector<Dim>& x) const {
+        const MovingBody<Dim>& m = bodies[b];
+        return m.initialPosition + m.state.attitude.rotateBack(x - m.state.position);
+    }
+    /// A vector of the initial pose turned as body b is now (R u).
+    Vector<Dim> turned(int b, const Vector<Dim>& u) const {
+        return bodies[b].state.attitude.rotate(u);
+    }
+    /// The velocity of body b's material point at x.
+    Vector<Dim> velocityAt(int b, const Vector<Dim>& x) const {
+        const BodyState<Dim>& s = bodies[b].state;
+        return s.velocityAt(x - s.position);
+    }
+
+    /// The states as numbers, for checkpoints: per body X, V, attitude, spin.
+    std::vector<double> save() const {
+        std::vector<double> out;
+        for (const MovingBody<Dim>& b : bodies) {
+            const BodyState<Dim>& s = b.state;
+            append(out, s.position), append(out, s.velocity), append(out, s.spin);
+            if constexpr (Dim == 2)
+                out.push_back(s.attitude.angle);
+            else
+                out.insert(out.end(), s.attitude.q.begin(), s.attitude.q.end());
+        }
+        return out;
+    }
+    /// The states save() gave; throws std::invalid_argument when the count does not match.
+    void restore(const std::vector<double>& in) {
+        constexpr std::size_t perBody = 2 * Dim + (Dim == 2 ? 2 : 7);
+        if (in.size() != perBody * bodies.size())
+            throw std::invalid_argument("holds " + std::to_string(in.size() / perBody) +
+                                        " body states, the scene has " +
+                                        std::to_string(bodies.size()) + " bodies");
+        auto at = in.begin();
+        for (MovingBody<Dim>& b : bodies) {
+            BodyState<Dim>& s = b.state;
+            take(at, s.position), take(at, s.velocity), take(at, s.spin);
+            if constexpr (Dim == 2)
+                s.attitude.angle = *at++;
+            else
+                for (double& c : s.attitude.q) c = *at++;
+        }
+    }
+
+  private:
+    template <int N>
+    static void append(std::vector<double>& out, const Vec<Float, N>& v) {
+        out.insert(out.end(), v.c.begin(), v.c.end());
+    }
+    template <int N>
+    static void take(std::vector<double>::const_iterator& at, Vec<Float, N>& v) {
+        for (int k = 0; k < N; ++k) v[k] = *at++;
+    }
+};
+
+}  // namespace num::sph

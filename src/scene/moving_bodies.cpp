@@ -1,0 +1,238 @@
+// The motions of a scene's bodies (bodies[i].motion) as the engine runs them: mass, centre of
+// mass and inertia from the shape and density (exact for boxes, circles and spheres; by a
+// lattice quadrature of spacing dx/4 in 2D and dx/2 in 3D for other shapes), the reference
+// point (centre of mass, hinge or centre of rotation), held degrees of freedom and springs.
+#include "scene/moving_bodies.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "sph/setup/particle_generation.hpp"
+
+namespace num::io {
+
+namespace {
+
+using sph::Float;
+
+/// Volume (2D: area), centroid and inertia about the centroid per unit density.
+template <int Dim>
+struct ShapeMass {
+    double volume = 0;
+    SceneVec<Dim> centroid{};
+    sph::Inertia<Dim> inertia;
+};
+
+/// I per unit density of a lattice of cells of volume q^Dim at offsets r from the centroid:
+/// sum q^Dim (|r|^2 1 - r r^T) (2D: sum q^2 |r|^2).
+template <int Dim>
+void addPointInertia(sph::Inertia<Dim>& I, const SceneVec<Dim>& r, double cell) {
+    if constexpr (Dim == 2) {
+        I.zz += cell * normSqr(r);
+    } else {
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                I.rows[i][j] += cell * ((i == j) * normSqr(r) - r[i] * r[j]);
+    }
+}
+
+template <int Dim>
+ShapeMass<Dim> latticeMass(const sph::PlacedShape<Dim>& shape, double dx) {
+    const double q = Dim == 2 ? dx / 4 : dx / 2, cell = std::pow(q, Dim);
+    const geometry::Bounds<Dim> b = shape.bounds();
+    std::vector<SceneVec<Dim>> inside;
+    sph::forEachLatticePoint<Dim>(b.min, b.max, q, [&](const SceneVec<Dim>& x) {
+        if (shape.contains(x)) inside.push_back(x);
+    });
+    ShapeMass<Dim> m;
+    if (inside.empty()) return m;
+    for (const auto& x : inside) m.centroid += x;
+    m.centroid /= double(inside.size());
+    m.volume = cell * double(inside.size());
+    for (const auto& x : inside) addPointInertia<Dim>(m.inertia, x - m.centroid, cell);
+    return m;
+}
+
+/// Exact for a box: I = V (b^2 + c^2) / 12 about each axis (2D: V (a^2 + b^2) / 12).
+template <int Dim>
+ShapeMass<Dim> boxMass(const SceneVec<Dim>& lo, const SceneVec<Dim>& hi) {
+    ShapeMass<Dim> m;
+    const SceneVec<Dim> e = hi - lo;
+    m.volume = 1;
+    for (int k = 0; k < Dim; ++k) m.volume *= e[k];
+    m.centroid = (lo + hi) * 0.5;
+    if constexpr (Dim == 2) {
+        m.inertia.zz = m.volume * normSqr(e) / 12;
+    } else {
+        for (int k = 0; k < 3; ++k)
+            m.inertia.rows[k][k] = m.volume * (normSqr(e) - e[k] * e[k]) / 12;
+    }
+    return m;
+}
+
+/// Exact for a disc (V r^2 / 2) and a sphere (2/5 V r^2).
+template <int Dim>
+ShapeMass<Dim> ballMass(const SceneVec<Dim>& center, double r) {
+    ShapeMass<Dim> m;
+    m.centroid = center;
+    if constexpr (Dim == 2) {
+        m.volume = std::numbers::pi * r * r;
+        m.inertia.zz = m.volume * r * r / 2;
+    } else {
+        m.volume = 4 * std::numbers::pi * r * r * r / 3;
+        m.inertia = sph::Inertia<3>::diagonal(SceneVec<3>::filled(0.4 * m.volume * r * r));
+    }
+    return m;
+}
+
+template <int Dim>
+ShapeMass<Dim> shapeMass(const Body<Dim>& b, double dx) {
+    switch (b.shape) {
+        case ShapeKind::BOX:
+            return boxMass<Dim>(b.min, b.max);
+        case ShapeKind::CIRCLE:
+        case ShapeKind::SPHERE:
+            return ballMass<Dim>(b.center, b.radius);
+        default:
+            return latticeMass<Dim>(b.placed(), dx);
+    }
+}
+
+template <int Dim>
+sph::Inertia<Dim> scaled(sph::Inertia<Dim> I, double factor) {
+    if constexpr (Dim == 2) {
+        I.zz *= factor;
+    } else {
+        for (auto& row : I.rows) row *= factor;
+    }
+    return I;
+}
+
+template <int Dim>
+sph::Inertia<Dim> givenInertia(const std::vector<double>& I) {
+    sph::Inertia<Dim> out;
+    if constexpr (Dim == 2) {
+        out.zz = I[0];
+    } else if (I.size() == 3) {
+        out = sph::Inertia<3>::diagonal(SceneVec<3>{{I[0], I[1], I[2]}});
+    } else {
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) out.rows[r][c] = I[3 * r + c];
+    }
+    return out;
+}
+
+template <int Dim>
+void holdDegrees(const BodyMotionSpec<Dim>& spec, sph::BodyMotion<Dim>& m) {
+    static const char* axes[] = {"x", "y", "z"};
+    static const char* spins[] = {"rx", "ry", "rz"};
+    for (const std::string& name : spec.locked) {
+        for (int k = 0; k < Dim; ++k)
+            if (name == axes[k]) m.heldAxes[k] = true;
+        if (name == "rotation") m.heldSpins[0] = true;
+        for (int k = 0; k < 3 && Dim == 3; ++k)
+            if (name == spins[k]) m.heldSpins[std::size_t(k)] = true;
+    }
+}
+
+/// A free body: mass and inertia, about its centre of mass or its hinge.
+template <int Dim>
+sph::MovingBody<Dim> freeBody(const Body<Dim>& b, double dx) {
+    const BodyMotionSpec<Dim>& spec = b.motion;
+    const ShapeMass<Dim> shape = shapeMass(b, dx);
+    sph::MovingBody<Dim> body;
+    sph::BodyMotion<Dim>& m = body.motion;
+    m.type = sph::MotionType::FREE;
+    m.mass = spec.mass > 0 ? spec.mass : spec.density * shape.volume;
+    const double density = m.mass / shape.volume;
+    const SceneVec<Dim> com = spec.centerOfMass.value_or(shape.centroid);
+    sph::Inertia<Dim> aboutCom =
+        spec.inertia.empty() ? scaled(shape.inertia, density).shifted(m.mass, com - shape.centroid)
+                             : givenInertia<Dim>(spec.inertia);
+    holdDegrees(spec, m);
+    body.initialPosition = spec.hinge.value_or(com);
+    if (spec.hinge) {
+        m.hinged = true, m.hingeAxis = spec.hingeAxis;
+        m.centerOfMass = com - *spec.hinge;
+        aboutCom = aboutCom.shifted(m.mass, m.centerOfMass);
+    }
+    m.inertia = aboutCom;
+    for (int k = 0; k < Dim; ++k) body.state.velocity[k] = spec.velocity[k](0, 0, 0, 0);
+    for (int k = 0; k < BodyMotionSpec<Dim>::spinDim; ++k)
+        body.state.spin[k] = spec.angularVelocity[std::size_t(k)](0, 0, 0, 0);
+    if (m.hinged) body.state.velocity = SceneVec<Dim>{};
+    return body;
+}
+
+template <int Dim>
+sph::MovingBody<Dim> prescribedBody(const Body<Dim>& b, double dx) {
+    const BodyMotionSpec<Dim>& spec = b.motion;
+    sph::MovingBody<Dim> body;
+    sph::BodyMotion<Dim>& m = body.motion;
+    m.type = sph::MotionType::PRESCRIBED;
+    m.velocity = [v = spec.velocity](Float t) {
+        SceneVec<Dim> out;
+        for (int k = 0; k < Dim; ++k) out[k] = v[k](0, 0, 0, t);
+        return out;
+    };
+    m.spin = [w = spec.angularVelocity](Float t) {
+        sph::Spin<Dim> out;
+        for (std::size_t k = 0; k < w.size(); ++k) out[int(k)] = w[k](0, 0, 0, t);
+        return out;
+    };
+    body.initialPosition = spec.center ? *spec.center : shapeMass(b, dx).centroid;
+    body.state.velocity = m.velocity(0), body.state.spin = m.spin(0);
+    return body;
+}
+
+template <int Dim>
+void addSprings(const BodyMotionSpec<Dim>& spec, sph::MovingBody<Dim>& body) {
+    for (const SpringSpec<Dim>& s : spec.springs) {
+        sph::BodySpring<Dim> k;
+        k.anchor = s.anchor;
+        const SceneVec<Dim> point = s.point.value_or(body.initialPosition);
+        k.point = point - body.initialPosition;
+        k.stiffness = s.stiffness, k.damping = s.damping, k.slack = s.mooring;
+        k.restLength = s.length.value_or(norm(point - s.anchor));
+        body.motion.springs.push_back(k);
+    }
+}
+
+}  // namespace
+
+template <int Dim>
+std::shared_ptr<sph::MovingBodies<Dim>> makeMovingBodies(const Scene<Dim>& scene) {
+    auto out = std::make_shared<sph::MovingBodies<Dim>>();
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+        const Body<Dim>& b = scene.bodies[i];
+        sph::MovingBody<Dim> body;
+        if (b.motion.type == sph::MotionType::FREE) body = freeBody(b, scene.spacing);
+        if (b.motion.type == sph::MotionType::PRESCRIBED) body = prescribedBody(b, scene.spacing);
+        addSprings(b.motion, body);
+        body.name = bodyName(scene, i);
+        body.state.position = body.initialPosition;
+        out->bodies.push_back(std::move(body));
+    }
+    if (!out->anyMoves()) return nullptr;
+    return out;
+}
+
+template <int Dim>
+std::string bodyName(const Scene<Dim>& scene, std::size_t i) {
+    const std::string& name = scene.bodies[i].name;
+    return name.empty() ? "bodies[" + std::to_string(i) + "]" : name;
+}
+
+template <int Dim>
+double bodyVolume(const Body<Dim>& body, double dx) {
+    return shapeMass(body, dx).volume;
+}
+
+template std::shared_ptr<sph::MovingBodies<2>> makeMovingBodies<2>(const Scene<2>&);
+template std::shared_ptr<sph::MovingBodies<3>> makeMovingBodies<3>(const Scene<3>&);
+template std::string bodyName<2>(const Scene<2>&, std::size_t);
+template std::string bodyName<3>(const Scene<3>&, std::size_t);
+template double bodyVolume<2>(const Body<2>&, double);
+template double bodyVolume<3>(const Body<3>&, double);
+
+}  // namespace num::io

@@ -1,0 +1,197 @@
+// The rigid-body equations of motion (sph/bodies/rigid_body.hpp) against closed forms.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "sph/bodies/moving_bodies.hpp"
+
+using namespace num;
+using namespace num::sph;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+BodyMotion<2> freeDisc(double mass, double radius) {
+    BodyMotion<2> m;
+    m.type = MotionType::FREE;
+    m.mass = mass;
+    m.inertia.zz = mass * radius * radius / 2;
+    return m;
+}
+
+/// The time of the first upward crossing of zero of f after `from` steps (linear interpolation).
+template <class Step, class Value>
+double period(Step&& step, Value&& value, double dt, int steps) {
+    double previous = value(), t = 0, first = -1;
+    for (int n = 0; n < steps; ++n) {
+        step();
+        t += dt;
+        const double now = value();
+        if (previous < 0 && now >= 0) {
+            const double crossing = t - dt * now / (now - previous);
+            if (first >= 0) return crossing - first;
+            first = crossing;
+        }
+        previous = now;
+    }
+    return -1;
+}
+
+}  // namespace
+
+TEST(RigidBody, AttitudeTurnsAndTurnsBack) {
+    Attitude<2> a2;
+    a2.turn(Spin<2>{{pi / 2}}, 1.0);
+    const Vector<2> y = a2.rotate(Vector<2>{{1, 0}});
+    EXPECT_NEAR(y[0], 0, 1e-15);
+    EXPECT_NEAR(y[1], 1, 1e-15);
+    Attitude<3> a3;
+    a3.turn(Spin<3>{{0, 0, pi / 2}}, 1.0);
+    const Vector<3> y3 = a3.rotate(Vector<3>{{1, 0, 0}});
+    EXPECT_NEAR(y3[0], 0, 1e-15);
+    EXPECT_NEAR(y3[1], 1, 1e-15);
+    a3.turn(Spin<3>{{0.3, -0.2, 0.7}}, 0.9);
+    const Vector<3> r{{0.1, -2, 0.5}}, back = a3.rotateBack(a3.rotate(r));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(back[k], r[k], 1e-14);
+    EXPECT_NEAR(norm(a3.rotate(r)), norm(r), 1e-14);
+}
+
+// Symplectic Euler under a constant g: V_n = n g dt, X_n = g dt^2 n (n + 1) / 2.
+TEST(RigidBody, FreeFallIsSymplecticEuler) {
+    const BodyMotion<2> m = freeDisc(3, 0.1);
+    BodyState<2> s;
+    const Vector<2> g{{0, -9.81}};
+    const double dt = 1e-3;
+    const int n = 500;
+    for (int k = 0; k < n; ++k) advanceFree(m, s, Vector<2>{}, Spin<2>{}, g, dt);
+    EXPECT_NEAR(s.velocity[1], -9.81 * n * dt, 1e-12);
+    EXPECT_NEAR(s.position[1], -9.81 * dt * dt * n * (n + 1) / 2, 1e-12);
+    EXPECT_EQ(s.spin[0], 0);
+}
+
+TEST(RigidBody, HeldAxesAndSpinStayAtRest) {
+    BodyMotion<2> m = freeDisc(1, 0.1);
+    m.heldAxes = {false, true};
+    m.heldSpins = {true};
+    BodyState<2> s;
+    for (int k = 0; k < 10; ++k)
+        advanceFree(m, s, Vector<2>{{1, 1}}, Spin<2>{{1}}, Vector<2>{{0, -9.81}}, 0.01);
+    EXPECT_GT(s.position[0], 0);
+    EXPECT_EQ(s.position[1], 0);
+    EXPECT_EQ(s.attitude.angle, 0);
+}
+
+// A prescribed constant velocity travels exactly V t; a cosine one its integral to O(dt^2).
+TEST(RigidBody, PrescribedMotionTravelsItsIntegral) {
+    BodyMotion<2> m;
+    m.type = MotionType::PRESCRIBED;
+    m.velocity = [](Float t) { return Vector<2>{{0.3, 0.05 * std::cos(2 * pi * t)}}; };
+    m.spin = [](Float) { return Spin<2>{{2}}; };
+    BodyState<2> s;
+    const double dt = 1e-3;
+    for (int k = 1; k <= 700; ++k) advancePrescribed(m, s, k * dt, dt);
+    EXPECT_NEAR(s.position[0], 0.3 * 0.7, 1e-14);
+    // The midpoint rule's bound: dt^2 / 24 t max|v''| = 1e-6 / 24 0.7 0.05 (2 pi)^2 = 5.8e-8.
+    EXPECT_NEAR(s.position[1], 0.05 * std::sin(2 * pi * 0.7) / (2 * pi), 5.8e-8);
+    EXPECT_NEAR(s.attitude.angle, 1.4, 1e-13);
+    EXPECT_EQ(s.velocity[0], 0.3);
+}
+
+// A mass on a spring: T = 2 pi sqrt(M / k) (within 0.1 %).
+TEST(RigidBody, SpringOscillatesAtItsPeriod) {
+    BodyMotion<2> m = freeDisc(2, 0.05);
+    m.springs.push_back({.anchor = Vector<2>{{-1, 0}}, .stiffness = 50, .restLength = 1});
+    BodyState<2> s;
+    s.position = Vector<2>{{0.1, 0}};
+    const double dt = 1e-4;
+    const double T = period([&] { advanceFree(m, s, Vector<2>{}, Spin<2>{}, Vector<2>{}, dt); },
+                            [&] { return s.position[0]; }, dt, 100000);
+    EXPECT_NEAR(T, 2 * pi * std::sqrt(2.0 / 50), 1e-3 * T);
+}
+
+// A mooring line is slack when shorter than its rest length.
+TEST(RigidBody, MooringLinePullsOnlyWhenTaut) {
+    BodyMotion<2> m = freeDisc(1, 0.1);
+    m.springs.push_back(
+        {.anchor = Vector<2>{{0, -1}}, .stiffness = 100, .restLength = 1, .slack = true});
+    BodyState<2> s;
+    s.position = Vector<2>{{0, -0.5}};
+    Vector<2> f{};
+    Spin<2> tau{};
+    addSpringLoads(m, s, f, tau);
+    EXPECT_EQ(f[1], 0);
+    s.position = Vector<2>{{0, 0.1}};
+    addSpringLoads(m, s, f, tau);
+    EXPECT_NEAR(f[1], -10, 1e-12);
+}
+
+// A rod hinged at one end, a compound pendulum: T = 2 pi sqrt(I_P / (M g d)) for small angles,
+// I_P = M L^2 / 3, d = L / 2 (within 0.5 %).
+TEST(RigidBody, HingedRodSwingsAsACompoundPendulum) {
+    const double M = 1.5, L = 0.4;
+    BodyMotion<2> m;
+    m.type = MotionType::FREE;
+    m.mass = M;
+    m.hinged = true;
+    m.centerOfMass = Vector<2>{{0, -L / 2}};
+    m.inertia.zz = M * L * L / 12;
+    m.inertia = m.inertia.shifted(M, m.centerOfMass);
+    BodyState<2> s;
+    s.spin = Spin<2>{{0.05}};
+    const double dt = 1e-4;
+    const double T = period(
+        [&] {
+            advanceFree(m, s, Vector<2>{}, Spin<2>{}, Vector<2>{{0, -9.81}}, dt);
+        },
+        [&] { return s.spin[0]; }, dt, 100000);
+    EXPECT_NEAR(T, 2 * pi * std::sqrt(M * L * L / 3 / (M * 9.81 * L / 2)), 5e-3 * T);
+    EXPECT_EQ(s.position[0], 0);
+    EXPECT_EQ(s.position[1], 0);
+}
+
+// Without torque a spinning 3D body keeps its angular momentum (to 1e-3 over 2,000 steps).
+TEST(RigidBody, TorqueFreeSpinKeepsItsMomentum) {
+    BodyMotion<3> m;
+    m.type = MotionType::FREE;
+    m.mass = 1;
+    m.inertia = Inertia<3>::diagonal(Vector<3>{{1, 2, 3}});
+    BodyState<3> s;
+    s.spin = Spin<3>{{0.1, 1, 0.1}};
+    const Spin<3> L0 = m.inertia.momentum(s.spin, s.attitude);
+    for (int k = 0; k < 2000; ++k) advanceFree(m, s, Vector<3>{}, Spin<3>{}, Vector<3>{}, 1e-3);
+    const Spin<3> L = m.inertia.momentum(s.spin, s.attitude);
+    EXPECT_NEAR(norm(L - L0), 0, 1e-3 * norm(L0));
+}
+
+TEST(RigidBody, InertiaInverseAndParallelAxes) {
+    Inertia<3> I = Inertia<3>::diagonal(Vector<3>{{1, 2, 3}});
+    I.rows[0][1] = I.rows[1][0] = 0.3;
+    EXPECT_TRUE(I.positive());
+    const Attitude<3> q;
+    const Spin<3> w{{0.2, -1, 0.5}}, back = I.spin(I.momentum(w, q), q);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(back[k], w[k], 1e-14);
+    const Inertia<3> P =
+        Inertia<3>::diagonal(Vector<3>{{1, 1, 1}}).shifted(2, Vector<3>{{0, 0, 1}});
+    EXPECT_DOUBLE_EQ(P.rows[0][0], 3);
+    EXPECT_DOUBLE_EQ(P.rows[2][2], 1);
+    Inertia<3> notSymmetric = I;
+    notSymmetric.rows[0][2] = 0.1;
+    EXPECT_FALSE(notSymmetric.positive());
+}
+
+TEST(RigidBody, StatesSaveAndRestore) {
+    MovingBodies<3> bodies;
+    bodies.bodies.resize(2);
+    bodies.bodies[1].state.position = Vector<3>{{1, 2, 3}};
+    bodies.bodies[1].state.attitude.turn(Spin<3>{{0.1, 0.2, 0.3}}, 1);
+    bodies.bodies[0].state.spin = Spin<3>{{4, 5, 6}};
+    MovingBodies<3> copy;
+    copy.bodies.resize(2);
+    copy.restore(bodies.save());
+    EXPECT_EQ(copy.bodies[0].state, bodies.bodies[0].state);
+    EXPECT_EQ(copy.bodies[1].state, bodies.bodies[1].state);
+    copy.bodies.resize(3);
+    EXPECT_THROW(copy.restore(bodies.save()), std::invalid_argument);
+}

@@ -59,6 +59,10 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
     checkRunLimits(p.scene, setup, p.options.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(p.scene, setup);
     checkInitialState(p.scene, setup, initial);
+    for (const std::string& w : setUpWarnings(p.scene, setup, initial)) {
+        p.warn(w);
+        p.scene.warnings.push_back(w);  // and in summary.json
+    }
     if (p.comm.size() > 1 && sph::evaluationFromName(setup.settings.template get<std::string>(
                                  "evaluation")) == sph::Evaluation::SYMMETRIC)
         throw AppError(ExitCode::USAGE,

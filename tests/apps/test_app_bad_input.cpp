@@ -324,6 +324,33 @@ TEST(BadInput, TemperatureBelowAbsoluteZeroDuringTheRun) {
     EXPECT_EQ(summary["status"], "unstable");
 }
 
+// Water at 20,000 degC and a run of some 1e8 steps were accepted without a word (issue 57):
+// each is a warning before the run, also in summary.json.
+TEST(BadInput, SceneAtTheEdgeOfSenseIsWarnedAbout) {
+    json j = tiny();
+    j["fluids"][0]["temperature"] = 20000;
+    j["bodies"][0]["temperature"] = -50;
+    j["materials"]["water"]["sound_speed"] = 1e6;  // the largest allowed: dt = 6.5e-9 s
+    j["output"]["formats"] = {"csv"};
+    j["output"]["images"] = false;
+    const std::string dir = freshDir("bad_edge_of_sense");
+    writeFile(dir + "/scene.json", j.dump());
+    // Stopped after its first step (NUMERICS_TEST_SIGNAL): the warnings come before the run.
+    const Result r = run("/usr/bin/env",
+                         "NUMERICS_TEST_SIGNAL=2:1 '" + std::string(FLUID_SIM) +
+                             "' scene.json --out out --end-time 1",
+                         dir);
+    EXPECT_EQ(r.code, 130) << r.output;
+    const char* parts[] = {
+        "warning: scene.json: fluids[0].temperature: 20000 degC is outside -20 to 200 degC",
+        "warning: scene.json: bodies[0].temperature: -50 degC is outside",
+        "warning: scene.json: time.end: the run takes about 1.5e+08 steps or more"};
+    for (const char* p : parts)
+        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
+    const json summary = json::parse(readFile(dir + "/out/summary.json"));
+    EXPECT_TRUE(contains(summary["warnings"].dump(), "1.5e+08 steps")) << summary.dump();
+}
+
 // A symbolic link in a loop (or to nothing) in ./scenes aborted --list-scenes (issue 47).
 TEST(BadInput, ListScenesPastBrokenLinks) {
     const std::string dir = freshDir("bad_list_scenes");

@@ -276,7 +276,20 @@ void checkMeshFile(const std::string& path) {
     if (got == 84 && size == 84 + 50 * std::uintmax_t(n)) return;
     std::size_t first = 0;
     while (first < got && std::isspace(static_cast<unsigned char>(head[first]))) ++first;
-    if (got - first >= 5 && std::memcmp(head + first, "solid", 5) == 0) return;
+    if (got - first >= 5 && std::memcmp(head + first, "solid", 5) == 0) {
+        // An ASCII STL without a facet: assimp's answer ("orphaned meshes") would not say so.
+        in.clear();
+        in.seekg(0);
+        std::string chunk(1 << 16, '\0'), tail;
+        while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0) {
+            const std::string text = tail + chunk.substr(0, std::size_t(in.gcount()));
+            if (text.find("facet") != std::string::npos) return;
+            tail = text.substr(text.size() - std::min<std::size_t>(text.size(), 4));
+        }
+        throw GeometryError(path +
+                            ": the file holds no triangles (an ASCII STL without a "
+                            "facet): give a surface mesh of triangles");
+    }
     refuse(path, got == 84 ? "neither an ASCII STL (it does not start with 'solid') nor a binary "
                              "STL (its 84 + 50 x " +
                                  std::to_string(n) +

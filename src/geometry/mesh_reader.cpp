@@ -11,11 +11,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <map>
+#include <unordered_map>
+#include <vector>
 
 #include "geometry/mesh_file_check.hpp"
 #include "geometry/triangle_mesh.hpp"
@@ -31,6 +35,72 @@ int vertexAt(TriangleMesh& mesh, std::map<std::array<double, 3>, int>& index, co
     const auto [it, added] = index.try_emplace(key, int(mesh.vertices.size()));
     if (added) mesh.vertices.push_back(Point<3>{{key[0], key[1], key[2]}});
     return it->second;
+}
+
+/// Corners closer than this fraction of the mesh's bounding-box diagonal are one corner.
+constexpr double kWeldTolerance = 1e-8;
+
+/// Joins the corners closer than kWeldTolerance times the mesh's size, as a mesh exported from
+/// CAD needs (a cylinder whose seam has sin(2 pi) = -2.4e-16 where its start has 0): cells of
+/// that size, each corner joined to the first one within the tolerance in its cell or the 26
+/// around it. Triangles that collapse (two corners joined) are left out; corners no triangle
+/// uses are dropped.
+void weldCorners(TriangleMesh& mesh) {
+    if (mesh.vertices.empty()) return;
+    Point<3> lo = mesh.vertices[0], hi = lo;
+    for (const Point<3>& v : mesh.vertices)
+        for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
+    double diagonal2 = 0;
+    for (int k = 0; k < 3; ++k) diagonal2 += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    const double tol = kWeldTolerance * std::sqrt(diagonal2);
+    if (!(tol > 0) || !std::isfinite(tol)) return;
+    using Cell = std::array<long long, 3>;
+    struct CellHash {
+        std::size_t operator()(const Cell& c) const {
+            return std::size_t(c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
+        }
+    };
+    std::unordered_map<Cell, std::vector<int>, CellHash> cells;
+    std::vector<int> joined(mesh.vertices.size());
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const Point<3>& v = mesh.vertices[i];
+        Cell c;
+        for (int k = 0; k < 3; ++k) c[k] = (long long)std::floor((v[k] - lo[k]) / tol);
+        int found = -1;
+        for (int dx = -1; dx <= 1 && found < 0; ++dx)
+            for (int dy = -1; dy <= 1 && found < 0; ++dy)
+                for (int dz = -1; dz <= 1 && found < 0; ++dz) {
+                    const auto it = cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it == cells.end()) continue;
+                    for (int j : it->second) {
+                        double d2 = 0;
+                        for (int k = 0; k < 3; ++k)
+                            d2 += (v[k] - mesh.vertices[j][k]) * (v[k] - mesh.vertices[j][k]);
+                        if (d2 <= tol * tol) {
+                            found = j;
+                            break;
+                        }
+                    }
+                }
+        if (found < 0) cells[c].push_back(int(i)), found = int(i);
+        joined[i] = found;
+    }
+    // The triangles on the joined corners, without the collapsed ones; the corners renumbered.
+    std::vector<int> number(mesh.vertices.size(), -1);
+    TriangleMesh out;
+    for (const auto& t : mesh.triangles) {
+        const std::array<int, 3> u{joined[t[0]], joined[t[1]], joined[t[2]]};
+        if (u[0] == u[1] || u[1] == u[2] || u[0] == u[2]) continue;
+        std::array<int, 3> r;
+        for (int c = 0; c < 3; ++c) {
+            if (number[u[c]] < 0)
+                number[u[c]] = int(out.vertices.size()),
+                out.vertices.push_back(mesh.vertices[u[c]]);
+            r[c] = number[u[c]];
+        }
+        out.triangles.push_back(r);
+    }
+    mesh = std::move(out);
 }
 
 /// Every triangle of the file, read by assimp in this process.
@@ -50,11 +120,20 @@ TriangleMesh readWithAssimp(const std::string& path) {
             const aiFace& face = part.mFaces[f];
             if (face.mNumIndices != 3) continue;  // points and lines of the file
             std::array<int, 3> t;
-            for (int c = 0; c < 3; ++c)
-                t[c] = vertexAt(mesh, index, part.mVertices[face.mIndices[c]]);
+            for (int c = 0; c < 3; ++c) {
+                const aiVector3D& p = part.mVertices[face.mIndices[c]];
+                if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                    throw GeometryError(
+                        path + ": triangle " + std::to_string(mesh.triangles.size()) +
+                        " has a corner that is not a finite point (" + std::to_string(p.x) + ", " +
+                        std::to_string(p.y) + ", " + std::to_string(p.z) +
+                        "): give every vertex as finite numbers");
+                t[c] = vertexAt(mesh, index, p);
+            }
             mesh.triangles.push_back(t);
         }
     }
+    weldCorners(mesh);
     if (mesh.triangles.empty())
         throw GeometryError(path +
                             ": the file holds no triangles: give a surface mesh of triangles");

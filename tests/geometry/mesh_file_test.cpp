@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "geometry/mesh_file_check.hpp"
 #include "geometry/mesh_solid.hpp"
@@ -146,3 +148,51 @@ TEST(MeshFile, LimitsAreThoseDocumented) {
 }
 
 }  // namespace
+
+namespace {
+
+/// An ASCII STL of the triangles `faces`, each three "x y z" corners.
+std::string asciiStl(const std::vector<std::array<std::string, 3>>& faces) {
+    std::string s = "solid t\n";
+    for (const auto& f : faces)
+        s += "facet normal 0 0 0\n outer loop\n vertex " + f[0] + "\n vertex " + f[1] +
+             "\n vertex " + f[2] + "\n endloop\nendfacet\n";
+    return s + "endsolid t\n";
+}
+
+/// The message of readMesh, then checkClosedVolume, on `path` ("" when both accept it).
+std::string closedRefusal(const std::string& path) {
+    try {
+        TriangleMesh m = readMesh(path);
+        checkClosedVolume(m, path);
+    } catch (const GeometryError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+// Diagnostics that named another fault (issue 57): a NaN corner was "not closed" or "zero area"
+// on another triangle, an empty ASCII STL assimp's "orphaned meshes"; a seam whose corners
+// differ by 1e-16 (sin 2 pi is not 0) was "not closed: 3 open edges".
+TEST(MeshDiagnostics, NameTheFault) {
+    const std::string nanCorner =
+        closedRefusal(write("nan.stl", asciiStl({{"0 0 0", "0 1 0", "1 0 0"},
+                                                 {"0 0 0", "1 0 0", "0 0 1"},
+                                                 {"0 0 0", "0 0 1", "0 1 0"},
+                                                 {"1 0 0", "0 1 0", "nan 0 1"}})));
+    EXPECT_NE(nanCorner.find("triangle 3 has a corner that is not a finite point"),
+              std::string::npos)
+        << nanCorner;
+    const std::string empty =
+        closedRefusal(write("empty.stl", "solid nothing\nendsolid nothing\n"));
+    EXPECT_NE(empty.find("holds no triangles"), std::string::npos) << empty;
+    // The tetrahedron's corner (0, 0, 0) written as -2.4e-16 in two of its triangles.
+    const std::string seam = "-2.4492935982947064e-16 0 0";
+    EXPECT_EQ(closedRefusal(write("seam.stl", asciiStl({{"0 0 0", "0 1 0", "1 0 0"},
+                                                        {seam, "1 0 0", "0 0 1"},
+                                                        {seam, "0 0 1", "0 1 0"},
+                                                        {"1 0 0", "0 1 0", "0 0 1"}}))),
+              "");
+}

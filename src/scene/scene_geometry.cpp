@@ -6,6 +6,7 @@
 #include "io/formatted.hpp"
 #include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
+#include "scene/run_limits.hpp"
 #include "sph/setup/particle_generation.hpp"
 
 namespace num::io {
@@ -250,6 +251,10 @@ bool holdsLatticePoint(const Scene<Dim>& s, const SceneShape<Dim>& shape) {
     bool found = false;
     SceneVec<Dim> lo, hi;
     latticeCellsAround(s, placed.bounds(), lo, hi);
+    // More points than the set-up may visit: the run's limits refuse the scene (run_limits.hpp).
+    double points = 1;
+    for (int k = 0; k < Dim; ++k) points *= std::round((hi[k] - lo[k]) / s.spacing);
+    if (points > kMaxLatticePoints) return true;
     // Once a point is found the rest of the lattice is walked without asking the shape.
     sph::forEachLatticePoint<Dim>(lo, hi, s.spacing, [&](const SceneVec<Dim>& x) {
         found = found || placed.signedDistance(x) < 0;

@@ -93,8 +93,8 @@ TEST(BadInput, FluidBlockOutsideTheDomain) {
 // A block fills its volume outside every body; one wholly inside a body holds no particle.
 TEST(BadInput, FluidBlockInsideABody) {
     json j = tiny();
-    j["fluids"][0]["min"] = {0.14, 0.03};
-    j["fluids"][0]["max"] = {0.16, 0.05};
+    j["fluids"][0]["min"] = {0.135, 0.025};  // lattice points (0.15, 0.03) and (0.15, 0.05)
+    j["fluids"][0]["max"] = {0.165, 0.055};
     expectMessage(runScene("inside_body", j.dump()), kScene,
                   {"fluids[0]", "holding particles", "outside every body"});
 }
@@ -279,7 +279,7 @@ TEST(BadInput, EndlessFilesAreNotReadWhole) {
                   {"/dev/zero", "not a numerics checkpoint"});
     // A header that promises more than the file holds: refused from the header.
     std::string header("NUMSPHCK", 8);
-    const std::uint32_t version = 3, dim = 2, crc = 0, spare = 0;
+    const std::uint32_t version = num::io::kCheckpointVersion, dim = 2, crc = 0, spare = 0;
     const std::uint64_t size = std::uint64_t(1) << 60;
     for (const auto& [p, n] : {std::pair<const void*, std::size_t>{&version, 4},
                                {&dim, 4},

@@ -44,4 +44,24 @@ void appendToFile(const std::string& path, std::string_view text);
 /// writable.
 void makeOutputDirectory(const std::string& dir);
 
+/// The name of the lock file in an output directory.
+inline constexpr const char* kOutputLockName = ".numerics.lock";
+
+/// The lock of an output directory, held while a run writes there: an exclusive flock on
+/// `<dir>/.numerics.lock` (which holds the process id and stays when the run ends), so that
+/// a second run writing the directory at the same time, in this process or another, is
+/// refused (AppError OUTPUT) naming the process that holds it. The lock goes with the process
+/// however it ends. On a file system without locks (some network file systems) the run goes
+/// on without one.
+class OutputLock {
+  public:
+    explicit OutputLock(const std::string& dir);
+    ~OutputLock();
+    OutputLock(const OutputLock&) = delete;
+    OutputLock& operator=(const OutputLock&) = delete;
+
+  private:
+    int fd_ = -1;
+};
+
 }  // namespace num::io

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/fields.hpp"
+#include "io/file.hpp"
 #include "io/output_writer.hpp"
 #include "io/render.hpp"
 #include "io/scene_setup.hpp"
@@ -45,6 +46,9 @@ class Outputs {
 
     /// The end of a run: the probe plot, and the movie when the run completed.
     EndOfRun finish(bool completed) const;
+    /// Releases the output directory's lock (start() and resume() take it, so that a second
+    /// run writing the directory at once is refused): after the run's last file.
+    void releaseLock() { lock_.reset(); }
     /// The files the run made and what they hold, for the lines printed at its end.
     std::vector<WrittenFile> files() const;
 
@@ -70,6 +74,7 @@ class Outputs {
     std::vector<std::unique_ptr<IWriter<Dim>>> writers_;  ///< formats, pictures, probes
     const PicturesWriter<Dim>* pictures_ = nullptr;       ///< among writers_, or none
     std::string earlierRunNote_;
+    std::unique_ptr<OutputLock> lock_;  ///< while the run writes the directory
 };
 
 /// Whether an executable is on the PATH.

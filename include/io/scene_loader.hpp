@@ -29,8 +29,13 @@ class SceneDocument {
     int dimension() const;
     const std::string& file() const { return file_; }
     const nlohmann::json& json() const { return json_; }
-    /// The document as text (stored in checkpoints).
+    /// The document as text.
     std::string dump() const { return json_.dump(1); }
+    /// The document as a checkpoint stores it: every relative file a shape reads (`mesh`,
+    /// `section`) and every relative plugin library made absolute, resolved from the scene
+    /// file's directory, so that a restart from the checkpoint alone finds them wherever the
+    /// checkpoint is.
+    std::string dumpWithAbsolutePaths() const;
 
   private:
     std::string file_;

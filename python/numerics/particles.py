@@ -7,6 +7,7 @@ longer uses): it is never a dangling pointer, and writing into it changes nothin
 """
 import numpy as np
 
+from . import _arguments
 from .errors import StaleParticlesError
 
 _STANDARD = ("position", "velocity", "density", "pressure", "temperature", "mass", "id", "kind",
@@ -35,6 +36,9 @@ class Particles:
 
     def field(self, name):
         """The array of field `name` (ValueError, naming the fields, when there is none)."""
+        if not isinstance(name, str):
+            raise TypeError(f"particles: name: expected a field's name (str), found "
+                            f"{_arguments.found(name)}")
         self._check()
         return self._driver.view(name, self._writable)
 

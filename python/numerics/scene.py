@@ -2,7 +2,7 @@
 import json
 import os
 
-from . import _numerics
+from . import _arguments, _numerics
 from ._paths import SCENES_DIR
 from .errors import RunError, SceneError
 
@@ -17,18 +17,29 @@ class Scene:
         elif isinstance(scene, dict):
             self._doc = _numerics.SceneDocument.from_text(json.dumps(scene), _file)
         else:
-            raise TypeError("Scene(dict) or Scene.load(path); found " + type(scene).__name__)
+            _arguments.refuse("scene", "a dict (or Scene.load(path) for a file)", scene,
+                              SceneError)
 
     @classmethod
     def load(cls, path):
         """Reads and parses a scene file (SceneError: exit codes 3 and 4)."""
-        return cls(_numerics.SceneDocument.from_file(os.fspath(path)))
+        path = _arguments.path("path", path, SceneError)
+        return cls(_numerics.SceneDocument.from_file(path))
 
     def set(self, path, value):
         """Sets the value at a dotted path ("materials.water.viscosity", "fluids.0.temperature")
         to any JSON-able value. Returns the scene."""
+        if not isinstance(path, str) or not path:
+            _arguments.refuse("path", 'a dotted path such as "particles.spacing"', path,
+                              SceneError)
         try:
-            self._doc.set(f"{path}={json.dumps(value)}")
+            text = json.dumps(value, allow_nan=False)
+        except (TypeError, ValueError) as e:
+            raise SceneError(f"value: expected a JSON value (a finite number, a string, a bool, "
+                             f"None, a list or a dict of them), found {_arguments.found(value)}"
+                             f" ({e})", 2) from None
+        try:
+            self._doc.set(f"{path}={text}")
         except RunError as e:  # the apps' usage errors of --set: a mistake in the scene here
             raise SceneError(e.message, e.exit_code) from None
         return self

@@ -1,12 +1,11 @@
 """numerics.Simulation: a scene's run, as fluid_sim and fluid_sim_3d run it."""
 import csv
 import json
-import math
 import os
 
 import numpy as np
 
-from . import _numerics
+from . import _arguments, _numerics
 from .errors import RunError
 from .particles import Particles
 from .scene import Scene
@@ -18,13 +17,28 @@ def _usage(message):
     return RunError(message, 2)
 
 
-def _checked_options(threads, end_time, backend):
-    if threads is not None and (not isinstance(threads, int) or not 1 <= threads <= 1024):
-        raise _usage(f"threads: expected a whole number from 1 to 1024, found {threads!r}")
-    if end_time is not None and not (math.isfinite(end_time) and end_time > 0):
-        raise _usage(f"end_time: expected a finite number > 0, found {end_time!r}")
-    if backend is not None and backend not in _BACKENDS:
-        raise _usage(f"backend: expected one of {', '.join(_BACKENDS)}, found {backend!r}")
+def _checked_options(threads, out, quiet, end_time, backend):
+    """The options of Simulation(), each checked by name (RunError, exit code 2)."""
+    if threads is not None:
+        threads = _arguments.whole("threads", threads, 1, 1024)
+    if out is not None:
+        out = _arguments.path("out", out)
+    quiet = _arguments.flag("quiet", quiet)
+    if end_time is not None:
+        end_time = _arguments.number("end_time", end_time, positive=True)
+    if backend is not None and (not isinstance(backend, str) or backend not in _BACKENDS):
+        _arguments.refuse("backend", f"one of {', '.join(_BACKENDS)}", backend)
+    return threads, out, quiet, end_time, backend
+
+
+def _scene_of(scene):
+    if isinstance(scene, Scene):
+        return scene
+    if isinstance(scene, dict):
+        return Scene(scene)
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.load(scene)
+    _arguments.refuse("scene", "a numerics.Scene, a dict or a scene file's path", scene)
 
 
 class Simulation:
@@ -37,14 +51,13 @@ class Simulation:
     """
 
     def __init__(self, scene, threads=None, out=None, quiet=False, end_time=None, backend=None):
-        if not isinstance(scene, Scene):
-            scene = Scene(scene) if isinstance(scene, dict) else Scene.load(scene)
-        _checked_options(threads, end_time, backend)
+        threads, out, quiet, end_time, backend = _checked_options(threads, out, quiet, end_time,
+                                                                  backend)
+        scene = _scene_of(scene)
         kind = _numerics.Simulation3 if scene.dimension == 3 else _numerics.Simulation2
         self.scene = scene
         self.dimension = scene.dimension
-        self._driver = kind(scene._doc, threads or 0, None if out is None else os.fspath(out),
-                            bool(quiet), end_time, backend)
+        self._driver = kind(scene._doc, threads or 0, out, quiet, end_time, backend)
 
     @property
     def time(self):
@@ -83,9 +96,7 @@ class Simulation:
         Jupyter). Ctrl-C stops the run cleanly (its end written as interrupted), then raises
         KeyboardInterrupt.
         """
-        target = self.end_time if until is None else min(float(until), self.end_time)
-        if every is not None and not (math.isfinite(every) and every > 0):
-            raise _usage(f"every: expected a finite number > 0, found {every!r}")
+        target, every = self._checked_run(until, every, callback, progress)
         call = None if callback is None else (lambda: callback(self))
         bar = self._progress_bar(target) if progress and not self.finished else None
         update = None if bar is None else (lambda: self._advance_bar(bar))
@@ -95,6 +106,30 @@ class Simulation:
             if bar is not None:
                 self._advance_bar(bar)
                 bar.close()
+
+    def _checked_run(self, until, every, callback, progress):
+        """run()'s arguments, each checked by name (RunError, exit code 2): the time to run to
+        and the interval of the callback (None: after every step)."""
+        now, end = self.time, self.end_time
+        target = end
+        if until is not None:
+            until = _arguments.number("until", until, positive=True)
+            if until < now - 1e-9 * max(abs(now), 1e-300):
+                _arguments.refuse("until", f"a time from the run's time now, {now:g} s, on",
+                                  until, extra=": a run does not go back")
+            target = min(until, end)
+        if every is not None:
+            every = _arguments.number("every", every, positive=True)
+            calls = (target - now) / every
+            if every < 1e-9 * end or calls > _arguments.MAX_CALLBACKS:
+                least = max(1e-9 * end, (target - now) / _arguments.MAX_CALLBACKS)
+                _arguments.refuse(
+                    "every", f"an interval of at least {least:g} s", every,
+                    extra=f": it would call back {calls:.3g} times from {now:g} s to {target:g} "
+                    f"s (at most {_arguments.MAX_CALLBACKS:g}, each a step landing on its time)")
+        _arguments.callable_or_none("callback", callback)
+        _arguments.flag("progress", progress)
+        return target, every
 
     def _progress_bar(self, target):
         from tqdm.auto import tqdm

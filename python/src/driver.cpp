@@ -43,7 +43,18 @@ Driver<Dim>::Driver(const io::SceneDocument& doc, const io::RunOptions& options)
 }
 
 template <int Dim>
+void Driver<Dim>::checkSameThread(const char* what) const {
+    if (runner_ && *runner_ != std::this_thread::get_id())
+        throw io::AppError(io::ExitCode::USAGE,
+                           std::string(what) +
+                               " cannot be called while another thread runs this Simulation "
+                               "(its step() or run()): drive one Simulation from one thread at "
+                               "a time, or wait for that call to return");
+}
+
+template <int Dim>
 void Driver<Dim>::checkCanStep() const {
+    checkSameThread("step() and run()");
     if (armed_)
         throw io::AppError(io::ExitCode::USAGE,
                            "step() and run() cannot be called from a callback of run(): return "
@@ -61,13 +72,20 @@ void Driver<Dim>::checkCanStep() const {
 template <int Dim>
 double Driver<Dim>::step() {
     checkCanStep();
+    const Running running(runner_);
     py::gil_scoped_release released;
     return sim_.step();
 }
 
 template <int Dim>
 int Driver<Dim>::advance(double until, double every, py::object callback, py::object progress) {
-    if (finished_ || armed_) checkCanStep();
+    if (finished_ || armed_ || runner_) checkCanStep();
+    if (!std::isfinite(until) || !std::isfinite(every) || every < 0)
+        throw io::AppError(io::ExitCode::USAGE,
+                           "run: until and every must be finite (every >= 0), found until = " +
+                               io::formatted("%g", until) +
+                               ", every = " + io::formatted("%g", every));
+    const Running running(runner_);
     armed_ = true, every_ = every, callback_ = std::move(callback), progress_ = std::move(progress);
     nextCall_ = every_ > 0 ? (std::floor(sim_.time() / every_ + 1e-9) + 1) * every_ : 0;
     lastLook_ = lastProgress_ = Clock::now();
@@ -152,6 +170,7 @@ void Driver<Dim>::throwPending() {
 
 template <int Dim>
 py::array Driver<Dim>::view(const py::object& self, const std::string& name, bool writable) {
+    checkSameThread("particles");
     std::shared_ptr<ViewKeeper> keeper = views_.lock();
     if (!keeper) keeper = std::make_shared<ViewKeeper>(self), views_ = keeper;
     sph::Storage<Dim>& s =

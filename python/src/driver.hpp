@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <thread>
 
 #include "bindings.hpp"
 #include "io/simulation.hpp"
@@ -53,6 +54,17 @@ class Driver {
   private:
     using Clock = std::chrono::steady_clock;
     void checkCanStep() const;
+    /// Refuses a call from another thread while one runs step() or run().
+    void checkSameThread(const char* what) const;
+    /// Marks step() or run() as running on this thread while it lives (the GIL held at both
+    /// ends).
+    struct Running {
+        std::optional<std::thread::id>& runner;
+        explicit Running(std::optional<std::thread::id>& r) : runner(r) {
+            runner = std::this_thread::get_id();
+        }
+        ~Running() { runner.reset(); }
+    };
     void callPython(const py::object& f);
     void keepPythonError(py::error_already_set&& e);
     /// Throws the error a callback or Ctrl-C left, if any.
@@ -61,7 +73,8 @@ class Driver {
     io::Simulation<Dim> sim_;
     bool finished_ = false;
     std::uint64_t generation_ = 0;
-    std::weak_ptr<ViewKeeper> views_;  ///< of the particles as they are now
+    std::weak_ptr<ViewKeeper> views_;        ///< of the particles as they are now
+    std::optional<std::thread::id> runner_;  ///< the thread in step() or run(), if any
     // While advance() runs:
     bool armed_ = false;
     double every_ = 0;

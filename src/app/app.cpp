@@ -132,7 +132,7 @@ struct CommandLine {
     std::vector<std::string> sets;
     RunOptions options;
     double endTime = 0;
-    bool printScene = false, list = false;
+    bool printScene = false, list = false, version = false;
 };
 
 void addOptions(CLI::App& app, CommandLine& c, const AppInfo& info) {
@@ -169,16 +169,15 @@ void addOptions(CLI::App& app, CommandLine& c, const AppInfo& info) {
                    "write a checkpoint every T simulated seconds")
         ->check(finitePositive);
     app.add_flag("-q,--quiet", c.options.quiet, "print nothing but errors");
-    app.add_flag("--print-scene", c.printScene, "print the scene (after --set) as JSON and exit");
+    CLI::Option* print = app.add_flag("--print-scene", c.printScene,
+                                      "print the scene (after --set) as JSON and exit");
     app.add_flag("--list-scenes", c.list,
                  "list the shipped scenes (./scenes, else the source tree's) with the program that "
-                 "runs each, and exit");
-    app.set_version_flag("--version", info.name +
-                                          " (numerics) 0.1.0\nCUDA back end (--backend cuda): " +
-                                          (device::cudaBuilt() ? std::string("built")
-                                                               : std::string("not built (no CUDA "
-                                                                             "compiler at build "
-                                                                             "time)")));
+                 "runs each, and exit")
+        ->excludes(print);
+    // A plain flag, handled after parsing: "--version --bogus" is a bad command line (2), not
+    // the version.
+    app.add_flag("--version", c.version, "print the version and exit");
 }
 
 /// The scene to run: the file given, else the checkpoint's, else the built-in one; --set applied.
@@ -268,12 +267,20 @@ int runApp(int argc, char** argv, const AppInfo& info) {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "%s: error: %s (run '%s --help' for the options and examples)\n",
                      info.name.c_str(), e.what(), info.name.c_str());
         return int(ExitCode::USAGE);
+    }
+    if (c.version) {
+        if (argc > 2) {
+            std::fprintf(stderr, "%s: error: --version takes no other option or argument\n",
+                         info.name.c_str());
+            return int(ExitCode::USAGE);
+        }
+        std::printf("%s (numerics) 0.1.0\nCUDA back end (--backend cuda): %s\n", info.name.c_str(),
+                    device::cudaBuilt() ? "built" : "not built (no CUDA compiler at build time)");
+        return 0;
     }
     if (c.list) {
         std::error_code ec;

@@ -1,11 +1,13 @@
 #include "io/file.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 
 namespace num::io {
 
@@ -88,6 +90,34 @@ void makeOutputDirectory(const std::string& dir) {
     if (::access(dir.c_str(), W_OK) != 0)
         throw AppError(ExitCode::OUTPUT,
                        dir + ": the output directory is not writable: " + explain(errno));
+}
+
+OutputLock::OutputLock(const std::string& dir) {
+    const std::string path = dir + "/" + kOutputLockName;
+    fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0)
+        throw AppError(
+            ExitCode::OUTPUT,
+            path + ": cannot create the output directory's lock file: " + explain(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        const int e = errno;
+        if (e != EWOULDBLOCK) return;  // no locks on this file system: go on without
+        std::string holder;
+        std::getline(std::ifstream(path), holder);
+        ::close(fd_);
+        fd_ = -1;
+        throw AppError(ExitCode::OUTPUT,
+                       dir + ": the output directory is in use by another run" +
+                           (holder.empty() ? std::string() : " (process " + holder + ")") +
+                           ", which writes its files there now: give this run another --out, or "
+                           "wait until that run ends");
+    }
+    const std::string pid = std::to_string(::getpid()) + "\n";
+    if (::ftruncate(fd_, 0) == 0) (void)!::pwrite(fd_, pid.data(), pid.size(), 0);
+}
+
+OutputLock::~OutputLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
 }  // namespace num::io

@@ -185,6 +185,7 @@ void Outputs<Dim>::removeEarlierRun() {
 template <int Dim>
 void Outputs<Dim>::start() {
     makeOutputDirectory(dir_);
+    lock_ = std::make_unique<OutputLock>(dir_);  // before any file of the directory is touched
     removeEarlierRun();
     for (auto& w : writers_) w->start();
 }
@@ -192,6 +193,7 @@ void Outputs<Dim>::start() {
 template <int Dim>
 void Outputs<Dim>::resume(double t, std::vector<std::pair<double, std::string>> series) {
     makeOutputDirectory(dir_);
+    lock_ = std::make_unique<OutputLock>(dir_);
     PvdSeries kept;
     for (auto& [time, file] : series) kept.add(time, file);
     kept.truncateAfter(t);

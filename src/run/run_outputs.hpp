@@ -99,7 +99,7 @@ class CheckpointObserver final : public IStepObserver<Dim> {
         p.everyParticle(s, [&](const sph::Storage<Dim>& all) {
             onRoot(p.comm, [&] {
                 ByteWriter w;
-                w.putString(p.doc.dump());
+                w.putString(p.doc.dumpWithAbsolutePaths());
                 w.putString(p.fingerprint);
                 r.write(w);
                 writeStorage(w, all);

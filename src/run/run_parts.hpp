@@ -21,6 +21,7 @@
 #include "run/agreed_errors.hpp"
 #include "run/checkpoint_state.hpp"
 #include "run/stop_signals.hpp"
+#include "run/written_particles.hpp"
 #include "sph/timestepping.hpp"
 
 namespace num::io {
@@ -60,7 +61,8 @@ struct RunParts {
     /// count, and `storage` is brought up to date when an observer needs it.
     std::unique_ptr<device::DeviceRun<Dim>> gpu;
     bool storageCurrent = true;
-    bool hostChanged = false;  ///< a front end may have changed the particles since the step
+    bool hostChanged = false;       ///< a front end may have changed the particles since the step
+    WrittenParticles<Dim> written;  ///< what they were when handed out, to check the writes
     /// Each process keeps its share of the particles and a halo; one process keeps them all.
     std::unique_ptr<parallel::DomainDecomposition<Dim>> decomposition;
     std::optional<Emitters<Dim>> emitters;

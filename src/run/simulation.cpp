@@ -59,6 +59,10 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
     checkRunLimits(p.scene, setup, p.options.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(p.scene, setup);
     checkInitialState(p.scene, setup, initial);
+    for (const std::string& w : setUpWarnings(p.scene, setup, initial)) {
+        p.warn(w);
+        p.scene.warnings.push_back(w);  // and in summary.json
+    }
     if (p.comm.size() > 1 && sph::evaluationFromName(setup.settings.template get<std::string>(
                                  "evaluation")) == sph::Evaluation::SYMMETRIC)
         throw AppError(ExitCode::USAGE,
@@ -282,24 +286,18 @@ const sph::Storage<Dim>& Simulation<Dim>::particles() {
 template <int Dim>
 sph::Storage<Dim>& Simulation<Dim>::particlesToChange() {
     copyParticlesToHost();
+    if (!parts_->hostChanged) parts_->written.remember(parts_->storage);
     parts_->hostChanged = true;
     return parts_->storage;
 }
 
-/// Particles a front end wrote between steps: their positions must be numbers (the neighbour
-/// search bins them); on the CUDA back end they go up to the GPU again.
+/// Particles a front end wrote between steps: every written quantity is checked
+/// (written_particles.hpp); on the CUDA back end they go up to the GPU again.
 template <int Dim>
 void Simulation<Dim>::acceptChangedParticles() {
     RunParts<Dim>& p = *parts_;
+    p.written.check(p.storage, p.fieldNames);
     p.hostChanged = false;
-    const auto x = p.storage.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
-    for (std::size_t i = 0; i < x.size(); ++i)
-        for (int k = 0; k < Dim; ++k)
-            if (!std::isfinite(x[i][k]))
-                throw AppError(ExitCode::USAGE,
-                               "particle " + std::to_string(i) + " was given the position " +
-                                   formatted("%g", x[i][k]) + " on axis " + std::to_string(k) +
-                                   " between steps: write finite positions");
     if (p.gpu) p.gpu->upload(p.storage, false);
 }
 

@@ -78,6 +78,7 @@ int Simulation<Dim>::finishRun(RunEnd end) {
     onRoot(p.comm, [&] {
         addEndOfRun(end.summary, files, end.warnings);
         writeFileAtomically(p.outputs->path("summary.json"), end.summary.dump(2) + "\n");
+        p.outputs->releaseLock();  // the run's last file
     });
     // Until here a first signal only sets the flag: the video and the summary are still made.
     if (p.options.handleSignals) stop::restoreDefaults();

@@ -68,6 +68,22 @@ inline void hashShapeFiles(const nlohmann::json& v, const std::string& path,
     }
 }
 
+/// Whether a scene line names a file whose content another line holds: a shape's `file` (its
+/// content hash) or a plugin's `library` (its absolute path and content hash, "plugin i
+/// library"). Its text is left out, so that a checkpoint may store it absolute (a restart from
+/// the checkpoint alone finds it) and a restart of the scene file, relative, is the same run.
+inline bool namesHashedFile(const std::string& key, const std::map<std::string, std::string>& a,
+                            const std::map<std::string, std::string>& b) {
+    const std::string hash = key + " content (FNV-1a)";
+    if (key.ends_with(".file") && (a.count(hash) || b.count(hash))) return true;
+    const std::string prefix = "plugins[", suffix = "].library";
+    if (!key.starts_with(prefix) || !key.ends_with(suffix) ||
+        key.size() <= prefix.size() + suffix.size())
+        return false;
+    const std::string index = key.substr(prefix.size(), key.size() - prefix.size() - suffix.size());
+    return index.find_first_not_of("0123456789") == std::string::npos;
+}
+
 inline std::map<std::string, std::string> parseFingerprint(const std::string& text) {
     std::map<std::string, std::string> lines;
     std::istringstream in(text);
@@ -88,6 +104,8 @@ std::string runFingerprint(const SceneDocument& doc, const SceneSetup<Dim>& setu
     detail::flattenScene(doc.json(), "", lines);
     detail::hashShapeFiles(doc.json(), "", std::filesystem::path(doc.file()).parent_path().string(),
                            lines);
+    std::erase_if(
+        lines, [&](const auto& line) { return detail::namesHashedFile(line.first, lines, lines); });
     for (const auto& [key, spec] : setup.settings.specs()) {
         if (detail::changesNoResult("engine setting " + key)) continue;
         // Every setting is one of bool, integer, number, string: print whichever it holds.
@@ -133,7 +151,7 @@ inline void checkFingerprint(const std::string& stored, const std::string& curre
                     there + " in the checkpoint";
     };
     for (const auto& [key, value] : b) {
-        if (detail::changesNoResult(key)) continue;
+        if (detail::changesNoResult(key) || detail::namesHashedFile(key, a, b)) continue;
         const auto it = a.find(key);
         if (it == a.end())
             report(key, value, "absent");
@@ -141,7 +159,8 @@ inline void checkFingerprint(const std::string& stored, const std::string& curre
             report(key, value, it->second);
     }
     for (const auto& [key, value] : a)
-        if (!b.count(key) && !detail::changesNoResult(key)) report(key, "absent", value);
+        if (!b.count(key) && !detail::changesNoResult(key) && !detail::namesHashedFile(key, a, b))
+            report(key, "absent", value);
     if (count == 0) return;
     if (count > 3) diff += "; and " + std::to_string(count - 3) + " more";
     // The stored quantities also change with the version of numerics (or of a plugin).

@@ -97,6 +97,43 @@ SceneDocument SceneDocument::fromText(const std::string& text, const std::string
     return doc;
 }
 
+namespace {
+
+/// Makes `value` (a path relative to `dir`) absolute, where it is a relative path.
+void makeAbsolute(nlohmann::json& value, const std::filesystem::path& dir) {
+    if (!value.is_string()) return;
+    const std::filesystem::path p(value.get<std::string>());
+    if (p.empty() || p.is_absolute()) return;
+    std::error_code ec;
+    const std::filesystem::path a = std::filesystem::absolute(dir / p, ec);
+    if (!ec) value = a.lexically_normal().string();
+}
+
+/// Every shape's file (a `mesh` or `section`) under v made absolute.
+void absoluteShapeFiles(nlohmann::json& v, const std::filesystem::path& dir) {
+    if (v.is_object()) {
+        const auto shape = v.find("shape"), file = v.find("file");
+        if (shape != v.end() && file != v.end() && (*shape == "mesh" || *shape == "section"))
+            makeAbsolute(*file, dir);
+        for (auto& [key, value] : v.items()) absoluteShapeFiles(value, dir);
+    } else if (v.is_array()) {
+        for (auto& e : v) absoluteShapeFiles(e, dir);
+    }
+}
+
+}  // namespace
+
+std::string SceneDocument::dumpWithAbsolutePaths() const {
+    nlohmann::json j = json_;
+    const std::filesystem::path dir = std::filesystem::path(file_).parent_path();
+    absoluteShapeFiles(j, dir);
+    if (const auto plugins = j.find("plugins"); plugins != j.end() && plugins->is_array())
+        for (auto& plugin : *plugins)
+            if (plugin.is_object() && plugin.contains("library"))
+                makeAbsolute(plugin["library"], dir);
+    return j.dump(1);
+}
+
 void SceneDocument::set(const std::string& assignment) {
     const auto eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0)

@@ -6,6 +6,7 @@
 #include "io/formatted.hpp"
 #include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
+#include "scene/run_limits.hpp"
 #include "sph/setup/particle_generation.hpp"
 
 namespace num::io {
@@ -51,13 +52,11 @@ bool overlap(const SceneShape<Dim>& f, const SceneShape<Dim>& b, double tol) {
     return norm(f.center - b.center) < f.radius + b.radius - tol;
 }
 
-/// Calls visit(x) at the points of the particle lattice (the domain's cell centres) inside a
-/// shape, within the domain.
-template <int Dim, class Visit>
-void forEachLatticePointInside(const Scene<Dim>& s, const sph::PlacedShape<Dim>& shape,
-                               Visit&& visit) {
-    const geometry::Bounds<Dim> b = shape.bounds();
-    SceneVec<Dim> lo, hi;
+/// The cells lo..hi of the particle lattice (the domain's cells) that cover a bounding box,
+/// within the domain.
+template <int Dim>
+void latticeCellsAround(const Scene<Dim>& s, const geometry::Bounds<Dim>& b, SceneVec<Dim>& lo,
+                        SceneVec<Dim>& hi) {
     for (int k = 0; k < Dim; ++k) {
         const double cells = std::round((s.domainMax[k] - s.domainMin[k]) / s.spacing);
         const double first = std::clamp(std::floor((b.min[k] - s.domainMin[k]) / s.spacing), 0.0,
@@ -66,6 +65,15 @@ void forEachLatticePointInside(const Scene<Dim>& s, const sph::PlacedShape<Dim>&
                          std::clamp(std::ceil((b.max[k] - s.domainMin[k]) / s.spacing), 0.0, cells);
         lo[k] = s.domainMin[k] + first * s.spacing, hi[k] = s.domainMin[k] + last * s.spacing;
     }
+}
+
+/// Calls visit(x) at the points of the particle lattice (the domain's cell centres) inside a
+/// shape, within the domain.
+template <int Dim, class Visit>
+void forEachLatticePointInside(const Scene<Dim>& s, const sph::PlacedShape<Dim>& shape,
+                               Visit&& visit) {
+    SceneVec<Dim> lo, hi;
+    latticeCellsAround(s, shape.bounds(), lo, hi);
     sph::forEachLatticePoint<Dim>(lo, hi, s.spacing, [&](const SceneVec<Dim>& x) {
         if (shape.contains(x)) visit(x);
     });
@@ -235,17 +243,45 @@ void checkMovingBodyClear(const Scene<Dim>& s, std::size_t i) {
     }
 }
 
-/// Bodies lie inside the domain (a box or ball) or meet it (any other shape); walls meet it.
+/// Whether a shape holds a point of the particle lattice inside the domain: where a body or
+/// wall has its boundary particles (none: it would run as if it were not there).
+template <int Dim>
+bool holdsLatticePoint(const Scene<Dim>& s, const SceneShape<Dim>& shape) {
+    const sph::PlacedShape<Dim> placed = shape.placed();
+    bool found = false;
+    SceneVec<Dim> lo, hi;
+    latticeCellsAround(s, placed.bounds(), lo, hi);
+    // More points than the set-up may visit: the run's limits refuse the scene (run_limits.hpp).
+    double points = 1;
+    for (int k = 0; k < Dim; ++k) points *= std::round((hi[k] - lo[k]) / s.spacing);
+    if (points > kMaxLatticePoints) return true;
+    // Once a point is found the rest of the lattice is walked without asking the shape.
+    sph::forEachLatticePoint<Dim>(lo, hi, s.spacing, [&](const SceneVec<Dim>& x) {
+        found = found || placed.signedDistance(x) < 0;
+    });
+    return found;
+}
+
+/// Bodies lie inside the domain (a box or ball) or meet it (any other shape); walls meet it;
+/// each holds boundary particles.
 template <int Dim>
 void checkBodiesAndWalls(const Scene<Dim>& s) {
     auto check = [&](const SceneShape<Dim>& shape, const std::string& path, const char* what) {
         SceneVec<Dim> lo, hi;
         bounds<Dim>(shape, lo, hi);
         const bool boxOrBall = shape.shape != ShapeKind::SOLID && std::string(what) == "body";
-        if (boxOrBall ? insideDomain(s, lo, hi) : meetsDomain(s, shape)) return;
-        throw sceneError(s.file, path, std::string("a ") + what + " inside " + domainText(s),
-                         std::string("a ") + (boxOrBall ? what : "shape") + " spanning " +
-                             text<Dim>(lo) + " to " + text<Dim>(hi));
+        if (!(boxOrBall ? insideDomain(s, lo, hi) : meetsDomain(s, shape)))
+            throw sceneError(s.file, path, std::string("a ") + what + " inside " + domainText(s),
+                             std::string("a ") + (boxOrBall ? what : "shape") + " spanning " +
+                                 text<Dim>(lo) + " to " + text<Dim>(hi));
+        if (!holdsLatticePoint(s, shape))
+            throw sceneError(
+                s.file, path,
+                std::string("a ") + what +
+                    " holding boundary particles: a point of the lattice of spacing " +
+                    formatted("%g", s.spacing) + " m inside the domain and the shape",
+                "none (a shape spanning " + text<Dim>(lo) + " to " + text<Dim>(hi) + ")",
+                "make it at least one spacing thick, or refine particles.spacing");
     };
     for (std::size_t j = 0; j < s.bodies.size(); ++j)
         check(s.bodies[j], "bodies[" + std::to_string(j) + "]", "body");

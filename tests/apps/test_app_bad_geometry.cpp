@@ -145,3 +145,45 @@ TEST(BadGeometry, EmitterNozzleInsideAWall) {
     expectMessage(runScene("nozzle_in_wall", j),
                   {"emitters[0].position", "in or next to walls[0]", "move the nozzle"});
 }
+
+namespace {
+
+/// A box shape of the scene's dimension.
+json box(std::vector<double> min, std::vector<double> max) {
+    return {{"shape", "box"}, {"min", min}, {"max", max}};
+}
+
+/// A wall or body that holds no point of the particle lattice is refused naming it and the
+/// spacing, instead of running as if it were not there.
+void expectNoParticles(const std::string& name, json j, const char* key, const json& shape) {
+    const std::string list = std::string(key).substr(0, std::string(key).find('['));
+    j[list] = json::array({shape});
+    expectMessage(runScene(name, j), {key, "holding boundary particles", "spacing 0.02 m",
+                                      "found none", "refine particles.spacing"});
+}
+
+}  // namespace
+
+TEST(BadGeometry, WallOrBodyWithoutParticles) {
+    // The lattice of tiny_2d: cell centres 0.01, 0.03, ..., 0.19.
+    const json disjoint = {
+        {"shape", "intersection"},
+        {"shapes", {box({0.12, 0.02}, {0.14, 0.08}), box({0.16, 0.02}, {0.18, 0.08})}}};
+    expectNoParticles("empty_intersection", tiny2d(), "walls[0]", disjoint);
+    const json covered = {{"shape", "difference"},
+                          {"shapes", {box({0.12, 0.02}, {0.16, 0.06}), box({0.1, 0}, {0.2, 0.1})}}};
+    expectNoParticles("empty_difference", tiny2d(), "bodies[0]", covered);
+    const json thinLine = {
+        {"shape", "polyline"}, {"points", {{0.12, 0.1}, {0.18, 0.1}}}, {"thickness", 0.005}};
+    expectNoParticles("thin_polyline", tiny2d(), "walls[0]", thinLine);
+    expectNoParticles("thin_box", tiny2d(), "walls[0]", box({0.12, 0.095}, {0.18, 0.105}));
+    expectNoParticles("tiny_circle", tiny2d(), "bodies[0]",
+                      {{"shape", "circle"}, {"center", {0.15, 0.1}}, {"radius", 1e-4}});
+    json j3 = tiny3d();
+    j3["particles"]["spacing"] = 0.02;
+    expectNoParticles("tiny_cylinder", j3, "bodies[0]",
+                      {{"shape", "cylinder"},
+                       {"base", {0.12, 0.06, 0.02}},
+                       {"top", {0.12, 0.06, 0.1}},
+                       {"radius", 1e-4}});
+}

@@ -93,8 +93,8 @@ TEST(BadInput, FluidBlockOutsideTheDomain) {
 // A block fills its volume outside every body; one wholly inside a body holds no particle.
 TEST(BadInput, FluidBlockInsideABody) {
     json j = tiny();
-    j["fluids"][0]["min"] = {0.14, 0.03};
-    j["fluids"][0]["max"] = {0.16, 0.05};
+    j["fluids"][0]["min"] = {0.135, 0.025};  // lattice points (0.15, 0.03) and (0.15, 0.05)
+    j["fluids"][0]["max"] = {0.165, 0.055};
     expectMessage(runScene("inside_body", j.dump()), kScene,
                   {"fluids[0]", "holding particles", "outside every body"});
 }
@@ -279,7 +279,7 @@ TEST(BadInput, EndlessFilesAreNotReadWhole) {
                   {"/dev/zero", "not a numerics checkpoint"});
     // A header that promises more than the file holds: refused from the header.
     std::string header("NUMSPHCK", 8);
-    const std::uint32_t version = 3, dim = 2, crc = 0, spare = 0;
+    const std::uint32_t version = num::io::kCheckpointVersion, dim = 2, crc = 0, spare = 0;
     const std::uint64_t size = std::uint64_t(1) << 60;
     for (const auto& [p, n] : {std::pair<const void*, std::size_t>{&version, 4},
                                {&dim, 4},
@@ -322,6 +322,33 @@ TEST(BadInput, TemperatureBelowAbsoluteZeroDuringTheRun) {
     const json summary = json::parse(
         readFile(std::string(APP_TEST_WORK) + "/bad_below_absolute_zero/out/summary.json"));
     EXPECT_EQ(summary["status"], "unstable");
+}
+
+// Water at 20,000 degC and a run of some 1e8 steps were accepted without a word (issue 57):
+// each is a warning before the run, also in summary.json.
+TEST(BadInput, SceneAtTheEdgeOfSenseIsWarnedAbout) {
+    json j = tiny();
+    j["fluids"][0]["temperature"] = 20000;
+    j["bodies"][0]["temperature"] = -50;           // a boundary condition: no warning
+    j["materials"]["water"]["sound_speed"] = 1e6;  // the largest allowed: dt = 6.5e-9 s
+    j["output"]["formats"] = {"csv"};
+    j["output"]["images"] = false;
+    const std::string dir = freshDir("bad_edge_of_sense");
+    writeFile(dir + "/scene.json", j.dump());
+    // Stopped after its first step (NUMERICS_TEST_SIGNAL): the warnings come before the run.
+    const Result r = run("/usr/bin/env",
+                         "NUMERICS_TEST_SIGNAL=2:1 '" + std::string(FLUID_SIM) +
+                             "' scene.json --out out --end-time 1",
+                         dir);
+    EXPECT_EQ(r.code, 130) << r.output;
+    const char* parts[] = {
+        "warning: scene.json: fluids[0].temperature: 20000 degC is outside -20 to 200 degC",
+        "warning: scene.json: time.end: the run takes about 1.5e+08 steps or more"};
+    for (const char* p : parts)
+        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
+    const json summary = json::parse(readFile(dir + "/out/summary.json"));
+    EXPECT_TRUE(contains(summary["warnings"].dump(), "1.5e+08 steps")) << summary.dump();
+    EXPECT_FALSE(contains(r.output, "bodies[0]")) << "a body held at -50 degC is no warning";
 }
 
 // A symbolic link in a loop (or to nothing) in ./scenes aborted --list-scenes (issue 47).

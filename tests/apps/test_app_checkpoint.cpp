@@ -242,3 +242,66 @@ TEST(OutputFolder, ANewRunReplacesAnEarlierRunsFiles) {
         run(FLUID_SIM, "--quiet --backend seq --out other --end-time 0.03 --restart kept.chk", dir);
     EXPECT_EQ(kept.code, 0) << kept.output;
 }
+
+namespace {
+
+/// The unit cube [0, 1]^3 as an ASCII STL, its faces turned outwards.
+std::string cubeStl() {
+    const int faces[12][3][3] = {
+        {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 0, 0}, {1, 1, 0}, {1, 0, 0}},
+        {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}}, {{0, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+        {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}}, {{0, 0, 0}, {1, 0, 1}, {0, 0, 1}},
+        {{0, 1, 0}, {0, 1, 1}, {1, 1, 1}}, {{0, 1, 0}, {1, 1, 1}, {1, 1, 0}},
+        {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}}, {{0, 0, 0}, {0, 1, 1}, {0, 1, 0}},
+        {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}}, {{1, 0, 0}, {1, 1, 1}, {1, 0, 1}}};
+    std::string stl = "solid cube\n";
+    for (const auto& f : faces) {
+        stl += "facet normal 0 0 0\n outer loop\n";
+        for (const auto& v : f)
+            stl += " vertex " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " +
+                   std::to_string(v[2]) + "\n";
+        stl += " endloop\nendfacet\n";
+    }
+    return stl + "endsolid cube\n";
+}
+
+}  // namespace
+
+// A mesh scene restarted from its checkpoint alone looked for its mesh beside the checkpoint,
+// not beside the scene (issue 57): the checkpoint stores the mesh's path absolute, and a restart
+// with the scene file, whose path is relative, is still the same run.
+TEST(RestartOfAMeshScene, FindsTheMeshFromTheCheckpointAlone) {
+    const std::string dir = freshDir("restart_mesh_scene");
+    std::filesystem::create_directories(dir + "/scene");
+    nlohmann::json j = nlohmann::json::parse(readFile(scene("tiny_3d.json")));
+    j.erase("emitters");
+    j["bodies"] = nlohmann::json::array({{{"shape", "mesh"},
+                                          {"file", "cube.stl"},
+                                          {"scale", 0.06},
+                                          {"translate", {0.09, 0.03, 0.03}},
+                                          {"temperature", 60}}});
+    j["output"]["images"] = false;
+    writeFile(dir + "/scene/scene.json", j.dump());
+    writeFile(dir + "/scene/cube.stl", cubeStl());
+    const Result first = run(FLUID_SIM_3D,
+                             "scene/scene.json --quiet --backend seq --out first --end-time 0.01 "
+                             "--checkpoint-every 0.005",
+                             dir);
+    ASSERT_EQ(first.code, 0) << first.output;
+    const Result alone = run(
+        FLUID_SIM_3D, "--quiet --backend seq --restart first/checkpoint_0001.chk --out alone", dir);
+    EXPECT_EQ(alone.code, 0) << alone.output;
+    const Result withScene =
+        run(FLUID_SIM_3D, "scene/scene.json --quiet --restart first/checkpoint_0001.chk --out with",
+            dir);
+    EXPECT_EQ(withScene.code, 0) << withScene.output;
+    const std::string end = readFile(dir + "/first/particles_0001.vtu");  // t = 0.01
+    ASSERT_FALSE(end.empty());
+    EXPECT_TRUE(readFile(dir + "/alone/particles_0001.vtu") == end);
+    // An edited mesh is still noticed.
+    writeFile(dir + "/scene/cube.stl", cubeStl() + "\n");
+    const Result edited =
+        run(FLUID_SIM_3D, "--quiet --restart first/checkpoint_0001.chk --out edited", dir);
+    EXPECT_EQ(edited.code, 8) << edited.output;
+    EXPECT_TRUE(contains(edited.output, "bodies[0].file content (FNV-1a)")) << edited.output;
+}

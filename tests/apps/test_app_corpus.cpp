@@ -48,6 +48,23 @@ const std::vector<Case>& corpus() {
          },
          kExpression,
          {"fluids[0].pressure", "a finite pressure", "1/0"}},
+        // Initial pressures whose density the run would stop at before its first step ends.
+        {"pressure_giving_a_negative_density",
+         2,
+         [](json& j) {
+             j["fluids"][0]["pressure"] = -1e6;
+             return "";
+         },
+         kScene,
+         {"fluids[0].pressure", "half to twice the rest density 1000 kg/m^3", "found -1e+06"}},
+        {"pressure_giving_four_times_the_rest_density",
+         3,
+         [](json& j) {
+             j["fluids"][0]["pressure"] = "1e9 + x";
+             return "";
+         },
+         kScene,
+         {"fluids[0].pressure", "a pressure from", "1e9 + x"}},
         {"infinite_velocity",
          3,
          [](json& j) {

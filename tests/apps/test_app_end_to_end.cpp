@@ -127,6 +127,14 @@ TEST(Apps, HelpShowsExamplesAndVersionPrints) {
     const Result version = run(FLUID_SIM_3D, "--version", dir);
     EXPECT_EQ(version.code, 0);
     EXPECT_TRUE(contains(version.output, "0.1.0"));
+    // With anything else, the version is a bad command line, and so are two options of which
+    // one would be ignored.
+    for (const char* args :
+         {"--version --bogus", "--version --list-scenes", "--print-scene --list-scenes"}) {
+        const Result r = run(FLUID_SIM, args, dir);
+        EXPECT_EQ(r.code, 2) << args << ": " << r.output;
+        EXPECT_TRUE(contains(r.output, "error:")) << args << ": " << r.output;
+    }
 }
 
 TEST(Apps, QuietPrintsNothing) {

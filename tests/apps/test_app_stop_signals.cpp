@@ -168,3 +168,32 @@ TEST(SecondSignal, DuringASlowWriteLeavesEveryFileWhole) {
 }
 
 }  // namespace
+
+// Two runs writing one folder at once failed on the ParaView script (issue 57): the output
+// folder is locked while a run writes it, and a second run is refused (exit code 7), naming the
+// process that holds it; when that run ends, the folder is free again.
+TEST(OutputLock, ASecondRunWritingTheFolderAtOnceIsRefused) {
+    const std::string dir = freshDir("output_lock");
+    AppProcess first(FLUID_SIM, {scene("tiny_2d.json"), "--out", "out", "--end-time", "0.5"}, dir,
+                     {"NUMERICS_TEST_HOLD_STEP=2"});
+    ASSERT_TRUE(
+        waitFor([&] { return !first.running() || contains(first.output(), "holding step 2"); },
+                kStartGuard));
+    ASSERT_TRUE(first.running()) << first.output();
+    const Result second =
+        run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out out --end-time 0.01", dir);
+    EXPECT_EQ(second.code, 7) << second.output;
+    EXPECT_TRUE(
+        contains(second.output, "out: the output directory is in use by another run (process " +
+                                    std::to_string(first.pid()) + ")"))
+        << second.output;
+    EXPECT_EQ(std::count(second.output.begin(), second.output.end(), '\n'), 1) << second.output;
+    // The first run's files are its own: the second neither removed nor wrote any.
+    EXPECT_TRUE(fs::exists(dir + "/out/particles_0000.vtu"));
+    ::kill(first.pid(), SIGTERM);
+    ASSERT_TRUE(first.waitForExit(kExitGuard));
+    EXPECT_EQ(first.code(), 130) << first.output();
+    const Result after =
+        run(FLUID_SIM, "'" + scene("tiny_2d.json") + "' --quiet --out out --end-time 0.01", dir);
+    EXPECT_EQ(after.code, 0) << after.output;
+}

@@ -87,3 +87,25 @@ TEST(Fingerprint, AnEditedMeshFileIsNamed) {
         << message;
     std::filesystem::remove_all(dir);
 }
+
+TEST(Fingerprint, APathWhoseFileIsHashedMayBeWrittenOtherwise) {
+    // A checkpoint stores a mesh's and a plugin's path absolute (a restart from it alone finds
+    // them); the scene file names them relative. The file's content is compared, not its name,
+    // also against a checkpoint that lists the name.
+    const std::string mesh = "walls[0].file content (FNV-1a) = 1234\n";
+    const std::string plugin = "plugin 0 library = /lib/p.so\n";
+    const std::string stored = kQuantities + kScene + mesh + plugin +
+                               "walls[0].file = \"cup.stl\"\nplugins[0].library = \"p.so\"\n";
+    EXPECT_EQ(refusal(stored, kQuantities + kScene + mesh + plugin), "");
+    EXPECT_EQ(refusal(stored, kQuantities + kScene + mesh + plugin +
+                                  "walls[0].file = \"/scenes/cup.stl\"\n"),
+              "");
+    EXPECT_NE(
+        refusal(stored, kQuantities + kScene + "walls[0].file content (FNV-1a) = 99\n" + plugin),
+        "")
+        << "an edited mesh is still refused";
+    EXPECT_NE(refusal(kQuantities + kScene + "walls[0].file = \"cup.stl\"\n",
+                      kQuantities + kScene + "walls[0].file = \"box.stl\"\n"),
+              "")
+        << "a name without a content hash is compared";
+}

@@ -109,10 +109,11 @@ def test_wrong_shapes_refused(sim2d):
 
 def test_unstable_run_is_an_exception(sim2d):
     w = sim2d.particles_writable()
-    w.temperature[np.flatnonzero(w.kind == 0)[0]] = np.nan
+    # A finite temperature (a NaN is refused before the step), beyond what the heat terms hold.
+    w.temperature[np.flatnonzero(w.kind == 0)[0]] = 1e300
     with pytest.raises(numerics.RunError) as e:
         sim2d.run(progress=False)
-    assert e.value.exit_code == 9 and "unstable" in str(e.value)
+    assert e.value.exit_code == 9 and "sound speed" in str(e.value)
     assert sim2d.finished and sim2d.summary["status"] == "unstable"
 
 
@@ -122,3 +123,25 @@ def test_position_that_is_not_a_number_refused(sim2d):
     with pytest.raises(numerics.RunError, match="particle 3 was given the position nan on axis 1") as e:
         sim2d.step()
     assert e.value.exit_code == 2
+
+
+@pytest.mark.parametrize("field,value,text", [
+    ("material", 10**9, "material 1000000000"), ("material", -1, "material -1"),
+    ("material", 2, "material 2"), ("kind", 99, "kind 99"), ("kind", 1, "kind 1"),
+    ("id", 12345, "id 12345"), ("mass", 0.0, "mass 0"), ("mass", -1.0, "mass -1"),
+    ("density", np.inf, "density inf"), ("density", -1000.0, "density -1000"),
+    ("density", 1e5, "density 100000 kg/m^3"), ("pressure", np.nan, "pressure nan"),
+    ("temperature", np.inf, "temperature inf"), ("velocity", np.inf, "velocity inf on axis 0"),
+    ("velocity", 1e4, "velocity 14142.1 m/s")])
+def test_written_quantities_are_checked(sim2d, field, value, text):
+    p = sim2d.particles_writable()
+    fluid = int(np.flatnonzero(p.kind == 0)[0])
+    original = getattr(p, field)[fluid].copy()
+    getattr(p, field)[fluid] = value
+    with pytest.raises(numerics.RunError) as e:
+        sim2d.step()
+    assert e.value.exit_code == 2
+    assert f"particle {fluid} was given the {text}" in str(e.value), str(e.value)
+    assert sim2d.steps == 0
+    getattr(p, field)[fluid] = original  # written back, the run goes on
+    assert sim2d.step() > 0

@@ -84,7 +84,6 @@ def test_unknown_key_and_bad_expression(tiny2d, tmp_path):
 
 
 def test_not_a_scene():
-    with pytest.raises(TypeError):
-        numerics.Scene([1, 2])
+    expect_error(numerics.SceneError, 2, "scene: expected a dict", lambda: numerics.Scene([1, 2]))
     expect_error(numerics.SceneError, 5, "dimension", lambda: numerics.Scene({"dimension": 4})
                  .dimension)

@@ -17,6 +17,7 @@
 #include "io/fields.hpp"
 #include "io/scene_loader.hpp"
 #include "parallel/communicator.hpp"
+#include "sph/bodies/moving_bodies.hpp"
 #include "sph/storage.hpp"
 
 namespace num::io {
@@ -110,6 +111,9 @@ class Simulation {
     const Scene<Dim>& scene() const;
     /// The names of the user and plugin quantities in the outputs.
     const FieldNames& fieldNames() const;
+    /// The scene's bodies with their motions and states (bodies[i].motion), or nullptr when
+    /// every body is fixed. A front end may change a prescribed body's velocity between steps.
+    sph::MovingBodies<Dim>* movingBodies();
 
     void addObserver(std::unique_ptr<IStepObserver<Dim>> observer);
     RunParts<Dim>& parts() { return *parts_; }

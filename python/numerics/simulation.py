@@ -155,6 +155,26 @@ class Simulation:
         return Particles(self._driver, writable=True)
 
     @property
+    def bodies(self):
+        """The moving bodies now (bodies[i].motion free or prescribed), as bodies.csv names them:
+        {"name": [...], "position": (n, dim), "velocity": (n, dim), "angle": (n, 1) in 2D or
+        "quaternion": (n, 4) in 3D, "angular_velocity": (n, 1 or 3), "force": (n, dim),
+        "torque": (n, 1 or 3)}, the force and torque those of the water [N, N m; per metre of
+        depth in 2D]."""
+        return self._driver.bodies()
+
+    def set_body_velocity(self, body, velocity, angular_velocity=None):
+        """Holds the prescribed body named `body` at this velocity [m/s] and angular velocity
+        [rad/s] (zero when not given) from the next step on, replacing its expressions: a
+        paddle under control, e.g. from a callback of run()."""
+        if angular_velocity is None:
+            angular_velocity = [0.0] * (1 if self.dimension == 2 else 3)
+        elif self.dimension == 2 and not hasattr(angular_velocity, "__len__"):
+            angular_velocity = [angular_velocity]
+        self._driver.set_body_velocity(str(body), [float(v) for v in velocity],
+                                       [float(w) for w in angular_velocity])
+
+    @property
     def probes(self):
         """{probe: {"time": array, field: array, ...}}: what probes.csv holds so far."""
         path = os.path.join(self.output_directory, "probes.csv")

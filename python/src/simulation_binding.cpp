@@ -1,4 +1,5 @@
 // _numerics.Simulation2 / Simulation3: Driver<Dim> (driver.hpp) and its Python methods.
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -20,6 +21,68 @@ io::RunOptions runOptions(int threads, const std::optional<std::string>& out, bo
     o.progressLine = false;   // the Python side draws its own (tqdm)
     o.handleSignals = false;  // Python's: Ctrl-C reaches the run through PyErr_CheckSignals
     return o;
+}
+
+/// The moving bodies now: names, and per body rows of position, velocity, attitude (the angle
+/// in 2D, the quaternion q0..q3 in 3D), angular velocity, the fluid's force and torque.
+template <int Dim>
+py::dict bodiesDict(const sph::MovingBodies<Dim>* bodies) {
+    py::dict out;
+    py::list names;
+    std::vector<double> position, velocity, attitude, spin, force, torque;
+    constexpr int S = Dim == 2 ? 1 : 3, A = Dim == 2 ? 1 : 4;
+    std::size_t n = 0;
+    static const std::vector<sph::MovingBody<Dim>> none;
+    for (const auto& b : bodies ? bodies->bodies : none) {
+        if (!b.motion.moves()) continue;
+        ++n, names.append(b.name);
+        for (int k = 0; k < Dim; ++k)
+            position.push_back(b.state.position[k]), velocity.push_back(b.state.velocity[k]),
+                force.push_back(b.fluidForce[k]);
+        for (int k = 0; k < S; ++k)
+            spin.push_back(b.state.spin[k]), torque.push_back(b.fluidTorque[k]);
+        if constexpr (Dim == 2)
+            attitude.push_back(b.state.attitude.angle);
+        else
+            attitude.insert(attitude.end(), b.state.attitude.q.begin(), b.state.attitude.q.end());
+    }
+    auto rows = [n](const std::vector<double>& v, int columns) {
+        py::array_t<double> a({py::ssize_t(n), py::ssize_t(columns)});
+        std::copy(v.begin(), v.end(), a.mutable_data());
+        return a;
+    };
+    out["name"] = names;
+    out["position"] = rows(position, Dim), out["velocity"] = rows(velocity, Dim);
+    out[Dim == 2 ? "angle" : "quaternion"] = rows(attitude, A);
+    out["angular_velocity"] = rows(spin, S);
+    out["force"] = rows(force, Dim), out["torque"] = rows(torque, S);
+    return out;
+}
+
+/// Holds a prescribed body's velocity and angular velocity at these values from the next step
+/// on (a controlled paddle); the body is named as in bodies.csv.
+template <int Dim>
+void setBodyVelocity(Driver<Dim>& d, const std::string& body, const std::vector<double>& velocity,
+                     const std::vector<double>& angularVelocity) {
+    constexpr std::size_t S = Dim == 2 ? 1 : 3;
+    sph::MovingBodies<Dim>* bodies = d.simulation().movingBodies();
+    sph::MovingBody<Dim>* found = nullptr;
+    for (std::size_t i = 0; bodies && i < bodies->bodies.size(); ++i)
+        if (bodies->bodies[i].name == body) found = &bodies->bodies[i];
+    if (!found || found->motion.type != sph::MotionType::PRESCRIBED)
+        throw io::AppError(io::ExitCode::USAGE,
+                           "body: \"" + body +
+                               "\" is not a prescribed body of this scene (bodies.csv names them)");
+    if (velocity.size() != std::size_t(Dim) || angularVelocity.size() != S)
+        throw io::AppError(io::ExitCode::USAGE, "velocity: " + std::to_string(Dim) +
+                                                    " numbers, angular_velocity: " +
+                                                    std::to_string(S) + " (m/s, rad/s)");
+    sph::Vector<Dim> v;
+    sph::Spin<Dim> w;
+    for (int k = 0; k < Dim; ++k) v[k] = velocity[std::size_t(k)];
+    for (std::size_t k = 0; k < S; ++k) w[int(k)] = angularVelocity[k];
+    found->motion.velocity = [v](sph::Float) { return v; };
+    found->motion.spin = [w](sph::Float) { return w; };
 }
 
 template <int Dim>
@@ -51,6 +114,9 @@ void bindDriver(py::module_& m, const char* name) {
         .def_property_readonly("end_time", [](D& d) { return d.simulation().endTime(); })
         .def_property_readonly("finished", &D::finished)
         .def_property_readonly("generation", &D::generation)
+        .def("bodies", [](D& d) { return bodiesDict<Dim>(d.simulation().movingBodies()); })
+        .def("set_body_velocity", &setBodyVelocity<Dim>, py::arg("body"), py::arg("velocity"),
+             py::arg("angular_velocity"))
         .def_property_readonly("output_directory",
                                [](D& d) { return d.simulation().scene().output.directory; });
 }

@@ -262,6 +262,11 @@ const Scene<Dim>& Simulation<Dim>::scene() const {
 }
 
 template <int Dim>
+sph::MovingBodies<Dim>* Simulation<Dim>::movingBodies() {
+    return parts_->setup->model.movingBodies.get();
+}
+
+template <int Dim>
 const FieldNames& Simulation<Dim>::fieldNames() const {
     return parts_->fieldNames;
 }

@@ -683,6 +683,8 @@ def biesel_height_over_stroke(period, depth, g=9.81):
     return 2 * (math.cosh(kd2) - 1) / (math.sinh(kd2) + kd2), k
 
 
+# H at the CI spacing 0.02 is 9.3 % low (2026-12-06) -> regression bound 0.14 (times 1.5).
+PISTON_CI_BOUND = 0.14
 PISTON = {"stroke": 0.04, "period": 1.0, "depth": 0.4, "probes_x": (1.0, 1.5), "window": (3.0, 5.0)}
 
 
@@ -729,32 +731,27 @@ def piston_waves(run):
     return checks, f"H = {H:.4g} m against Biesel's {ref:.4g} m (kd = {k * P['depth']:.3g}, H/S = {ratio:.3f})", profile
 
 
-def body_heat(run, frame):
-    """sum m c T of the body particles and of the fluid in a particle frame [J]."""
-    p = run.particles(frame)
-    mats = list(run.scene["materials"].values())
-    c = np.array([m.get("heat_capacity", 4186) for m in mats])[p["material"].astype(int)]
-    heat = p["mass"] * c * p["temperature"]
-    return float(heat[p["kind"] == 2].sum()), float(heat[p["kind"] == 0].sum())
-
-
 def hot_ball(run):
-    """A hot conducting ball dropped into cold water: the heat it gives equals the heat the water
-    gains (sum m c T of its particles and of the fluid, first and last frames; adiabatic walls),
-    and, denser than water, it comes to rest on the floor (its centre one radius above it)."""
-    body_0, water_0 = body_heat(run, 0)
-    body_1, water_1 = body_heat(run, -1)
-    given, gained = body_0 - body_1, water_1 - water_0
+    """A hot conducting ball dropped into cold water: the heat it gives (its heat sum m c T in
+    bodies.csv, first and last rows) equals the heat the water gains (summary.json's thermal
+    energy of the fluid; adiabatic walls), and, denser than water, it comes to rest on the floor:
+    its centre one radius above it within one spacing (its particles sit on the lattice inside
+    the sphere, up to half a spacing in from its surface, and rest in the hollows between the
+    floor's particles, up to 0.3 spacing deep)."""
     b = run.bodies()
+    given = float(b["heat"][0] - b["heat"][-1])
+    water = run.summary["conservation"]["thermal_energy"]
+    gained = water["end"] - water["start"]
     radius = run.scene["bodies"][0]["radius"]
     z, speed = float(b["z"][-1]), float(np.sqrt(b["vx"][-1]**2 + b["vy"][-1]**2 + b["vz"][-1]**2))
     profile = {"xlabel": "t [s]", "ylabel": "z of the ball's centre [m]", "series": [
         {"label": "app: the ball's centre", "x": b["time"].tolist(), "y": b["z"].tolist(), "style": "line"},
         {"label": "resting on the floor", "x": [0.0, float(b["time"][-1])], "y": [radius, radius], "style": "line"}]}
-    checks = [{"metric": "|heat gained by the water - heat given by the ball| / heat given", "value": abs(gained - given) / given, "gate": 0.01},
-              {"metric": "|z - r| / spacing at the end", "value": abs(z - radius) / run.spacing, "gate": 0.5},
-              {"metric": "the ball's speed at the end [m/s]", "value": speed, "gate": 0.02}]
-    return checks, f"ball gave {given:.5g} J, water gained {gained:.5g} J; ball at z = {z:.4g} m", profile
+    checks = [{"metric": "|heat gained by the water - heat given by the ball| / heat given",
+               "value": abs(gained - given) / given if given > 0 else math.inf, "gate": 0.01},
+              {"metric": "|z - r| / spacing at the end", "value": abs(z - radius) / run.spacing, "gate": 1.0},
+              {"metric": "the ball's speed at the end [m/s]", "value": speed, "gate": 0.01}]
+    return checks, f"ball gave {given:.5g} J, water gained {gained:.5g} J; ball at rest at z = {z:.4g} m", profile
 
 
 # Kleefsman et al. (2005): the probes H2 and H4 (x, y) and the initial depth of the water.
@@ -975,6 +972,11 @@ OBSTACLE_NOTE = (
     "about 2.5 cm; H4, the reservoir draining, within 2 cm throughout. " + _MEASURED)
 case("dam_break_obstacle", "dam_break_obstacle.json", dam_break_obstacle, 0.05, [0.1, 0.05], (0.1, None),
      issue=48, note=OBSTACLE_NOTE)
+case("floating_box_2d", "floating_box_2d.json", floating_draft, 0.01, [0.02, 0.01, 0.005], (0.01, None),
+     issue=59)
+case("piston_waves_2d", "piston_waves_2d.json", piston_waves, 0.01, [0.02, 0.01], (0.02, [PISTON_CI_BOUND]),
+     issue=59)
+case("hot_ball_3d", "hot_ball_3d.json", hot_ball, 0.02, [0.02], (0.02, None), issue=59)
 
 # setup: each case in a sentence or two for the report (the scene's "description" gives it all).
 _CHANNEL = ("Water between no-slip plates {a} = 0 and {a} = L = 1 mm, periodic along the other axes")
@@ -1024,6 +1026,12 @@ SETUPS = {
     "cylinder_re20": "Schaefer & Turek's (1996) benchmark 2D-1, a cylinder D = 0.1 m in a channel 0.41 m "
     "high at Re = 20, c_D = 5.58; here the channel is periodic, 10 D long, driven by a body force so that "
     "the mean velocity is 0.2 m/s",
+    "floating_box_2d": "A box of density 500 kg/m^3, 0.2 m wide and 0.1 m tall, released 1.3 cm above its "
+    "rest into water 0.3 m deep in a tank 0.6 m wide: it settles at the Archimedes draft d = 0.05 m, upright",
+    "piston_waves_2d": "A piston wave maker, stroke 0.04 m and period 1 s, in water 0.4 m deep in a tank 4 m "
+    "long: the wave height 1 and 1.5 m from the paddle against Biesel's linear theory, H = 1.535 S",
+    "hot_ball_3d": "A hot (90 C) conducting ball of density 3000 kg/m^3, radius 0.05 m, falls into cold "
+    "(10 C) water 0.2 m deep: the heat it gives against the heat the water gains, and its rest on the floor",
     "dam_break_obstacle": "MARIN's dam break (SPHERIC test 2, Kleefsman et al. 2005) in 3D: a water column "
     "0.55 m deep hits a box on the tank's floor; water heights at H2 (before the box) and H4 (in the "
     "reservoir) against the experiment to t = 1.5 s",

@@ -4,6 +4,7 @@
 // point (centre of mass, hinge or centre of rotation), held degrees of freedom and springs.
 #include "scene/moving_bodies.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -199,6 +200,19 @@ void addSprings(const BodyMotionSpec<Dim>& spec, sph::MovingBody<Dim>& body) {
     }
 }
 
+/// The farthest corner of the shape's bounding box from p.
+template <int Dim>
+double reachFrom(const Body<Dim>& b, const SceneVec<Dim>& p) {
+    const geometry::Bounds<Dim> box = b.placed().bounds();
+    double reach = 0;
+    for (int corner = 0; corner < (1 << Dim); ++corner) {
+        SceneVec<Dim> c;
+        for (int k = 0; k < Dim; ++k) c[k] = (corner >> k & 1) ? box.max[k] : box.min[k];
+        reach = std::max(reach, norm(c - p));
+    }
+    return reach;
+}
+
 }  // namespace
 
 template <int Dim>
@@ -212,6 +226,7 @@ std::shared_ptr<sph::MovingBodies<Dim>> makeMovingBodies(const Scene<Dim>& scene
         addSprings(b.motion, body);
         body.name = bodyName(scene, i);
         body.state.position = body.initialPosition;
+        body.reach = reachFrom(b, body.initialPosition);
         out->bodies.push_back(std::move(body));
     }
     if (!out->anyMoves()) return nullptr;

@@ -17,6 +17,7 @@ struct MovingBody {
     BodyMotion<Dim> motion;
     BodyState<Dim> state;
     Vector<Dim> initialPosition{};  ///< the reference point at t = 0
+    Float reach = 0;                ///< no point of its shape is farther from its reference point
     Vector<Dim> fluidForce{};       ///< of the last evaluation [N; 2D: N/m]
     Spin<Dim> fluidTorque{};        ///< about the reference point, of the last evaluation
     Vector<Dim> contactForce{};     ///< of the contacts with other solids, last evaluation

@@ -7,9 +7,11 @@
 // velocity a step ends with has no component into the solid.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
+#include "spatial/cell_grid.hpp"
 #include "sph/bodies/moving_bodies.hpp"
 #include "sph/formulas/post_step.hpp"
 #include "sph/setup/fluid_geometry.hpp"
@@ -33,14 +35,22 @@ class ParticleContainment : public IEquationTerm<Dim> {
         auto v = s.template getDt<Vec>(QuantityId::POSITION);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const FluidGeometry<Dim>& g = geometry_;
+        findMovingBodies();
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 if (!isFluid(kind[i])) continue;
                 for (int k = 0; k < Dim; ++k)
                     formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
                                              g.hasWall(k, 0), g.hasWall(k, 1));
-                for (std::size_t b = 0; b < g.bodies.size(); ++b)
-                    containOutside(int(b), x[i], v[i]);
+                for (std::size_t body = 0; body < g.bodies.size(); ++body)
+                    if (!moving_ || !moving_->moves(int(body)))
+                        containOutside(int(body), x[i], v[i]);
+                if (!movingNear_.empty()) {
+                    const Vec xi = x[i];
+                    movingGrid_.forEachNeighbour(xi, [&](Size k, const Vec&, double) {
+                        containOutside(movingNear_[k], x[i], v[i]);
+                    });
+                }
                 for (const InteriorWall<Dim>& wall : g.interiorWalls)
                     if (wall.mayContain(x[i])) formulas::containOutsideBody<Dim>(x[i], v[i], wall);
             }
@@ -49,6 +59,22 @@ class ParticleContainment : public IEquationTerm<Dim> {
     void create(Storage<Dim>&, IMaterial&) const override {}
 
   private:
+    /// The moving bodies in a grid of their reference points, of radius their largest reach:
+    /// a particle is checked against the bodies near it only (many bodies: debris in a flood).
+    void findMovingBodies() {
+        movingNear_.clear();
+        if (!moving_) return;
+        std::vector<Vec> centres;
+        Float reach = 0;
+        for (std::size_t b = 0; b < moving_->bodies.size(); ++b) {
+            if (!moving_->moves(int(b))) continue;
+            movingNear_.push_back(int(b));
+            centres.push_back(moving_->bodies[b].state.position);
+            reach = std::max(reach, moving_->bodies[b].reach);
+        }
+        if (!centres.empty()) movingGrid_.build(centres, reach, geometry_.domain);
+    }
+
     /// Out of body b, where it is now: reflected in its initial pose, the velocity relative
     /// to the body's (Vec x_0 = X_0 + R^T (x - X), v_0 = R^T (v - v_b(x))).
     void containOutside(int b, Vec& x, Vec& v) const {
@@ -68,6 +94,8 @@ class ParticleContainment : public IEquationTerm<Dim> {
 
     FluidGeometry<Dim> geometry_;
     std::shared_ptr<const MovingBodies<Dim>> moving_;
+    std::vector<int> movingNear_;  ///< the moving bodies, as movingGrid_ numbers them
+    CellGrid<Dim> movingGrid_;
 };
 
 }  // namespace num::sph

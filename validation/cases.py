@@ -670,6 +670,40 @@ def floating_draft(run):
     return checks, f"draft {d_m:.4g} m against {d:.4g} m", profile
 
 
+def floating_sphere(run):
+    """A free sphere lighter than water at its Archimedes draft: the submerged cap
+    V(d) = pi d^2 (3 r - d) / 3 weighs as the sphere, rho_w V(d) = rho_b 4/3 pi r^3 (d = r for
+    half the water's density). Measured from the mean height of its centre after 0.5 s and the
+    still water level L, A L = V_water + V(d_m) (A the tank's section, V_water from the fluid
+    particles' count), solved for d_m = L - (z - r)."""
+    body = run.scene["bodies"][0]
+    rho_w = next(iter(run.scene["materials"].values()))["density"]
+    r = body["radius"]
+    lo, hi = run.scene["domain"]["min"], run.scene["domain"]["max"]
+    A = (hi[0] - lo[0]) * (hi[1] - lo[1])
+    cap = lambda d: math.pi * d * d * (3 * r - d) / 3
+    target = body["motion"]["density"] / rho_w * 4 / 3 * math.pi * r**3
+    d = r  # the Archimedes draft: cap(d) = target, by bisection
+    a, b = 0.0, 2 * r
+    for _ in range(100):
+        d = (a + b) / 2
+        a, b = (d, b) if cap(d) < target else (a, d)
+    water = run.summary["fluid_particles"] * run.spacing**3
+    bodies = run.bodies()
+    late = bodies["time"] >= 0.5
+    bottom = float(bodies["z"][late].mean()) - r
+    a, b = 0.0, 2 * r  # d_m = (water + cap(d_m)) / A - bottom
+    for _ in range(100):
+        d_m = (a + b) / 2
+        a, b = (d_m, b) if (water + cap(d_m)) / A - bottom > d_m else (a, d_m)
+    profile = {"xlabel": "t [s]", "ylabel": "z of the sphere's centre [m]", "series": [
+        {"label": "app: the sphere's centre", "x": bodies["time"].tolist(), "y": bodies["z"].tolist(), "style": "line"},
+        {"label": "at the Archimedes draft", "x": [0.0, float(bodies["time"][-1])],
+         "y": [(water + cap(d)) / A - d + r] * 2, "style": "line"}]}
+    checks = [{"metric": "|d - d_Archimedes| / d_Archimedes (mean after 0.5 s)", "value": abs(d_m - d) / d, "gate": 0.05}]
+    return checks, f"draft {d_m:.4g} m against {d:.4g} m", profile
+
+
 def biesel_height_over_stroke(period, depth, g=9.81):
     """Linear piston wave-maker theory (Biesel & Suquet 1951; Dean & Dalrymple 1991, eq. 6.9):
     H / S = 2 (cosh 2kd - 1) / (sinh 2kd + 2kd), k from omega^2 = g k tanh(kd)."""
@@ -683,6 +717,15 @@ def biesel_height_over_stroke(period, depth, g=9.81):
     return 2 * (math.cosh(kd2) - 1) / (math.sinh(kd2) + kd2), k
 
 
+FLOATING_SPHERE_CI_BOUND = 0.2  # set from the run at 0.02 below
+PISTON_MISS = (
+    "H is 8.4 % low at spacing 0.01 and 9.3 % at 0.02: the error hardly falls with the spacing. "
+    "The waves lose height as they travel (0.059 m 0.5 m from the paddle, 0.055 m at 2 m) to the "
+    "default artificial viscosity, alpha = 0.02, which the apps add wherever the laminar viscosity "
+    "is below alpha h c0 / 8, as it is for water at any practical spacing: with alpha = 0.002 "
+    "(materials.water.artificial_viscosity) H is 5.8 % low at 0.02, and a sound speed twice as "
+    "high, which doubles the dissipation alpha h c0, makes it 12.7 % low. The scene keeps the "
+    "defaults a user gets. No peer code was run on this set-up.")
 # H at the CI spacing 0.02 is 9.3 % low (2026-12-06) -> regression bound 0.14 (times 1.5).
 PISTON_CI_BOUND = 0.14
 PISTON = {"stroke": 0.04, "period": 1.0, "depth": 0.4, "probes_x": (1.0, 1.5), "window": (3.0, 5.0)}
@@ -975,8 +1018,10 @@ case("dam_break_obstacle", "dam_break_obstacle.json", dam_break_obstacle, 0.05, 
 case("floating_box_2d", "floating_box_2d.json", floating_draft, 0.01, [0.02, 0.01, 0.005], (0.01, None),
      issue=59)
 case("piston_waves_2d", "piston_waves_2d.json", piston_waves, 0.01, [0.02, 0.01], (0.02, [PISTON_CI_BOUND]),
-     issue=59)
+     issue=59, miss_note=PISTON_MISS)
 case("hot_ball_3d", "hot_ball_3d.json", hot_ball, 0.02, [0.02], (0.02, None), issue=59)
+case("floating_sphere_3d", "floating_sphere_3d.json", floating_sphere, 0.01, [0.02, 0.01], (0.02, [FLOATING_SPHERE_CI_BOUND]),
+     issue=59)
 
 # setup: each case in a sentence or two for the report (the scene's "description" gives it all).
 _CHANNEL = ("Water between no-slip plates {a} = 0 and {a} = L = 1 mm, periodic along the other axes")
@@ -1032,6 +1077,8 @@ SETUPS = {
     "long: the wave height 1 and 1.5 m from the paddle against Biesel's linear theory, H = 1.535 S",
     "hot_ball_3d": "A hot (90 C) conducting ball of density 3000 kg/m^3, radius 0.05 m, falls into cold "
     "(10 C) water 0.2 m deep: the heat it gives against the heat the water gains, and its rest on the floor",
+    "floating_sphere_3d": "A sphere of density 500 kg/m^3, radius 0.05 m, released 1 cm above its rest "
+    "into water 0.2 m deep in a tank 0.3 m square: it settles half under water (draft 0.05 m)",
     "dam_break_obstacle": "MARIN's dam break (SPHERIC test 2, Kleefsman et al. 2005) in 3D: a water column "
     "0.55 m deep hits a box on the tank's floor; water heights at H2 (before the box) and H4 (in the "
     "reservoir) against the experiment to t = 1.5 s",

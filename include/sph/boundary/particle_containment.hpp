@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -35,22 +36,15 @@ class ParticleContainment : public IEquationTerm<Dim> {
         auto v = s.template getDt<Vec>(QuantityId::POSITION);
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const FluidGeometry<Dim>& g = geometry_;
-        findMovingBodies();
+        gridBodies();
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
+            std::vector<int> near;
             for (Size i = b; i < e; ++i) {
                 if (!isFluid(kind[i])) continue;
                 for (int k = 0; k < Dim; ++k)
                     formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
                                              g.hasWall(k, 0), g.hasWall(k, 1));
-                for (std::size_t body = 0; body < g.bodies.size(); ++body)
-                    if (!moving_ || !moving_->moves(int(body)))
-                        containOutside(int(body), x[i], v[i]);
-                if (!movingNear_.empty()) {
-                    const Vec xi = x[i];
-                    movingGrid_.forEachNeighbour(xi, [&](Size k, const Vec&, double) {
-                        containOutside(movingNear_[k], x[i], v[i]);
-                    });
-                }
+                for (int body : bodiesNear(x[i], near)) containOutside(body, x[i], v[i]);
                 for (const InteriorWall<Dim>& wall : g.interiorWalls)
                     if (wall.mayContain(x[i])) formulas::containOutsideBody<Dim>(x[i], v[i], wall);
             }
@@ -59,20 +53,38 @@ class ParticleContainment : public IEquationTerm<Dim> {
     void create(Storage<Dim>&, IMaterial&) const override {}
 
   private:
-    /// The moving bodies in a grid of their reference points, of radius their largest reach:
-    /// a particle is checked against the bodies near it only (many bodies: debris in a flood).
-    void findMovingBodies() {
-        movingNear_.clear();
-        if (!moving_) return;
+    /// From this many bodies on, a particle is checked against the bodies near it only (debris
+    /// in a flood), found in a grid of the bodies' centres of radius their largest reach.
+    static constexpr std::size_t kGridFrom = 16;
+
+    /// The grid of the bodies where they are now (a fixed one: the centre of its bounds), or
+    /// none (few bodies, or one without bounds).
+    void gridBodies() {
+        const auto& bodies = geometry_.bodies;
+        grid_ = bodies.size() >= kGridFrom;
         std::vector<Vec> centres;
         Float reach = 0;
-        for (std::size_t b = 0; b < moving_->bodies.size(); ++b) {
-            if (!moving_->moves(int(b))) continue;
-            movingNear_.push_back(int(b));
-            centres.push_back(moving_->bodies[b].state.position);
-            reach = std::max(reach, moving_->bodies[b].reach);
+        for (std::size_t b = 0; b < bodies.size() && grid_; ++b) {
+            const geometry::Bounds<Dim> box = bodies[b].bounds();
+            Vec centre = (box.min + box.max) * 0.5;
+            Float r = 0.5 * norm(box.max - box.min);
+            if (moving_ && moving_->moves(int(b)))
+                centre = moving_->bodies[b].state.position, r = moving_->bodies[b].reach;
+            grid_ = std::isfinite(r);
+            centres.push_back(centre), reach = std::max(reach, r);
         }
-        if (!centres.empty()) movingGrid_.build(centres, reach, geometry_.domain);
+        if (grid_) bodyGrid_.build(centres, reach, geometry_.domain);
+    }
+    /// The bodies that may hold x, in increasing index (every body without the grid).
+    const std::vector<int>& bodiesNear(const Vec& x, std::vector<int>& near) const {
+        near.clear();
+        if (!grid_) {
+            for (std::size_t b = 0; b < geometry_.bodies.size(); ++b) near.push_back(int(b));
+            return near;
+        }
+        bodyGrid_.forEachNeighbour(x, [&](Size k, const Vec&, double) { near.push_back(int(k)); });
+        std::sort(near.begin(), near.end());
+        return near;
     }
 
     /// Out of body b, where it is now: reflected in its initial pose, the velocity relative
@@ -94,8 +106,8 @@ class ParticleContainment : public IEquationTerm<Dim> {
 
     FluidGeometry<Dim> geometry_;
     std::shared_ptr<const MovingBodies<Dim>> moving_;
-    std::vector<int> movingNear_;  ///< the moving bodies, as movingGrid_ numbers them
-    CellGrid<Dim> movingGrid_;
+    bool grid_ = false;
+    CellGrid<Dim> bodyGrid_;
 };
 
 }  // namespace num::sph

@@ -54,7 +54,7 @@ class WrittenParticles {
                 }
             });
         });
-        for (const auto [id, name] :
+        for (const auto& [id, name] :
              {std::pair{QuantityId::MASS, "mass"}, std::pair{QuantityId::DENSITY, "density"}})
             if (s.has(id) && s.get(id).template holds<sph::Float>()) {
                 const auto v = s.template getValue<sph::Float>(id);

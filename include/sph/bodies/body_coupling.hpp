@@ -36,6 +36,9 @@
 namespace num::sph {
 
 template <int Dim>
+struct ContactLaw;
+
+template <int Dim>
 class RigidBodyCoupling : public IEquationTerm<Dim> {
   public:
     using Vec = Vector<Dim>;
@@ -84,7 +87,8 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
 
   private:
     void sumParticleForces(IScheduler& scheduler, const Storage<Dim>& s);
-    Vec contactForce(const Storage<Dim>& s, Size j) const;
+    /// The contact law of body b's particles (none for a prescribed body).
+    ContactLaw<Dim> contactLaw(int b) const;
     /// Each body's number of particles (they keep their particles for the whole run).
     void countParticles(const Storage<Dim>& s) {
         if (!particleCount_.empty()) return;
@@ -102,6 +106,7 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
     const VerletList<Dim>* lists_ = nullptr;
     std::vector<Vec> particleForce_, particleContact_;
     std::vector<std::size_t> particleCount_;
+    std::vector<Size> movingParticles_;  ///< of the evaluation
 };
 
 /// BODY_INDEX and BODY_OFFSET from the particles' places at t = 0 (a storage that has them, a
@@ -128,51 +133,72 @@ void RigidBodyCoupling<Dim>::create(Storage<Dim>& s, IMaterial&) const {
     }
 }
 
+/// The contact law of a free body's particles (the file comment): spring k_n, dashpot c_n,
+/// Coulomb friction mu, at distances below the spacing dx.
+template <int Dim>
+struct ContactLaw {
+    Float kn = 0, cn = 0, mu = 0, dx = 0;
+
+    /// The force on particle j from particle k at dx = x_j - x_k, r2 = |dx|^2, vjk = v_j - v_k.
+    Vector<Dim> force(const Vector<Dim>& d, Float r2, const Vector<Dim>& vjk) const {
+        if (!(r2 < dx * dx)) return {};
+        const Float r = std::sqrt(r2);
+        const Vector<Dim> n = d / r;
+        const Float push = kn * (dx - r) - cn * dot(vjk, n);
+        if (!(push > 0)) return {};
+        const Vector<Dim> vt = vjk - n * dot(vjk, n);
+        const Float slide = norm(vt);
+        Vector<Dim> f = n * push;
+        if (slide > 0) f -= vt * (std::min(mu * push, cn * slide) / slide);
+        return f;
+    }
+};
+
 template <int Dim>
 void RigidBodyCoupling<Dim>::sumParticleForces(IScheduler& scheduler, const Storage<Dim>& s) {
     const auto kind = s.template getValue<int>(QuantityId::KIND);
     const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    const auto v = s.template getDt<Vec>(QuantityId::POSITION);
     const formulas::BoundaryPairForce<Dim> pair(s, *kernel_, alpha_, c0_);
     particleForce_.assign(s.size(), Vec{});
     particleContact_.assign(s.size(), Vec{});
     countParticles(s);
-    const auto fluid = [&](Size f) { return isFluid(kind[f]); };
-    scheduler.parallelFor(s.size(), 1024, [&](Size b, Size e) {
-        for (Size j = b; j < e; ++j) {
-            if (!bodies_->moves(body[j])) continue;
-            lists_->forEachNeighbourOf(j, fluid, [&](Size i, const Vec& dx, Float r2) {
-                if (r2 > 0) particleForce_[j] += pair.onBoundary(i, j, -dx, std::sqrt(r2));
-            });
-            if (bodies_->bodies[body[j]].motion.type == MotionType::FREE)
-                particleContact_[j] = contactForce(s, j);
-        }
+    movingParticles_.clear();  // in increasing index: the threads share them evenly
+    for (Size j = 0; j < s.size(); ++j)
+        if (bodies_->moves(body[j])) movingParticles_.push_back(j);
+    // One pass over each moving particle's neighbours: the fluid's force, and for a free
+    // body the contacts with other solids, each summed in increasing neighbour index.
+    withKernel<Dim>(kernel_->type, [&](auto kernel) {
+        const Float h = kernel_->h;
+        scheduler.parallelFor(Size(movingParticles_.size()), 256, [&](Size b, Size e) {
+            for (Size n = b; n < e; ++n) {
+                const Size j = movingParticles_[n];
+                const ContactLaw<Dim> law = contactLaw(body[j]);
+                const bool contacts = law.kn > 0;
+                const auto keep = [&](Size k) {
+                    return isFluid(kind[k]) || (contacts && body[k] != body[j]);
+                };
+                lists_->forEachNeighbourOf(j, keep, [&](Size k, const Vec& dx, Float r2) {
+                    if (!(r2 > 0)) return;
+                    if (!isFluid(kind[k])) {
+                        particleContact_[j] += law.force(dx, r2, v[j] - v[k]);
+                        return;
+                    }
+                    const Float r = std::sqrt(r2);
+                    particleForce_[j] += pair.onBoundary(k, j, -dx, r, kernel.dW_dr(r, h));
+                });
+            }
+        });
     });
 }
 
 template <int Dim>
-typename RigidBodyCoupling<Dim>::Vec RigidBodyCoupling<Dim>::contactForce(const Storage<Dim>& s,
-                                                                          Size j) const {
-    const auto kind = s.template getValue<int>(QuantityId::KIND);
-    const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
-    const auto v = s.template getDt<Vec>(QuantityId::POSITION);
-    const MovingBody<Dim>& owner = bodies_->bodies[body[j]];
-    const Float m = owner.motion.mass / Float(particleCount_[body[j]]);
-    const Float kn = m * (c0_ / dx_) * (c0_ / dx_), cn = std::sqrt(kn * m);
-    const Float mu = owner.motion.friction;
-    const auto otherSolid = [&](Size k) { return !isFluid(kind[k]) && body[k] != body[j]; };
-    Vec f{};
-    lists_->forEachNeighbourOf(j, otherSolid, [&](Size k, const Vec& dx, Float r2) {
-        if (r2 >= dx_ * dx_ || r2 <= 0) return;
-        const Float r = std::sqrt(r2);
-        const Vec n = dx / r, vjk = v[j] - v[k];
-        const Float push = kn * (dx_ - r) - cn * dot(vjk, n);
-        if (!(push > 0)) return;
-        const Vec vt = vjk - n * dot(vjk, n);
-        const Float slide = norm(vt);
-        f += n * push;
-        if (slide > 0) f -= vt * (std::min(mu * push, cn * slide) / slide);
-    });
-    return f;
+ContactLaw<Dim> RigidBodyCoupling<Dim>::contactLaw(int b) const {
+    const MovingBody<Dim>& owner = bodies_->bodies[std::size_t(b)];
+    if (owner.motion.type != MotionType::FREE) return {};
+    const Float m = owner.motion.mass / Float(particleCount_[std::size_t(b)]);
+    const Float kn = m * (c0_ / dx_) * (c0_ / dx_);
+    return {kn, std::sqrt(kn * m), owner.motion.friction, dx_};
 }
 
 template <int Dim>
@@ -181,8 +207,7 @@ void RigidBodyCoupling<Dim>::sumBodyLoads(const Storage<Dim>& s) {
     const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
     for (MovingBody<Dim>& b : bodies_->bodies)
         b.fluidForce = b.contactForce = Vec{}, b.fluidTorque = b.contactTorque = {};
-    for (Size j = 0; j < s.size(); ++j) {
-        if (!bodies_->moves(body[j])) continue;
+    for (const Size j : movingParticles_) {
         MovingBody<Dim>& b = bodies_->bodies[body[j]];
         const Vec arm = x[j] - b.state.position;
         b.fluidForce += particleForce_[j];

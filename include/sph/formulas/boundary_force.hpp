@@ -44,7 +44,11 @@ class BoundaryPairForce {
 
     /// The force of fluid particle i on boundary particle j, dx = x_i - x_j, r = |dx| > 0.
     Vec onBoundary(Size i, Size j, const Vec& dx, Float r) const {
-        const Vec grad = dx * (kernel_.dW_dr(r) / r);
+        return onBoundary(i, j, dx, r, kernel_.dW_dr(r));
+    }
+    /// The same with the kernel's dW/dr at r given (a loop that holds the kernel's type).
+    Vec onBoundary(Size i, Size j, const Vec& dx, Float r, Float dWdr) const {
+        const Vec grad = dx * (dWdr / r);
         Vec a = -pressureGradientForce(grad, pressureOverDensity2(p_[i], rho_[i]),
                                        pressureOverDensity2(p_[j], rho_[j])) *
                 m_[j];

@@ -81,7 +81,8 @@ template <int Dim>
 std::vector<WrittenFile> ProbesWriter<Dim>::files() const {
     std::vector<WrittenFile> out = {{"probes.csv", "probe values over time"}};
     std::string names;
-    for (const std::string& format : plots_) names += (names.empty() ? "probes." : ", probes.") + format;
+    for (const std::string& format : plots_)
+        names += (names.empty() ? "probes." : ", probes.") + format;
     if (plotted_) out.push_back({names, "their plot"});
     return out;
 }

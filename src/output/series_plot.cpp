@@ -42,8 +42,9 @@ std::string plotScript() {
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (!ec) {
-        for (const fs::path& p : {exe.parent_path() / "plot_series.py",
-                                  exe.parent_path().parent_path() / "share/numerics/plot_series.py"})
+        for (const fs::path& p :
+             {exe.parent_path() / "plot_series.py",
+              exe.parent_path().parent_path() / "share/numerics/plot_series.py"})
             if (isFile(p)) return p.string();
     }
 #ifdef NUMERICS_PLOT_SCRIPT_SOURCE

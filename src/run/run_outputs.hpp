@@ -1,6 +1,7 @@
 // The observers that write the run's files (internal to numerics_io): the outputs every
-// output.every simulated seconds, the probes every output.probes_every, and checkpoints every --checkpoint-every seconds and on Ctrl-C.
-// The root writes every file, from the particles of every process gathered.
+// output.every simulated seconds, the probes every output.probes_every, and checkpoints every
+// --checkpoint-every seconds and on Ctrl-C. The root writes every file, from the particles of every
+// process gathered.
 #pragma once
 
 #include <string>

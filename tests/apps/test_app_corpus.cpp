@@ -214,7 +214,7 @@ const std::vector<Case>& corpus() {
              return "";
          },
          kScene,
-         {"output.probes_every", "> 0"}},
+         {"output.probes_every", "a positive number [s]", "found 0"}},
         {"probes_every_text",
          3,
          [](json& j) {
@@ -222,7 +222,7 @@ const std::vector<Case>& corpus() {
              return "";
          },
          kScene,
-         {"output.probes_every", "a number"}},
+         {"output.probes_every", "a positive number", "\"1 ms\""}},
         {"plots_jpg",
          2,
          [](json& j) {

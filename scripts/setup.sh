@@ -14,10 +14,11 @@ packages=(
   libmuparser-dev                # expressions in scene files
   libassimp-dev                  # triangle meshes in scenes (STL, OBJ, PLY): src/geometry/mesh_reader.cpp
   libpng-dev                     # pictures (PNG)
+  libfreetype-dev fonts-dejavu-core  # pictures: their text in DejaVu Sans (src/output/image.cpp)
   zlib1g-dev                     # checkpoints: the CRC-32 checksum of each (src/output/checkpoint.cpp)
   ffmpeg                         # the movie of a run (<prefix>.mp4) from its pictures
   python3-numpy                  # validation: comparison of the apps' outputs (validation/cases.py)
-  python3-matplotlib             # validation: plots of docs/validation.md (validation/run.sh)
+  python3-matplotlib             # the apps' plots (scripts/plot_series.py: probes.png); validation's plots
   libopenmpi-dev openmpi-bin     # several processes (mpirun): MPI domain decomposition
   pybind11-dev python3-pybind11  # the Python module numerics (python/): its build
   python3-dev                    # the Python module numerics: Python's headers

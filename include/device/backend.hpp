@@ -1,12 +1,13 @@
 // The CUDA back end's entry points (defined in src/cuda/, built when a CUDA compiler is found:
-// NUMERICS_HAVE_CUDA). A build without it has none of these definitions: callers test
-// cudaBuilt() first.
+// NUMERICS_HAVE_CUDA, in the build's numerics_config.hpp). A build without it has none of these
+// definitions: callers test cudaBuilt() first.
 #pragma once
 
 #include <memory>
 #include <string>
 
 #include "device/fluid_state.hpp"
+#include "numerics_config.hpp"
 
 namespace num::device {
 

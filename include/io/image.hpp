@@ -1,5 +1,6 @@
 // A small RGB raster with the drawing the apps' pictures need (discs, rectangles, lines, text
-// in a built-in 5x7 font), a colour map, and PNG output through libpng.
+// in DejaVu Sans through FreeType, or a built-in 5x7 font without them), a colour map, and PNG
+// output through libpng.
 #pragma once
 
 #include <array>
@@ -37,9 +38,10 @@ class Image {
     void line(double x0, double y0, double x1, double y1, Rgb c);
     /// A line `width` pixels wide (plots).
     void thickLine(double x0, double y0, double x1, double y1, Rgb c, double width);
-    /// Text with its top-left corner at (x, y); each font pixel is a scale x scale square.
+    /// UTF-8 text, its capitals 7 * scale pixels tall from (x, y) down: DejaVu Sans where
+    /// FreeType and the font are (scripts/setup.sh), else the 5x7 font, each of its pixels a
+    /// scale x scale square (capitals, digits and a few signs only).
     void text(int x, int y, const std::string& s, Rgb c, int scale = 2);
-    static int textWidth(const std::string& s, int scale = 2) { return int(s.size()) * 6 * scale; }
     const std::vector<std::uint8_t>& pixels() const { return px_; }
 
   private:

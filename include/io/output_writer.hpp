@@ -35,7 +35,8 @@ struct EndOfRun {
     std::string video;           ///< path of <prefix>.mp4, or ""
     std::string videoNote;       ///< why there is no movie ("" when there is one)
     bool videoWanted = false;    ///< the scene asked for pictures and a movie
-    std::string probePlot;       ///< path of probes.png, or "" (no probes)
+    std::string probePlot;       ///< path of probes.png (or .svg), or "" (no probes or plot)
+    std::string probePlotNote;   ///< why the probes' plot is missing ("" when drawn or not asked)
     std::string paraviewScript;  ///< path of <prefix>_paraview.py, or "" (no VTU output)
 };
 

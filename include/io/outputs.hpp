@@ -1,7 +1,8 @@
 // Everything a run writes per output time, through its writers (io/output_writer.hpp): the
 // formats of output.formats by name (io/writer_registry.hpp: VTU with its .pvd series and a
 // ParaView script, CSV, and those plugins add), the pictures (PNG, and at the end an MP4 by
-// ffmpeg when it is installed) and the probes (a row of probes.csv, and at the end their plot).
+// ffmpeg when it is installed) and the probes (a row of probes.csv at each probe time,
+// output.probes_every, and at the end their plot by scripts/plot_series.py).
 #pragma once
 
 #include <memory>
@@ -41,8 +42,10 @@ class Outputs {
     /// what is up to t.
     void resume(double t, std::vector<std::pair<double, std::string>> series);
 
-    /// Writes the files of output number `index` at time t.
+    /// Writes the files of output number `index` at time t (all but the probes).
     void write(const sph::Storage<Dim>& s, double t, int index);
+    /// Writes the probes' row of time t (output.probes_every; none without probes).
+    void writeProbes(const sph::Storage<Dim>& s, double t);
 
     /// The end of a run: the probe plot, and the movie when the run completed.
     EndOfRun finish(bool completed) const;
@@ -73,6 +76,7 @@ class Outputs {
     WriterContext context_;                               ///< what every writer is made with
     std::vector<std::unique_ptr<IWriter<Dim>>> writers_;  ///< formats, pictures, probes
     const PicturesWriter<Dim>* pictures_ = nullptr;       ///< among writers_, or none
+    IWriter<Dim>* probes_ = nullptr;                      ///< among writers_, or none
     std::string earlierRunNote_;
     std::unique_ptr<OutputLock> lock_;  ///< while the run writes the directory
 };

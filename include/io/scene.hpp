@@ -2,6 +2,7 @@
 // every key, type and range, and the geometry, so whatever reaches the simulation is valid.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <memory>
@@ -143,11 +144,20 @@ struct OutputSpec {
     std::string directory = "out/scene";
     std::string prefix = "particles";
     double every = 0.05;
+    /// Seconds of simulated time between probe samples (output.probes_every); empty: the
+    /// default, probeInterval(). Probes sample at the first step that reaches each multiple.
+    std::optional<double> probesEvery;
     /// Names of writers (io/writer_registry.hpp), each listed once, in the scene's order.
     std::vector<std::string> formats = {"vtu"};
     bool images = true, video = true;
     int imageWidth = 960;
     std::optional<double> colorMin, colorMax;  ///< colour-bar range; empty: from the scene
+    /// Formats of the plots drawn after the run (output.plots): "png", "svg"; empty: none.
+    std::vector<std::string> plots = {"png"};
+
+    /// The probes' sampling interval: output.probes_every, else 1 ms, or output.every where
+    /// that is shorter (probes never sampled less often than the outputs).
+    double probeInterval() const { return probesEvery.value_or(std::min(1e-3, every)); }
 };
 
 struct PhysicsSpec {

@@ -2,6 +2,7 @@
 import csv
 import json
 import os
+import sys
 
 import numpy as np
 
@@ -11,6 +12,20 @@ from .particles import Particles
 from .scene import Scene
 
 _BACKENDS = ("seq", "omp", "threads", "cpu", "cuda")
+
+
+# Seconds between redraws of the progress bar where stderr is not a terminal (a log file, a
+# pipe, CI): each redraw there is a new line, so at most two a second; tqdm's 0.1 s on a terminal.
+NON_TERMINAL_BAR_INTERVAL = 0.5
+
+
+def _bar_interval(stream):
+    """tqdm's mininterval for a bar drawn on `stream` (tqdm's default file is sys.stderr)."""
+    try:
+        terminal = stream.isatty()
+    except (AttributeError, ValueError):
+        terminal = False
+    return 0.1 if terminal else NON_TERMINAL_BAR_INTERVAL
 
 
 def _usage(message):
@@ -136,7 +151,8 @@ class Simulation:
 
         total = max(target - self.time, 0.0)
         bar = tqdm(total=round(total, 9), unit="s", unit_scale=False, desc="simulated",
-                   bar_format="{l_bar}{bar}| {n:.4g}/{total:.4g} s [{elapsed}<{remaining}]")
+                   bar_format="{l_bar}{bar}| {n:.4g}/{total:.4g} s [{elapsed}<{remaining}]",
+                   mininterval=_bar_interval(sys.stderr))
         bar.start_time_of_run = self.time
         return bar
 

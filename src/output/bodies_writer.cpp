@@ -3,6 +3,7 @@
 #include "io/file.hpp"
 #include "io/formatted.hpp"
 #include "output/csv_rows.hpp"
+#include "output/series_plot.hpp"
 
 namespace num::io {
 
@@ -84,6 +85,15 @@ void BodiesWriter<Dim>::write(const sph::Storage<Dim>& storage, const std::vecto
                 "\n";
     }
     appendToFile(c_.path("bodies.csv"), rows);
+}
+
+template <int Dim>
+void BodiesWriter<Dim>::finish(bool, EndOfRun&) {
+    if (plots_.empty()) return;
+    std::vector<std::string> pictures;
+    for (const std::string& format : plots_) pictures.push_back(c_.path("bodies." + format));
+    // Without matplotlib the probe plot's note says why; the bodies' plot is then left out too.
+    plotSeries(c_.path("bodies.csv"), pictures, "bodies: " + c_.title, c_.path("plot_series.log"));
 }
 
 template class BodiesWriter<2>;

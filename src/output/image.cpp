@@ -14,6 +14,11 @@
 #include "io/errors.hpp"
 #include "output/font5x7.hpp"
 
+#ifdef NUMERICS_HAVE_FREETYPE
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#endif
+
 namespace num::io {
 
 Rgb coolWarm(double u) {
@@ -141,16 +146,98 @@ void Image::line(double x0, double y0, double x1, double y1, Rgb c) {
     }
 }
 
-void Image::text(int x, int y, const std::string& s, Rgb c, int scale) {
-    for (std::size_t n = 0; n < s.size(); ++n) {
-        const detail::Glyph* g = detail::glyphOf(s[n]);
-        if (!g) continue;
+namespace {
+
+/// The code points of UTF-8 text (a malformed byte stands for itself).
+std::vector<char32_t> codePoints(const std::string& s) {
+    std::vector<char32_t> out;
+    for (std::size_t i = 0; i < s.size();) {
+        const unsigned char b = s[i];
+        const int extra = b >= 0xF0 ? 3 : b >= 0xE0 ? 2 : b >= 0xC0 ? 1 : 0;
+        char32_t cp = extra ? b & (0x3F >> extra) : b;
+        bool ok = i + extra < s.size();
+        for (int k = 1; ok && k <= extra; ++k) {
+            ok = (static_cast<unsigned char>(s[i + k]) & 0xC0) == 0x80;
+            cp = cp << 6 | (s[i + k] & 0x3F);
+        }
+        out.push_back(ok ? cp : b);
+        i += ok ? extra + 1 : 1;
+    }
+    return out;
+}
+
+/// Text in the built-in 5x7 font (capitals, digits, a few signs), where no real font is.
+void text5x7(Image& img, int x, int y, const std::vector<char32_t>& s, Rgb c, int scale) {
+    int n = 0;
+    for (char32_t cp : s) {
+        const detail::Glyph* g = cp < 128 ? detail::glyphOf(char(cp)) : nullptr;
+        if (!g) continue;  // not in the font (e.g. the degree sign): left out
         for (int row = 0; row < 7; ++row)
             for (int col = 0; col < 5; ++col)
                 if (g->rows[row] & (0x10 >> col))
-                    fillRect(x + (int(n) * 6 + col) * scale, y + row * scale,
-                             x + (int(n) * 6 + col + 1) * scale, y + (row + 1) * scale, c);
+                    img.fillRect(x + (n * 6 + col) * scale, y + row * scale,
+                                 x + (n * 6 + col + 1) * scale, y + (row + 1) * scale, c);
+        ++n;
     }
+}
+
+#ifdef NUMERICS_HAVE_FREETYPE
+/// DejaVu Sans (Debian's fonts-dejavu-core) through FreeType, opened for one text; ok() is
+/// false where the font file is missing.
+class Face {
+  public:
+    explicit Face(int pixels) {
+        if (FT_Init_FreeType(&lib_) != 0) {
+            lib_ = nullptr;
+            return;
+        }
+        if (FT_New_Face(lib_, "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", 0, &face_) != 0)
+            face_ = nullptr;
+        else if (FT_Set_Pixel_Sizes(face_, 0, FT_UInt(pixels)) != 0)
+            FT_Done_Face(face_), face_ = nullptr;
+    }
+    ~Face() {
+        if (face_) FT_Done_Face(face_);
+        if (lib_) FT_Done_FreeType(lib_);
+    }
+    Face(const Face&) = delete;
+    Face& operator=(const Face&) = delete;
+    bool ok() const { return face_ != nullptr; }
+
+    /// Draws the text with its baseline at y, each glyph's coverage blended over the image.
+    void draw(Image& img, int x, int baseline, const std::vector<char32_t>& s, Rgb c) const {
+        for (char32_t cp : s) {
+            if (FT_Load_Char(face_, cp, FT_LOAD_RENDER) != 0) continue;
+            const FT_GlyphSlot g = face_->glyph;
+            for (unsigned row = 0; row < g->bitmap.rows; ++row)
+                for (unsigned col = 0; col < g->bitmap.width; ++col) {
+                    const int px = x + g->bitmap_left + int(col),
+                              py = baseline - g->bitmap_top + int(row);
+                    const int alpha = g->bitmap.buffer[row * g->bitmap.pitch + col];
+                    if (alpha && px >= 0 && py >= 0 && px < img.width() && py < img.height())
+                        img.set(px, py, mix(img.at(px, py), c, alpha / 255.0));
+                }
+            x += int(g->advance.x >> 6);
+        }
+    }
+
+  private:
+    FT_Library lib_ = nullptr;
+    FT_Face face_ = nullptr;
+};
+#endif
+
+}  // namespace
+
+void Image::text(int x, int y, const std::string& s, Rgb c, int scale) {
+    const std::vector<char32_t> cps = codePoints(s);
+#ifdef NUMERICS_HAVE_FREETYPE
+    // About the 5x7 font's height at the same scale: capitals 7 * scale pixels tall, on the
+    // same baseline.
+    const Face face(10 * scale);
+    if (face.ok()) return face.draw(*this, x, y + 7 * scale, cps, c);
+#endif
+    text5x7(*this, x, y, cps, c, scale);
 }
 
 void writePng(const std::string& path, const Image& image) {

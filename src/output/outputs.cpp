@@ -127,11 +127,15 @@ void Outputs<Dim>::makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& s
         writers_.push_back(std::move(pictures));
     }
     if (setup.model.movingBodies)
-        writers_.push_back(std::make_unique<BodiesWriter<Dim>>(context, setup.model.movingBodies));
-    if (!scene.probes.empty())
-        writers_.push_back(std::make_unique<ProbesWriter<Dim>>(
-            context, scene.probes, setup.settings, std::max(640, scene.output.imageWidth),
-            bodyForces(scene, setup), int(setup.geometry.bodies.size())));
+        writers_.push_back(std::make_unique<BodiesWriter<Dim>>(context, setup.model.movingBodies,
+                                                               scene.output.plots));
+    if (!scene.probes.empty()) {
+        auto probes = std::make_unique<ProbesWriter<Dim>>(
+            context, scene.probes, setup.settings, scene.output.plots, bodyForces(scene, setup),
+            int(setup.geometry.bodies.size()));
+        probes_ = probes.get();
+        writers_.push_back(std::move(probes));
+    }
 }
 
 template <int Dim>
@@ -144,7 +148,8 @@ bool Outputs<Dim>::earlierRunFile(const std::string& name) const {
     const std::string& prefix = scene_.output.prefix;
     for (const std::string& own :
          {prefix + ".pvd", prefix + ".mp4", std::string("probes.csv"), std::string("probes.png"),
-          std::string("bodies.csv"), std::string("summary.json"),
+          std::string("bodies.csv"), std::string("bodies.png"), std::string("bodies.svg"),
+          std::string("probes.svg"), std::string("summary.json"),
           std::string("checkpoint_interrupted.chk")})
         if (name == own) return true;
     // prefix_NNNN.vtu, .csv, .png and checkpoint_NNNN.chk: at least four digits.
@@ -203,7 +208,13 @@ void Outputs<Dim>::resume(double t, std::vector<std::pair<double, std::string>> 
 template <int Dim>
 void Outputs<Dim>::write(const sph::Storage<Dim>& s, double t, int index) {
     const std::vector<OutputField> fields = outputFields(s, names_);
-    for (auto& w : writers_) w->write(s, fields, t, index);
+    for (auto& w : writers_)
+        if (w.get() != probes_) w->write(s, fields, t, index);  // probes: at their own times
+}
+
+template <int Dim>
+void Outputs<Dim>::writeProbes(const sph::Storage<Dim>& s, double t) {
+    if (probes_) probes_->write(s, {}, t, 0);
 }
 
 template <int Dim>

@@ -2,12 +2,11 @@
 
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 
 #include "io/diagnostics.hpp"
 #include "io/file.hpp"
-#include "io/probe_plot.hpp"
 #include "output/csv_rows.hpp"
+#include "output/series_plot.hpp"
 
 namespace num::io {
 
@@ -57,13 +56,27 @@ void ProbesWriter<Dim>::write(const sph::Storage<Dim>& s, const std::vector<Outp
     appendToFile(c_.path("probes.csv"), row + "\n");
 }
 
+/// The plot of probes.csv, in each format of output.plots; a plot that cannot be drawn (no
+/// Python or matplotlib) is a note at the end of the run, not a failure.
 template <int Dim>
 void ProbesWriter<Dim>::finish(bool, EndOfRun& end) {
-    std::ifstream in(c_.path("probes.csv"), std::ios::binary);
-    std::ostringstream csv;
-    csv << in.rdbuf();
-    end.probePlot = c_.path("probes.png");
-    writePng(end.probePlot, plotProbes(csv.str(), "probes: " + c_.title, plotWidth_));
+    if (plots_.empty()) return;
+    std::vector<std::string> pictures;
+    for (const std::string& format : plots_) pictures.push_back(c_.path("probes." + format));
+    end.probePlotNote = plotSeries(c_.path("probes.csv"), pictures, "probes: " + c_.title,
+                                   c_.path("plot_series.log"));
+    plotted_ = end.probePlotNote.empty();
+    if (plotted_) end.probePlot = pictures.front();
+}
+
+template <int Dim>
+std::vector<WrittenFile> ProbesWriter<Dim>::files() const {
+    std::vector<WrittenFile> out = {{"probes.csv", "probe values over time"}};
+    std::string names;
+    for (const std::string& format : plots_)
+        names += (names.empty() ? "probes." : ", probes.") + format;
+    if (plotted_) out.push_back({names, "their plot"});
+    return out;
 }
 
 template class ProbesWriter<2>;

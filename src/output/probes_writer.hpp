@@ -1,9 +1,11 @@
-// The probes of a run: a row of probes.csv per output time (the fields interpolated at each
-// probe's point, or the force on a probe's body or wall), and at the end their plot, probes.png.
+// The probes of a run: a row of probes.csv per probe time (output.probes_every: the fields
+// interpolated at each probe's point, or the force on a probe's body or wall), and at the end
+// their plot, probes.png (and .svg: output.plots), drawn by scripts/plot_series.py.
 // Internal to numerics_io.
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "io/output_writer.hpp"
@@ -16,15 +18,15 @@ namespace num::io {
 template <int Dim>
 class ProbesWriter final : public IWriter<Dim> {
   public:
-    /// `plotWidth`: of probes.png [px]; `bodyForces`: what the probes on bodies and walls
-    /// read, the scene's `bodies` first, then its walls.
+    /// `plots`: the formats of the plot ("png", "svg"; none: no plot); `bodyForces`: what the
+    /// probes on bodies and walls read, the scene's `bodies` first, then its walls.
     ProbesWriter(const WriterContext& context, std::vector<Probe<Dim>> probes,
-                 const sph::RunSettings& settings, int plotWidth,
+                 const sph::RunSettings& settings, std::vector<std::string> plots,
                  std::optional<BodyForces<Dim>> bodyForces = std::nullopt, int bodies = 0)
         : c_(context),
           probes_(std::move(probes)),
           kernel_(settings),
-          plotWidth_(plotWidth),
+          plots_(std::move(plots)),
           bodyForces_(std::move(bodyForces)),
           bodies_(bodies) {}
 
@@ -35,15 +37,14 @@ class ProbesWriter final : public IWriter<Dim> {
     void write(const sph::Storage<Dim>& s, const std::vector<OutputField>& fields, double t,
                int index) override;
     void finish(bool completed, EndOfRun& end) override;
-    std::vector<WrittenFile> files() const override {
-        return {{"probes.csv, probes.png", "probe values over time, and their plot"}};
-    }
+    std::vector<WrittenFile> files() const override;
 
   private:
     WriterContext c_;
     std::vector<Probe<Dim>> probes_;
     sph::RunKernel<Dim> kernel_;
-    int plotWidth_;
+    std::vector<std::string> plots_;
+    bool plotted_ = false;  ///< the plot was drawn
     std::optional<BodyForces<Dim>> bodyForces_;
     int bodies_;
 };

@@ -26,7 +26,7 @@ void colourBar(Image& img, int x0, int y0, int y1, double lo, double hi) {
         img.fillRect(x0 + w, y, x0 + w + 5, y + 1, kText);
         img.text(x0 + w + 8, y - 7, formatted("%.4g", hi - (hi - lo) * k / 4), kText, 2);
     }
-    img.text(x0 - 4, y0 - 26, "T [C]", kText, 2);
+    img.text(x0 - 4, y0 - 26, "T [°C]", kText, 2);  // "T [C]" in the 5x7 font
 }
 
 struct Particle2 {

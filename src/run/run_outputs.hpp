@@ -1,6 +1,7 @@
 // The observers that write the run's files (internal to numerics_io): the outputs every
-// output.every simulated seconds, and checkpoints every --checkpoint-every seconds and on Ctrl-C.
-// The root writes every file, from the particles of every process gathered.
+// output.every simulated seconds, the probes every output.probes_every, and checkpoints every
+// --checkpoint-every seconds and on Ctrl-C. The root writes every file, from the particles of every
+// process gathered.
 #pragma once
 
 #include <string>
@@ -48,6 +49,52 @@ class OutputObserver final : public IStepObserver<Dim> {
     bool due(const Simulation<Dim>& sim) const { return reached(sim.time(), landingTime()); }
     double every_;
     std::int64_t slot_ = 0;
+};
+
+/// Probes sample every output.probes_every simulated seconds (Scene::probeInterval), at the
+/// first step that reaches each multiple: they do not shorten the steps, so a run's steps are
+/// the same with or without probes, at any rate. After a restart they go on from the first
+/// multiple after the checkpoint's time, as they would have.
+template <int Dim>
+class ProbeObserver final : public IStepObserver<Dim> {
+  public:
+    explicit ProbeObserver(const RunParts<Dim>& p) : every_(p.scene.output.probeInterval()) {
+        if (!p.options.restart) return;  // a new run samples at t = 0 first
+        last_ = p.state.time;
+        passSlotsUpTo(last_);
+    }
+    bool needsParticles(const Simulation<Dim>& sim) const override { return due(sim); }
+    void afterStep(Simulation<Dim>& sim) override {
+        if (due(sim)) write(sim);
+    }
+    /// And at the end (or where the run stopped), as the outputs.
+    void afterRun(Simulation<Dim>& sim, const RunEnd& end) override {
+        if (!end.abandoned && sim.time() != last_) write(sim);
+    }
+
+    /// Writes the probes' row of the present time, from every particle.
+    void write(Simulation<Dim>& sim) {
+        RunParts<Dim>& p = sim.parts();
+        p.everyParticle(p.storage, [&](const sph::Storage<Dim>& all) {
+            onRoot(p.comm, [&] { p.outputs->writeProbes(all, sim.time()); });
+        });
+        last_ = sim.time();
+        passSlotsUpTo(last_);
+    }
+
+  private:
+    bool due(const Simulation<Dim>& sim) const {
+        return reached(sim.time(), double(slot_) * every_);
+    }
+    /// The next slot is the first multiple of every_ that time t has not reached.
+    void passSlotsUpTo(double t) {
+        slot_ = std::max<std::int64_t>(slot_, std::int64_t(t / every_) - 1);
+        while (reached(t, double(slot_) * every_)) ++slot_;
+    }
+
+    double every_;
+    std::int64_t slot_ = 0;
+    double last_ = -1;  ///< the time of the last row; -1: none
 };
 
 /// A checkpoint holds the scene, the run's fingerprint, its state and every particle, so that a

@@ -1,5 +1,6 @@
 // What a run prints at its end: where its outputs went, then the key figures of summary.json
-// (steps, speed, conservation drift, warnings), and one line when the movie is missing.
+// (steps, speed, conservation drift, warnings), and one line each when the movie or the probes'
+// plot is missing.
 #pragma once
 
 #include <cmath>
@@ -20,6 +21,7 @@ inline void addEndOfRun(nlohmann::json& summary, const EndOfRun& end,
     summary["video"] = end.video;
     summary["video_note"] = end.videoNote;
     summary["probe_plot"] = end.probePlot;
+    summary["probe_plot_note"] = end.probePlotNote;
     summary["paraview_script"] = end.paraviewScript;
     summary["warnings"] = warnings;
 }
@@ -88,6 +90,8 @@ void printRunReport(const std::string& program, const Outputs<Dim>& out, const S
     item("  warnings", warnings.empty() ? "none" : std::to_string(warnings.size()) + " (above)");
     if (end.videoWanted && end.video.empty() && completed)
         std::printf("%s: no movie: %s\n", program.c_str(), end.videoNote.c_str());
+    if (!end.probePlotNote.empty())  // the run itself went on: its probes.csv is there
+        std::printf("%s: no probe plot: %s\n", program.c_str(), end.probePlotNote.c_str());
     std::fflush(stdout);
 }
 

@@ -190,8 +190,17 @@ void addRunObservers(Simulation<Dim>& sim) {
     auto output = std::make_unique<OutputObserver<Dim>>(p);
     OutputObserver<Dim>& first = *output;
     sim.addObserver(std::move(output));
+    ProbeObserver<Dim>* probes = nullptr;
+    if (!p.scene.probes.empty()) {  // the same on every process: sampling gathers particles
+        auto observer = std::make_unique<ProbeObserver<Dim>>(p);
+        probes = observer.get();
+        sim.addObserver(std::move(observer));
+    }
+    // After the probes: a checkpoint at a probe time holds its row.
     sim.addObserver(std::make_unique<CheckpointObserver<Dim>>(p.options.checkpointEvery));
-    if (!p.options.restart) first.write(sim);
+    if (p.options.restart) return;
+    first.write(sim);
+    if (probes) probes->write(sim);
 }
 
 }  // namespace

@@ -448,6 +448,17 @@ void readOutputFormats(const At& f, OutputSpec& out) {
     }
 }
 
+/// The formats of the plots drawn after the run: "png" and "svg", each once; [] for none.
+void readPlots(const At& f, OutputSpec& out) {
+    if (!f.v.is_array()) f.fail("an array of plot formats, e.g. [\"png\", \"svg\"], or []");
+    out.plots.clear();
+    for (std::size_t i = 0; i < f.v.size(); ++i) {
+        const std::string format = f[i].choice({"png", "svg"});
+        if (std::find(out.plots.begin(), out.plots.end(), format) == out.plots.end())
+            out.plots.push_back(format);
+    }
+}
+
 void readColorRange(const At& c, OutputSpec& out) {
     c.array(2, "temperatures [degC] (low, high)");
     out.colorMin = c[0].number(-273.15, 1e4, false, "degC");
@@ -456,8 +467,8 @@ void readColorRange(const At& c, OutputSpec& out) {
 }
 
 void readOutput(const At& o, OutputSpec& out) {
-    o.object({"directory", "prefix", "every", "formats", "images", "video", "image_width",
-              "color_range"});
+    o.object({"directory", "prefix", "every", "probes_every", "formats", "images", "video",
+              "image_width", "color_range", "plots"});
     if (o.has("directory")) out.directory = o["directory"].string();
     if (o.has("prefix")) {
         out.prefix = o["prefix"].string();
@@ -465,6 +476,8 @@ void readOutput(const At& o, OutputSpec& out) {
             o["prefix"].fail("a non-empty file-name prefix without '/', '\\' or spaces");
     }
     out.every = o.number("every", out.every, 0, 1e300, true, "s");
+    if (o.has("probes_every")) out.probesEvery = o.number("probes_every", 0, 0, 1e300, true, "s");
+    if (o.has("plots")) readPlots(o["plots"], out);
     if (o.has("formats")) readOutputFormats(o["formats"], out);
     out.images = o.boolean("images", out.images);
     out.video = o.boolean("video", out.video);

@@ -224,6 +224,30 @@ const std::vector<Case>& corpus() {
          },
          kScene,
          {"output.every", "at most 100000 outputs"}},
+        {"probes_every_zero",
+         2,
+         [](json& j) {
+             j["output"]["probes_every"] = 0;
+             return "";
+         },
+         kScene,
+         {"output.probes_every", "a positive number [s]", "found 0"}},
+        {"probes_every_text",
+         3,
+         [](json& j) {
+             j["output"]["probes_every"] = "1 ms";
+             return "";
+         },
+         kScene,
+         {"output.probes_every", "a positive number", "\"1 ms\""}},
+        {"plots_jpg",
+         2,
+         [](json& j) {
+             j["output"]["plots"] = {"png", "jpg"};
+             return "";
+         },
+         kScene,
+         {"output.plots", "\"svg\"", "jpg"}},
         {"checkpoint_every_1e_minus_300",
          2,
          [](json&) { return std::string("--checkpoint-every 1e-300"); },

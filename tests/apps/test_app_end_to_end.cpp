@@ -2,6 +2,8 @@
 // scene asks for (VTU + PVD series, CSV, PNG, probes.csv, summary.json).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include "app_runner.hpp"
@@ -59,11 +61,16 @@ TEST_P(EndToEnd, WritesEveryOutput) {
         ASSERT_GT(png.size(), 8u);
         EXPECT_EQ(png.substr(1, 3), "PNG");
     }
-    // probes.csv: a time column and <probe>.<field> columns, one row per output time.
+    // probes.csv: a time column and <probe>.<field> columns, one row per millisecond (the
+    // default output.probes_every; the steps are shorter) from t = 0 to the end, 0.02 s.
     const std::string probes = readFile(out + "probes.csv");
     EXPECT_EQ(probes.substr(0, probes.find('\n')),
               c.dim == 2 ? "time,p1.pressure,p1.vx,p1.vy" : "time,p.temperature");
-    EXPECT_EQ(std::count(probes.begin(), probes.end(), '\n'), 4);
+    const std::vector<double> times = readCsv(out + "probes.csv").at("time");
+    ASSERT_EQ(times.size(), 21u);
+    for (std::size_t k = 0; k < times.size(); ++k)
+        EXPECT_EQ(std::floor(times[k] / 1e-3 + 1e-9), double(k)) << times[k];
+    EXPECT_DOUBLE_EQ(times.back(), 0.02);
 
     const auto s = nlohmann::json::parse(readFile(out + "summary.json"));
     for (const char* key : {"dimension", "particles", "steps", "final_time", "wall_seconds",

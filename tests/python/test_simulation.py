@@ -1,5 +1,6 @@
 """numerics.Simulation: steps, partial and whole runs, callbacks, progress, probes, summary."""
 import io
+import sys
 import math
 
 import pytest
@@ -85,13 +86,38 @@ def test_progress_bar(sim2d, monkeypatch):
     assert len(bars) == 1 and bars[0].n == pytest.approx(0.01) and bars[0].total == 0.01
 
 
+class _Stream(io.StringIO):
+    def __init__(self, terminal):
+        super().__init__()
+        self.terminal = terminal
+
+    def isatty(self):
+        return self.terminal
+
+
+@pytest.mark.parametrize("terminal, interval", [(True, 0.1), (False, 0.5)])
+def test_progress_bar_redraws_seldom_off_a_terminal(sim2d, monkeypatch, terminal, interval):
+    # Off a terminal (a log, a pipe) every redraw is a new line: at most two a second.
+    import tqdm.auto
+    bars = []
+    real = tqdm.auto.tqdm
+    monkeypatch.setattr(sys, "stderr", _Stream(terminal))
+    monkeypatch.setattr(tqdm.auto, "tqdm", lambda *a, **k: bars.append(real(*a, **k)) or bars[-1])
+    sim2d.run(until=0.005)
+    assert len(bars) == 1 and bars[0].mininterval == interval
+
+
 def test_probes_and_summary(sim2d):
     assert set(sim2d.probes) == {"p1"}
     sim2d.run(progress=False)
     p1 = sim2d.probes["p1"]
     assert set(p1) == {"time", "pressure", "vx", "vy"}
-    assert p1["time"] == pytest.approx([0, 0.01, 0.02])
-    assert all(len(v) == 3 for v in p1.values())
+    # Sampled every 1 ms (output.probes_every's default; outputs every 10 ms): one row in each
+    # millisecond from t = 0, the first step to reach it (the steps are shorter than 1 ms),
+    # the last at the end.
+    slots = [math.floor(t / 1e-3 + 1e-9) for t in p1["time"]]
+    assert slots == list(range(21)) and p1["time"][-1] == pytest.approx(0.02)
+    assert all(len(v) == 21 for v in p1.values())
     assert sim2d.summary["status"] == "completed"
 
 

@@ -717,7 +717,9 @@ def biesel_height_over_stroke(period, depth, g=9.81):
     return 2 * (math.cosh(kd2) - 1) / (math.sinh(kd2) + kd2), k
 
 
-FLOATING_SPHERE_CI_BOUND = 0.2  # set from the run at 0.02 below
+# The sphere's draft at the CI spacing 0.02 (2.5 spacings in radius) is 18.3 % off
+# (2026-12-06) -> regression bound 0.28 (times 1.5); at 0.01 it meets the gate (4.4 %).
+FLOATING_SPHERE_CI_BOUND = 0.28
 PISTON_MISS = (
     "H is 8.4 % low at spacing 0.01 and 9.3 % at 0.02: the error hardly falls with the spacing. "
     "The waves lose height as they travel (0.059 m 0.5 m from the paddle, 0.055 m at 2 m) to the "

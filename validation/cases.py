@@ -1022,6 +1022,8 @@ case("floating_box_2d", "floating_box_2d.json", floating_draft, 0.01, [0.02, 0.0
 case("piston_waves_2d", "piston_waves_2d.json", piston_waves, 0.01, [0.02, 0.01], (0.02, [PISTON_CI_BOUND]),
      issue=59, miss_note=PISTON_MISS)
 case("hot_ball_3d", "hot_ball_3d.json", hot_ball, 0.02, [0.02], (0.02, None), issue=59)
+# Not in CI (tests/validation): its run at 0.01, where it meets the gate, is 4 min on 2 cores;
+# the floating box holds the same coupling in CI.
 case("floating_sphere_3d", "floating_sphere_3d.json", floating_sphere, 0.01, [0.02, 0.01], (0.02, [FLOATING_SPHERE_CI_BOUND]),
      issue=59)
 
@@ -1077,8 +1079,8 @@ SETUPS = {
     "rest into water 0.3 m deep in a tank 0.6 m wide: it settles at the Archimedes draft d = 0.05 m, upright",
     "piston_waves_2d": "A piston wave maker, stroke 0.04 m and period 1 s, in water 0.4 m deep in a tank 4 m "
     "long: the wave height 1 and 1.5 m from the paddle against Biesel's linear theory, H = 1.535 S",
-    "hot_ball_3d": "A hot (90 C) conducting ball of density 3000 kg/m^3, radius 0.05 m, falls into cold "
-    "(10 C) water 0.2 m deep: the heat it gives against the heat the water gains, and its rest on the floor",
+    "hot_ball_3d": "A hot (90 C) conducting ball of density 3000 kg/m^3, radius 0.04 m, falls into cold "
+    "(10 C) water 0.16 m deep: the heat it gives against the heat the water gains, and its rest on the floor",
     "floating_sphere_3d": "A sphere of density 500 kg/m^3, radius 0.05 m, released 1 cm above its rest "
     "into water 0.2 m deep in a tank 0.3 m square: it settles half under water (draft 0.05 m)",
     "dam_break_obstacle": "MARIN's dam break (SPHERIC test 2, Kleefsman et al. 2005) in 3D: a water column "

@@ -39,12 +39,13 @@ endfunction()
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
-# 1. Install numerics into an empty prefix (no apps, tests, benchmarks or examples).
+# 1. Install numerics into an empty prefix (no apps, tests, benchmarks or examples; no CUDA back
+#    end, which a plugin does not need and the build tree's tests cover).
 set(prefix ${WORK_DIR}/prefix)
 run_step("configure numerics" ${CMAKE_COMMAND} -S ${NUMERICS_SOURCE_DIR} -B ${WORK_DIR}/numerics
          ${common_args} -DCMAKE_INSTALL_PREFIX=${prefix} -DNUMERICS_BUILD_IO=ON
          -DNUMERICS_BUILD_APPS=OFF -DNUMERICS_BUILD_TESTS=OFF -DNUMERICS_BUILD_BENCH=OFF
-         -DNUMERICS_BUILD_EXAMPLES=OFF)
+         -DNUMERICS_BUILD_EXAMPLES=OFF -DNUMERICS_BUILD_PYTHON=OFF -DNUMERICS_WITH_CUDA=OFF)
 run_step("build numerics" ${CMAKE_COMMAND} --build ${WORK_DIR}/numerics -j 2)
 run_step("install numerics" ${CMAKE_COMMAND} --install ${WORK_DIR}/numerics)
 file(REMOVE_RECURSE ${WORK_DIR}/numerics)

@@ -40,8 +40,8 @@ enum class QuantityId : int {
     OWNER,               ///< the process that owns the particle (int; -1: not yet assigned)
     PARTICLE_ID,         ///< stable particle id (int): never changes, never reused
     ORDER_KEY,           ///< the particle's cell at the last reordering (int, particle_order.hpp)
-    BODY_INDEX,   ///< the moving body a particle belongs to (int; -1: none; sph/bodies/)
-    BODY_OFFSET,  ///< a body particle's offset from its body's reference point, body frame
+    BODY_INDEX,          ///< the moving body a particle belongs to (int; -1: none; sph/bodies/)
+    BODY_OFFSET,         ///< a body particle's offset from its body's reference point, body frame
     USER_FIRST = 1000    ///< first id free for user quantities (or use negative ids)
 };
 

@@ -10,8 +10,8 @@
 #include "io/formatted.hpp"
 #include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
-#include "scene/boundary_types.hpp"
 #include "scene/body_motion_reader.hpp"
+#include "scene/boundary_types.hpp"
 #include "scene/json_check.hpp"
 #include "scene/shape_reader.hpp"
 #include "sph/defaults.hpp"
@@ -372,10 +372,9 @@ void readFluids(const At& f, Scene<Dim>& s) {
 template <int Dim>
 Body<Dim> readBody(const At& b, const std::map<std::string, MaterialSpec>& materials) {
     Body<Dim> body;
-    readShape<Dim>(b,
-                   {"shape", "min", "max", "center", "radius", "temperature", "material", "name",
-                    "motion"},
-                   {"shape"}, body);
+    readShape<Dim>(
+        b, {"shape", "min", "max", "center", "radius", "temperature", "material", "name", "motion"},
+        {"shape"}, body);
     body.temperature = b.number("temperature", body.temperature, -273.15, 1e4, false, "degC");
     if (b.has("material")) body.material = materialName(b["material"], materials);
     if (b.has("name")) body.name = b["name"].string();

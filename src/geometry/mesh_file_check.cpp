@@ -68,6 +68,7 @@ class BinaryBody {
     /// A value of `size` bytes as an integer (signed or not) or, for floats, as a double.
     double value(int size, bool isSigned, bool isFloat) {
         unsigned char b[8];
+        if (size < 1 || size > 8) refuse(path_, "a binary PLY value of more than 8 bytes");
         if (!in_.read(reinterpret_cast<char*>(b), size))
             refuse(path_, "the binary PLY body ends before the elements its header announces");
         if (big_) std::reverse(b, b + size);

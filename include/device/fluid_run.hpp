@@ -29,6 +29,7 @@ std::string unsupported(const sph::FluidModel<Dim>& model,
     if (model.extraTerms.size() > 0) return "extra equation terms (plugins' or users' terms)";
     if (model.movingBodies && model.movingBodies->anyMoves())
         return "moving bodies (bodies[i].motion free or prescribed)";
+    if (model.flowBoundaries) return "inlets and outlets (boundaries of type inlet or outlet)";
     if (model.density == sph::DensityMode::SUMMATION) return "density by summation";
     if (sph::evaluationFromName(settings.get<std::string>("evaluation")) ==
         sph::Evaluation::SYMMETRIC)

@@ -15,8 +15,9 @@
 
 namespace num::io {
 
-/// Format version: 2 added the run's fingerprint, 3 the count of emitter points left out.
-inline constexpr std::uint32_t kCheckpointVersion = 4;
+/// Format version: 2 added the run's fingerprint, 3 the count of emitter points left out, 4 the
+/// moving bodies' states, 5 the books of the inlets and outlets.
+inline constexpr std::uint32_t kCheckpointVersion = 5;
 
 /// Appends plain values, strings and vectors to a byte buffer.
 class ByteWriter {

@@ -33,19 +33,22 @@
 // Quantities in the storage (types.hpp and terms/fluid_quantities.hpp):
 //   POSITION (2nd order: x, v, a), MASS, DENSITY (1st order with continuity), PRESSURE,
 //   TEMPERATURE, MATERIAL (int, index into storage.materials()), KIND (int ParticleKind:
-//   FLUID, WALL, BODY), WALL_VELOCITY (boundary particles: prescribed surface velocity; only
-//   where a boundary slides, absent means every boundary is held),
+//   FLUID, WALL, BODY, INLET, OUTLET), WALL_VELOCITY (boundary particles: prescribed surface
+//   velocity; only where a boundary slides, absent means every boundary is held),
 //   FluidId::PAIR_VELOCITY, FluidId::WALL_SLIP, FluidId::KINEMATIC_VISCOSITY,
 //   heat_ids::BOUNDARY_TEMPERATURE.
 // Boundary particles of walls and fixed bodies never move; those of moving bodies
-// (model.movingBodies) move rigidly with their body; fluid particles never cross them.
+// (model.movingBodies) move rigidly with their body; fluid particles never cross them. Inlet
+// and outlet buffers (model.flowBoundaries) move with the flow; the run exchanges particles
+// between them and the fluid after each step (FlowBoundaries::exchange).
 //
 // Order of the terms (each term's constrain, initialize, finalize and postStep run in this
 // order; the tension limit's density floor acts in constrain, before every evaluation; particle
 // shifting, containment and the heat books act in postStep, once per step after the integrator):
 //   neighbour refresh (for the passes below) -> summation density -> equation of state ->
 //   tension limit at free surfaces -> wall condition (Adami et al. 2012) -> wall temperature ->
-//   continuity (+ delta-SPH) -> pressure gradient -> laminar viscosity -> artificial viscosity
+//   outlet condition (inlets and outlets) -> continuity (+ delta-SPH) -> pressure gradient ->
+//   laminar viscosity -> artificial viscosity
 //   -> body force -> particle shifting -> model.extraTerms (e.g. heat) -> rigid body coupling
 //   (moving bodies: their loads, motion and particles) -> boundary hold (zeroes boundary
 //   accelerations) -> containment (no particle inside a wall or body).
@@ -59,6 +62,7 @@
 
 #include "sph/bodies/body_coupling.hpp"
 #include "sph/boundary/boundary_hold.hpp"
+#include "sph/boundary/flow_boundaries.hpp"
 #include "sph/boundary/generalized_wall.hpp"
 #include "sph/boundary/particle_containment.hpp"
 #include "sph/boundary/wall_temperature.hpp"
@@ -146,6 +150,10 @@ struct FluidModel {
 
     /// The bodies of the geometry with their motions (sph/bodies/); empty: every body fixed.
     std::shared_ptr<MovingBodies<Dim>> movingBodies;
+
+    /// The inlets and outlets (boundary/flow_boundaries.hpp); empty: none. Their sides'
+    /// layers (FluidGeometry::walls[k][hi].layers) are INLET or OUTLET buffers.
+    std::shared_ptr<FlowBoundaries<Dim>> flowBoundaries;
 
     /// Terms appended after the fluid terms, before boundaries are held and particles
     /// contained: heat conduction, buoyancy, user terms.
@@ -256,6 +264,8 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
         auto nearFluid = std::make_shared<BoundaryNearFluid<Dim>>();
         eq += makeTerm<GeneralizedWall<Dim>>(gather, eos, model.bodyForce, nearFluid);
         eq += makeTerm<WallTemperature<Dim>>(gather, nearFluid);
+        if (model.flowBoundaries)
+            eq += makeTerm<OutletCondition<Dim>>(model.flowBoundaries, gather, eos);
     }
     eq += makeTerm<PairInputs<Dim>>();  // volumes and velocities the pair terms read
     if (!summation) {

@@ -30,7 +30,7 @@ enum class QuantityId : int {
     ENERGY,        ///< specific internal energy [J/kg]
     TEMPERATURE,   ///< temperature [degC or K, as the scene uses]
     MATERIAL,      ///< index into the storage's material table (int)
-    KIND,          ///< ParticleKind as int: fluid, wall, body
+    KIND,          ///< ParticleKind as int: fluid, wall, body, inlet or outlet buffer
     SOUND_SPEED,   ///< local sound speed [m/s]
     // 9 was particle shifting's displacement per unit time and 10 the boundary particles'
     // normal, which no term read; checkpoints hold the ids, so an id is never given another
@@ -49,9 +49,17 @@ enum class QuantityId : int {
 enum class OrderEnum : int { ZERO = 0, FIRST = 1, SECOND = 2 };
 
 /// What a particle is; stored as int in QuantityId::KIND.
-enum class ParticleKind : int { FLUID = 0, WALL = 1, BODY = 2 };
+/// INLET and OUTLET: the buffer particles of an open boundary (boundary/flow_boundaries.hpp).
+enum class ParticleKind : int { FLUID = 0, WALL = 1, BODY = 2, INLET = 3, OUTLET = 4 };
+/// The number of kinds: a stored KIND lies in [0, kParticleKinds).
+constexpr int kParticleKinds = 5;
 
 /// Whether a stored KIND is a fluid particle (not a wall or body).
 NUMERICS_HD_INLINE bool isFluid(int kind) { return kind == int(ParticleKind::FLUID); }
+
+/// Whether a stored KIND is an inlet's or an outlet's buffer particle.
+NUMERICS_HD_INLINE bool isBuffer(int kind) {
+    return kind == int(ParticleKind::INLET) || kind == int(ParticleKind::OUTLET);
+}
 
 }  // namespace num::sph

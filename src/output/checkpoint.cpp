@@ -186,7 +186,7 @@ void checkStorage(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
         if (material[i] < 0 || material[i] >= materials)
             fail("particle " + std::to_string(i) + " has material " + std::to_string(material[i]) +
                  " of " + std::to_string(materials));
-        if (kind[i] < 0 || kind[i] > 2)
+        if (kind[i] < 0 || kind[i] >= sph::kParticleKinds)
             fail("particle " + std::to_string(i) + " has kind " + std::to_string(kind[i]));
     }
     // Every value finite, at every derivative level.

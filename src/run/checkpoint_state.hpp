@@ -21,7 +21,9 @@ struct RunState {
     std::uint64_t emitterBlocked = 0;  ///< nozzle points left out: water was there
     std::vector<double> start;         ///< conservation at t = 0 (see conservationVector)
     std::vector<std::pair<double, std::string>> series;
-    std::vector<double> bodies;  ///< the moving bodies' states (MovingBodies::save); or empty
+    std::vector<double> bodies;    ///< the moving bodies' states (MovingBodies::save); or empty
+    std::vector<double> flow;      ///< the inlets' and outlets' books (FlowBooks::save); or empty
+    std::vector<double> wallHeat;  ///< the walls' heat books (ThermalBoundary::saveBooks); or empty
 
     void write(ByteWriter& w) const {
         w.put(time), w.put(steps), w.put(outputIndex), w.put(checkpointCount);
@@ -30,6 +32,8 @@ struct RunState {
         w.put<std::uint64_t>(series.size());
         for (const auto& [t, f] : series) w.put(t), w.putString(f);
         w.putVector(bodies);
+        w.putVector(flow);
+        w.putVector(wallHeat);
     }
     void read(ByteReader& r) {
         time = r.get<double>(), steps = r.get<std::uint64_t>();
@@ -46,6 +50,8 @@ struct RunState {
         }
         if (series.size() != n) invalid(r, "fewer outputs than it counts");
         bodies = r.getVector<double>();
+        flow = r.getVector<double>();
+        wallHeat = r.getVector<double>();
         if (!std::isfinite(time) || time < 0) invalid(r, "a time that is not finite or below 0");
         if (outputIndex < 0 || checkpointCount < 0) invalid(r, "a negative output count");
     }

@@ -13,6 +13,15 @@
 
 namespace num::io {
 
+/// The id of the next particle made during the run: after the initial particles, those emitted
+/// and those the inlets made, so that ids are never reused.
+template <int Dim>
+std::int64_t nextParticleId(const RunParts<Dim>& p) {
+    const auto& flow = p.setup->model.flowBoundaries;
+    return std::int64_t(p.initialParticles + p.emitters->emitted()) +
+           (flow ? std::int64_t(flow->books.created) : 0);
+}
+
 /// Emits the particles due at time t; they come last in the particle order, with ids after the
 /// initial particles' (the same on every process: each emits every particle, and keeps its own).
 /// A nozzle point is left out where water is, every process agreeing (io/emitters.hpp).
@@ -23,15 +32,23 @@ std::size_t emitParticles(RunParts<Dim>& p, double t) {
         return occupiedPoints(p.storage, p.solver->domain(), kernel, points, p.scene.spacing,
                               p.comm);
     };
-    const std::size_t before = p.emitters->emitted();
+    const std::int64_t first = nextParticleId(p);
     const std::size_t added = p.emitters->emit(p.storage, t, occupied);
     auto id = p.storage.template getValue<int>(sph::QuantityId::PARTICLE_ID);
     auto key = p.storage.template getValue<int>(sph::QuantityId::ORDER_KEY);
     for (std::size_t k = 0; k < added; ++k) {
         const std::size_t i = p.storage.size() - added + k;
-        id[i] = int(p.initialParticles + before + k), key[i] = sph::kNewParticleKey;
+        id[i] = int(first + std::int64_t(k)), key[i] = sph::kNewParticleKey;
     }
     return added;
+}
+
+/// Inlets and outlets exchange particles with the fluid after a step (FlowBoundaries::exchange);
+/// returns whether any particle changed.
+template <int Dim>
+bool exchangeFlow(RunParts<Dim>& p, double t) {
+    const auto& flow = p.setup->model.flowBoundaries;
+    return flow && flow->exchange(p.storage, t, nextParticleId(p));
 }
 
 /// Non-finite values, collapsed steps and fluid beyond walls stop the run (checkHealth); so do
@@ -70,8 +87,9 @@ class HealthObserver final : public IStepObserver<Dim> {
     PhysicalCheck physical_;
 };
 
-/// Open sides remove the fluid that leaves the domain; emitters add particles; either way the
-/// engine learns that the particles changed.
+/// Open sides remove the fluid that leaves the domain; inlets and outlets exchange particles
+/// with the fluid; emitters add particles; either way the engine learns that the particles
+/// changed.
 template <int Dim>
 class ParticleFlowObserver final : public IStepObserver<Dim> {
   public:
@@ -81,6 +99,7 @@ class ParticleFlowObserver final : public IStepObserver<Dim> {
             p.state.removed += std::uint64_t(p.comm.sum(p.owned - p.countOwned()));
             p.run->particlesChanged();
         }
+        if (exchangeFlow(p, sim.time())) p.run->particlesChanged();
         if (emitParticles(p, sim.time()) > 0) p.run->particlesChanged();
         const auto& warnings = p.emitters->warnings();
         for (; printed_ < warnings.size(); ++printed_) p.warn(warnings[printed_]);

@@ -70,9 +70,11 @@ void checkHealth(sph::IScheduler& scheduler, const sph::Storage<Dim>& s, const S
     const auto kind = s.template getValue<int>(QuantityId::KIND);
     const auto id = s.template getValue<int>(QuantityId::PARTICLE_ID);
     auto particle = [&](long i) {
-        static const char* kinds[] = {"fluid particle", "wall particle", "body particle"};
-        return std::string(kind[i] >= 0 && kind[i] < 3 ? kinds[kind[i]] : "particle") + " " +
-               std::to_string(id[i]);
+        static const char* kinds[] = {"fluid particle", "wall particle", "body particle",
+                                      "inlet particle", "outlet particle"};
+        return std::string(kind[i] >= 0 && kind[i] < sph::kParticleKinds ? kinds[kind[i]]
+                                                                         : "particle") +
+               " " + std::to_string(id[i]);
     };
     std::vector<OutputField> fields = outputFields(s, names);
     fields.insert(fields.begin(), {"position", QuantityId::POSITION, OutputField::Type::VECTOR});
@@ -170,8 +172,9 @@ nlohmann::json summaryJson(const Scene<Dim>& scene, const sph::Storage<Dim>& s,
     c["potential_energy"] = pair(Dim + 2);
     c["thermal_energy"] = pair(Dim + 3);
     c["note"] =
-        "sums over fluid particles; mass changes only by emitters and open sides; thermal "
-        "energy is sum m c T with T in degC";
+        "sums over fluid particles; mass changes by inlets and outlets (in, out), emitters and "
+        "open sides; thermal energy is sum m c T with T in degC, and changes by in, out, the heat "
+        "walls and bodies gave (walls) and conduction into conducting bodies";
     return {{"dimension", Dim},
             {"scene", scene.file},
             {"name", scene.name},

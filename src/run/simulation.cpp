@@ -72,6 +72,10 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
         throw AppError(ExitCode::USAGE,
                        "moving bodies (bodies[i].motion) run on one process: run without mpirun "
                        "(threads: --threads)");
+    if (p.comm.size() > 1 && setup.model.flowBoundaries)
+        throw AppError(ExitCode::USAGE,
+                       "inlets and outlets (boundaries type \"inlet\", \"outlet\") run on one "
+                       "process: run without mpirun (threads: --threads)");
     // The process that owns each particle (parallel/domain_decomposition.hpp); -1 until the
     // particles are distributed.
     initial.template insert<int>(QuantityId::OWNER, sph::OrderEnum::ZERO, -1);
@@ -100,6 +104,32 @@ void restoreBodies(RunParts<Dim>& p, const std::string& file) {
     }
 }
 
+/// The books of the inlets and outlets at the checkpoint's time.
+template <int Dim>
+void restoreFlowBooks(RunParts<Dim>& p, const std::string& file) {
+    const auto& flow = p.setup->model.flowBoundaries;
+    if (!flow && p.state.flow.empty()) return;
+    try {
+        if (!flow) throw std::invalid_argument("holds inlets or outlets, the scene has none");
+        flow->books.restore(p.state.flow);
+    } catch (const std::invalid_argument& e) {
+        throw AppError(ExitCode::CHECKPOINT, file + ": the checkpoint " + e.what());
+    }
+}
+
+/// The walls' heat books at the checkpoint's time (once the engine is made).
+template <int Dim>
+void restoreWallHeat(RunParts<Dim>& p, const std::string& file) {
+    auto* walls = p.solver->equations().template find<sph::ThermalBoundary<Dim>>();
+    if (!walls && p.state.wallHeat.empty()) return;
+    try {
+        if (!walls) throw std::invalid_argument("holds heat books of walls, the scene has no heat");
+        walls->restoreBooks(p.state.wallHeat);
+    } catch (const std::invalid_argument& e) {
+        throw AppError(ExitCode::CHECKPOINT, file + ": the checkpoint " + e.what());
+    }
+}
+
 /// The state and particles of the checkpoint options.restart names.
 template <int Dim>
 void readRestart(RunParts<Dim>& p, const sph::Storage<Dim>& initial) {
@@ -116,6 +146,7 @@ void readRestart(RunParts<Dim>& p, const sph::Storage<Dim>& initial) {
                                                  std::to_string(p.scene.emitters.size()));
     p.storage = readStorage<Dim>(r, initial);
     restoreBodies(p, file);
+    restoreFlowBooks(p, file);
     if (p.state.time >= p.scene.endTime)
         throw AppError(ExitCode::USAGE,
                        file + ": the checkpoint is at t = " + formatted("%g", p.state.time) +
@@ -147,6 +178,7 @@ void makeEngine(RunParts<Dim>& p) {
 /// have.
 template <int Dim>
 void resumeRun(RunParts<Dim>& p) {
+    restoreWallHeat(p, *p.options.restart);
     p.decomposition->distribute(p.storage);
     if (p.comm.size() > 1) p.solver->setDecomposition(p.decomposition.get());
     p.run->setTime(p.state.time, Size(p.state.steps));

@@ -48,6 +48,20 @@ void addEngineFigures(const RunParts<Dim>& p, nlohmann::json& summary) {
     }
 }
 
+/// What crossed the inlets and outlets, and the heat the walls and bodies gave (with heat), in
+/// summary.json's conservation books: mass end = start + in - out, thermal energy end = start +
+/// in - out + walls (to round-off, docs/outputs.md).
+template <int Dim>
+void addFlowBooks(const RunParts<Dim>& p, nlohmann::json& summary) {
+    nlohmann::json& c = summary["conservation"];
+    const auto& flow = p.setup->model.flowBoundaries;
+    const sph::FlowBooks books = flow ? flow->books : sph::FlowBooks{};
+    c["mass"]["in"] = books.massIn, c["mass"]["out"] = books.massOut;
+    c["thermal_energy"]["in"] = books.heatIn, c["thermal_energy"]["out"] = books.heatOut;
+    if (const auto* walls = p.solver->equations().template find<sph::ThermalBoundary<Dim>>())
+        c["thermal_energy"]["walls"] = walls->heatFromFixed() + walls->heatFromSources();
+}
+
 }  // namespace
 
 template <int Dim>
@@ -72,6 +86,7 @@ int Simulation<Dim>::finishRun(RunEnd end) {
         });
     });
     addEngineFigures(p, end.summary);
+    if (p.root()) addFlowBooks(p, end.summary);
     end.summary["decomposition"] = decomposition;
     end.warnings = p.scene.warnings;
     for (auto& o : observers_) o->summarize(*this, end);

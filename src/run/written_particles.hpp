@@ -33,8 +33,9 @@ class WrittenParticles {
         checkUnchanged(s, QuantityId::PARTICLE_ID, "id", same ? id_ : std::vector<int>{});
         const auto kind = ints(s, QuantityId::KIND);
         for (std::size_t i = 0; i < kind.size(); ++i)
-            if (kind[i] < 0 || kind[i] > 2)
-                refuse(i, "kind", std::to_string(kind[i]), "0 (fluid), 1 (wall) or 2 (body)");
+            if (kind[i] < 0 || kind[i] >= sph::kParticleKinds)
+                refuse(i, "kind", std::to_string(kind[i]),
+                       "0 (fluid), 1 (wall), 2 (body), 3 (inlet) or 4 (outlet)");
         const int materials = int(s.materials().size());
         const auto material = ints(s, QuantityId::MATERIAL);
         for (std::size_t i = 0; i < material.size(); ++i)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "sph/boundary/inlet_outlet_boundary.hpp"
 #include "sph/boundary/open_boundary.hpp"
 #include "sph/boundary/periodic_boundary.hpp"
 #include "sph/boundary/wall_boundary.hpp"
@@ -34,6 +35,62 @@ SideBoundary<Dim> readWall(const At& b) {
     return readWallKeys<Dim>(b);
 }
 
+/// The variables of an inlet's or outlet's values: the position on the side and the time.
+template <int Dim>
+const char* sideVariables() {
+    return Dim == 2 ? "xyt" : "xyzt";
+}
+const char* const kSideMeaning = "a function of the position (x, y, z in 3D) and the time t";
+
+/// An expression as a function of the position and the time.
+template <int Dim>
+sph::PointFunction<Dim> pointFunction(const Expression& e) {
+    return [e](const sph::Vector<Dim>& x, sph::Float t) {
+        return e(x[0], x[1], Dim > 2 ? x[Dim - 1] : 0.0, t);
+    };
+}
+
+/// An inlet: "velocity" (numbers or expressions of x, y, z and t [m/s]), optionally
+/// "temperature" (a number or expression [degC]; without it, the fluid's).
+template <int Dim>
+SideBoundary<Dim> readInlet(const At& b) {
+    if (!b.has("velocity"))
+        b.fail("an inlet with \"velocity\": numbers or expressions [m/s] (one per axis)");
+    const At a = b["velocity"];
+    a.array(Dim, "numbers or expressions [m/s] (one per axis of the " + std::to_string(Dim) +
+                     "D scene)");
+    std::array<sph::PointFunction<Dim>, Dim> component;
+    for (int k = 0; k < Dim; ++k)
+        component[k] =
+            pointFunction<Dim>(a[std::size_t(k)].expression(sideVariables<Dim>(), kSideMeaning));
+    sph::FlowSide<Dim> spec;
+    spec.kind = sph::ParticleKind::INLET;
+    spec.velocity = [component](const sph::Vector<Dim>& x, sph::Float t) {
+        sph::Vector<Dim> v;
+        for (int k = 0; k < Dim; ++k) v[k] = component[k](x, t);
+        return v;
+    };
+    std::optional<double> held;
+    if (b.has("temperature")) {
+        const Expression T = b["temperature"].expression(sideVariables<Dim>(), kSideMeaning);
+        spec.temperature = pointFunction<Dim>(T);
+        if (T.isConstant()) held = T(0, 0, 0, 0);
+    }
+    return std::make_shared<sph::InletOutletBoundary<Dim>>(spec, held);
+}
+
+/// An outlet: "pressure" (a number or expression of x, y, z and t [Pa]; without it, 0).
+template <int Dim>
+SideBoundary<Dim> readOutlet(const At& b) {
+    sph::FlowSide<Dim> spec;
+    spec.kind = sph::ParticleKind::OUTLET;
+    const Expression p = b.has("pressure")
+                             ? b["pressure"].expression(sideVariables<Dim>(), kSideMeaning)
+                             : Expression(0.0);
+    spec.pressure = pointFunction<Dim>(p);
+    return std::make_shared<sph::InletOutletBoundary<Dim>>(spec, std::nullopt);
+}
+
 /// The reader of a type without keys of its own.
 template <int Dim, class Module>
 SideBoundary<Dim> keyless(const At&) {
@@ -57,6 +114,8 @@ const std::vector<BoundaryType<Dim>>& boundaryTypes() {
         {"wall", {"slip", "velocity", "thermal"}, &readWall<Dim>},
         {"periodic", {}, &keyless<Dim, sph::PeriodicBoundary<Dim>>},
         {"open", {}, &keyless<Dim, sph::OpenBoundary<Dim>>},
+        {"inlet", {"velocity", "temperature"}, &readInlet<Dim>},
+        {"outlet", {"pressure"}, &readOutlet<Dim>},
     };
     return types;
 }

@@ -6,6 +6,7 @@
 #include "io/formatted.hpp"
 #include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
+#include "scene/flow_sides.hpp"
 #include "scene/run_limits.hpp"
 #include "sph/setup/particle_generation.hpp"
 
@@ -400,6 +401,7 @@ void checkSceneGeometry(const Scene<Dim>& s) {
     checkProbes(s);
     checkFluidAmount(s, estimate);
     checkPeriodicAxes(s);
+    checkInflows(s);
 }
 
 template void checkSceneGeometry<2>(const Scene<2>&);

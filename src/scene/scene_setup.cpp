@@ -1,5 +1,6 @@
 // Scene -> engine: settings, fluid model with heat terms, geometry, initial particles, emitters.
 #include "io/scene_setup.hpp"
+#include "scene/flow_sides.hpp"
 #include "scene/moving_bodies.hpp"
 
 #include <algorithm>
@@ -119,6 +120,7 @@ double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
         }
     for (const auto& w : scene.walls) U = std::max(U, w.boundary->surfaceSpeed());
     for (const auto& e : scene.emitters) U = std::max(U, e.speed);
+    U = std::max(U, largestInflowSpeed(scene));
     const double gravity = norm(g);
     if (gravity > 0) {
         double height = 0, domainVolume = 1, fluidVolume = 0;
@@ -565,6 +567,7 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         sph::wallLayersFor(sph::RunKernel<Dim>(setup.settings).supportRadius(), scene.spacing);
     m.density = densityMode(scene, setup.geometry, gravityOn);
     m.movingBodies = makeMovingBodies(scene);
+    m.flowBoundaries = makeFlowBoundaries(scene, setup.geometry, setup.wallLayers);
     for (const Emitter<Dim>& e : scene.emitters)
         setup.emitterTemplates.push_back(
             emitterTemplate(e, setup.materialIndex[e.material], scene.spacing, m, setup.settings));
@@ -595,6 +598,7 @@ sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& s
     }
     if (scene.physics.heat && st.has(sph::heat_ids::THERMAL_CONDITION))
         setBoundaryThermal(scene, setup, st);
+    if (setup.model.flowBoundaries) setup.model.flowBoundaries->prepare(st, 0.0);
     return st;
 }
 

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include "sph/boundary/thermal_condition.hpp"
@@ -119,6 +120,16 @@ class ThermalBoundary : public IEquationTerm<Dim> {
     Float heatFromFixed() const { return fromFixed_; }
     /// Heat added by heat sources (and flux walls) in the steps so far [J].
     Float heatFromSources() const { return fromSources_; }
+    /// The books, for a checkpoint: the heats so far and the powers the next step starts from.
+    std::vector<double> saveBooks() const {
+        return {fromFixed_, fromSources_, startFixed_, startSource_, double(started_)};
+    }
+    /// Throws std::invalid_argument on a vector that saveBooks() did not make.
+    void restoreBooks(const std::vector<double>& b) {
+        if (b.size() != 5) throw std::invalid_argument("holds no heat books of the walls");
+        fromFixed_ = b[0], fromSources_ = b[1], startFixed_ = b[2], startSource_ = b[3];
+        started_ = b[4] != 0;
+    }
     /// Power of the fixed-temperature particles and of the sources at the last evaluation [W].
     Float fixedPower() const { return lastFixed_; }
     Float sourcePower() const { return lastSource_; }

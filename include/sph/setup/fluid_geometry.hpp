@@ -26,6 +26,9 @@ struct WallSide {
     Float temperature =
         defaults::temperature;  ///< initial (or fixed, for thermal walls) temperature
     int material = 0;           ///< index into FluidModel::materials
+    /// What the layers beyond the side are: WALL, or the INLET or OUTLET buffer of an open
+    /// boundary (boundary/flow_boundaries.hpp).
+    ParticleKind layers = ParticleKind::WALL;
 };
 
 /// Fluid filling a shape (the part inside the box and outside every body and wall).
@@ -78,8 +81,13 @@ struct FluidGeometry {
     std::vector<SolidBody<Dim>> bodies;
     std::vector<InteriorWall<Dim>> interiorWalls;
 
+    /// Whether the side has layers of particles beyond it (a wall, an inlet or an outlet).
     bool hasWall(int axis, int side) const {
         return !domain.periodic[axis] && walls[axis][side].present;
+    }
+    /// Whether the side is a solid wall (not an inlet or outlet).
+    bool isSolidWall(int axis, int side) const {
+        return hasWall(axis, side) && walls[axis][side].layers == ParticleKind::WALL;
     }
     /// Whether any boundary particles exist: box walls, bodies or interior walls.
     bool hasBoundaries() const {

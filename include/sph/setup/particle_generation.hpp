@@ -72,18 +72,23 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
     forEachLatticePoint<Dim>(lo, hi, dx, [&](const Vec& x) {
         GeneratedParticle<Dim> p;
         p.x = x;
-        // Outside the box: a wall particle, described by the side it lies deepest beyond.
-        Float depth = 0;
-        int axis = -1, side = 0;
+        // Outside the box: a wall particle, described by the side it lies deepest beyond; beyond
+        // an inlet's or outlet's side only, a particle of its buffer.
+        Float depth = 0, wallDepth = 0;
+        int axis = -1, side = 0, wallAxis = -1, wallSide = 0;
         for (int k = 0; k < Dim; ++k) {
             if (d.periodic[k]) continue;
-            const Float below = d.min[k] - x[k], above = x[k] - d.max[k];
-            if (below > depth) depth = below, axis = k, side = 0;
-            if (above > depth) depth = above, axis = k, side = 1;
+            for (int hi = 0; hi < 2; ++hi) {
+                const Float beyond = hi ? x[k] - d.max[k] : d.min[k] - x[k];
+                if (beyond > depth) depth = beyond, axis = k, side = hi;
+                if (beyond > wallDepth && g.isSolidWall(k, hi))
+                    wallDepth = beyond, wallAxis = k, wallSide = hi;
+            }
         }
+        if (wallAxis >= 0) axis = wallAxis, side = wallSide;
         if (axis >= 0) {
             const WallSide<Dim>& w = g.walls[axis][side];
-            p.kind = ParticleKind::WALL;
+            p.kind = w.layers;
             p.temperature = w.temperature, p.material = w.material;
             p.wallVelocity = w.velocity, p.slip = w.slip;
             out.push_back(p);

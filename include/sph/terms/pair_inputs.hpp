@@ -2,7 +2,7 @@
 // of by each term:
 //   V_i = m_i / rho_i                      (FluidId::VOLUME: continuity's and delta-SPH's
 //                                           volumes, shifting's and the kernel sum's weights)
-//   u_i = v_i (fluid)                      (FluidId::PAIR_VELOCITY: the velocity a particle
+//   u_i = v_i (fluid, open boundaries' buffers) (FluidId::PAIR_VELOCITY: the velocity a particle
 //                                           shows in the viscous terms and in shifting; the
 //                                           wall condition writes the boundary particles' own,
 //                                           Adami et al. 2012, eq. 22-23)
@@ -37,7 +37,7 @@ class PairInputs : public IEquationTerm<Dim> {
         scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
             for (Size i = b; i < e; ++i) {
                 volume[i] = formulas::particleVolume(m[i], rho[i]);
-                if (isFluid(kind[i])) velocity[i] = v[i];
+                if (isFluid(kind[i]) || isBuffer(kind[i])) velocity[i] = v[i];
             }
         });
     }

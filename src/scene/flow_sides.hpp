@@ -1,0 +1,31 @@
+// The scene's inlets and outlets (boundaries.<side>.type "inlet" or "outlet") as the run's
+// FlowBoundaries, the speed scale their inflow sets, and the check of their velocities
+// (internal to numerics_io).
+#pragma once
+
+#include <memory>
+
+#include "io/scene.hpp"
+#include "sph/boundary/flow_boundaries.hpp"
+#include "sph/setup/fluid_geometry.hpp"
+
+namespace num::io {
+
+/// The inlets and outlets of the scene's sides, each with a buffer `wallLayers` spacings deep;
+/// null where there are none.
+template <int Dim>
+std::shared_ptr<sph::FlowBoundaries<Dim>> makeFlowBoundaries(const Scene<Dim>& scene,
+                                                             const sph::FluidGeometry<Dim>& geo,
+                                                             int wallLayers);
+
+/// The largest speed an inlet imposes [m/s]: its velocity on the lattice points of its side at
+/// 21 times from 0 to the end time (0 without inlets).
+template <int Dim>
+double largestInflowSpeed(const Scene<Dim>& scene);
+
+/// Refuses (exit code 5, naming the key) an inlet whose velocity points out of the domain at a
+/// point of its side at one of those times.
+template <int Dim>
+void checkInflows(const Scene<Dim>& scene);
+
+}  // namespace num::io

@@ -50,6 +50,17 @@ sph::PointFunction<Dim> pointFunction(const Expression& e) {
     };
 }
 
+/// "from" and "to": the corners of the part of the side an inlet or outlet opens (points on
+/// the side, checked with the domain: checkFlowSides); without them, the whole side.
+template <int Dim>
+void readOpening(const At& b, sph::FlowSide<Dim>& spec) {
+    if (b.has("from") != b.has("to"))
+        b.fail("both \"from\" and \"to\" (the corners of the opening) or neither");
+    if (!b.has("from")) return;
+    spec.openFrom = detail::readVec<Dim>(b["from"], "m");
+    spec.openTo = detail::readVec<Dim>(b["to"], "m");
+}
+
 /// An inlet: "velocity" (numbers or expressions of x, y, z and t [m/s]), optionally
 /// "temperature" (a number or expression [degC]; without it, the fluid's).
 template <int Dim>
@@ -70,6 +81,7 @@ SideBoundary<Dim> readInlet(const At& b) {
         for (int k = 0; k < Dim; ++k) v[k] = component[k](x, t);
         return v;
     };
+    readOpening(b, spec);
     std::optional<double> held;
     if (b.has("temperature")) {
         const Expression T = b["temperature"].expression(sideVariables<Dim>(), kSideMeaning);
@@ -88,6 +100,7 @@ SideBoundary<Dim> readOutlet(const At& b) {
                              ? b["pressure"].expression(sideVariables<Dim>(), kSideMeaning)
                              : Expression(0.0);
     spec.pressure = pointFunction<Dim>(p);
+    readOpening(b, spec);
     return std::make_shared<sph::InletOutletBoundary<Dim>>(spec, std::nullopt);
 }
 
@@ -114,8 +127,8 @@ const std::vector<BoundaryType<Dim>>& boundaryTypes() {
         {"wall", {"slip", "velocity", "thermal"}, &readWall<Dim>},
         {"periodic", {}, &keyless<Dim, sph::PeriodicBoundary<Dim>>},
         {"open", {}, &keyless<Dim, sph::OpenBoundary<Dim>>},
-        {"inlet", {"velocity", "temperature"}, &readInlet<Dim>},
-        {"outlet", {"pressure"}, &readOutlet<Dim>},
+        {"inlet", {"velocity", "temperature", "from", "to"}, &readInlet<Dim>},
+        {"outlet", {"pressure", "from", "to"}, &readOutlet<Dim>},
     };
     return types;
 }

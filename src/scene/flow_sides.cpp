@@ -16,10 +16,19 @@ const sph::InletOutletBoundary<Dim>* flowSideAt(const Scene<Dim>& scene, int axi
     return dynamic_cast<const sph::InletOutletBoundary<Dim>*>(scene.sides[axis][high].get());
 }
 
-/// Calls f(x, t) for the lattice points of side `high` of `axis` (on the side's plane) at 21
-/// times from 0 to the end time.
+/// A point as text: (x, y) or (x, y, z).
+template <int Dim>
+std::string pointText(const sph::Vector<Dim>& x) {
+    std::string text = "(" + formatted("%g", x[0]);
+    for (int k = 1; k < Dim; ++k) text += ", " + formatted("%g", x[k]);
+    return text + ")";
+}
+
+/// Calls f(x, t) for the lattice points of side `high` of `axis` (on the side's plane) across
+/// its opening, at 21 times from 0 to the end time.
 template <int Dim, class F>
 void forEachSideSample(const Scene<Dim>& scene, int axis, int high, F&& f) {
+    const sph::FlowSide<Dim>& spec = flowSideAt(scene, axis, high)->spec();
     std::array<long, Dim> n{};
     for (int k = 0; k < Dim; ++k)
         n[k] = k == axis ? 1
@@ -34,19 +43,15 @@ void forEachSideSample(const Scene<Dim>& scene, int axis, int high, F&& f) {
             for (int k = 0; k < Dim; ++k)
                 x[k] = k == axis ? (high ? scene.domainMax[k] : scene.domainMin[k])
                                  : scene.domainMin[k] + (double(i[k]) + 0.5) * scene.spacing;
-            f(x, t);
+            bool across = true;
+            for (int k = 0; k < Dim; ++k)
+                across &= k == axis || (x[k] >= spec.openFrom[k] && x[k] <= spec.openTo[k]);
+            if (across) f(x, t);
             int k = 0;
             while (k < Dim && ++i[k] == n[k]) i[k++] = 0;
             if (k == Dim) break;
         }
     }
-}
-
-template <int Dim>
-std::string pointText(const sph::Vector<Dim>& x) {
-    std::string text = "(" + formatted("%g", x[0]);
-    for (int k = 1; k < Dim; ++k) text += ", " + formatted("%g", x[k]);
-    return text + ")";
 }
 
 }  // namespace
@@ -79,12 +84,43 @@ double largestInflowSpeed(const Scene<Dim>& scene) {
     return U;
 }
 
+/// An opening's corners lie on the side, span at least two spacings along it and stay
+/// within it.
 template <int Dim>
-void checkInflows(const Scene<Dim>& scene) {
+void checkOpening(const Scene<Dim>& scene, int axis, int high) {
+    const sph::FlowSide<Dim>& spec = flowSideAt(scene, axis, high)->spec();
+    if (spec.openFrom[0] < -1e299) return;  // the whole side
+    const std::string key = std::string("boundaries.") + sideName(axis, high);
+    const double plane = high ? scene.domainMax[axis] : scene.domainMin[axis];
+    for (const auto& [name, corner] : {std::pair{"from", spec.openFrom}, {"to", spec.openTo}})
+        if (std::abs(corner[axis] - plane) > 1e-9 * (1 + std::abs(plane)))
+            throw sceneError(scene.file, key + "." + name,
+                             std::string("a point on the side (coordinate ") + "xyz"[axis] +
+                                 " = " + formatted("%g", plane) + ")",
+                             pointText(corner));
+    for (int k = 0; k < Dim; ++k) {
+        if (k == axis) continue;
+        const bool inside = spec.openFrom[k] >= scene.domainMin[k] - 1e-12 &&
+                            spec.openTo[k] <= scene.domainMax[k] + 1e-12;
+        if (!inside || spec.openTo[k] - spec.openFrom[k] < 2 * scene.spacing - 1e-12)
+            throw sceneError(
+                scene.file, key + ".to",
+                std::string("an opening at least two spacings (") +
+                    formatted("%g", 2 * scene.spacing) + " m) wide along " + "xyz"[k] +
+                    " and within the side (the buffer needs particles across it)",
+                "from " + pointText(spec.openFrom) + " to " + pointText(spec.openTo),
+                "widen it, or refine particles.spacing");
+    }
+}
+
+template <int Dim>
+void checkFlowSides(const Scene<Dim>& scene) {
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi) {
             const auto* side = flowSideAt(scene, k, hi);
-            if (!side || side->kind() != sph::ParticleKind::INLET) continue;
+            if (!side) continue;
+            checkOpening(scene, k, hi);
+            if (side->kind() != sph::ParticleKind::INLET) continue;
             const sph::FlowSide<Dim> spec = side->flowSide({}, k, hi, 0);
             forEachSideSample(scene, k, hi, [&](const sph::Vector<Dim>& x, double t) {
                 const double out = dot(spec.velocity(x, t), spec.outward());
@@ -108,7 +144,7 @@ template std::shared_ptr<sph::FlowBoundaries<3>> makeFlowBoundaries<3>(const Sce
                                                                        int);
 template double largestInflowSpeed<2>(const Scene<2>&);
 template double largestInflowSpeed<3>(const Scene<3>&);
-template void checkInflows<2>(const Scene<2>&);
-template void checkInflows<3>(const Scene<3>&);
+template void checkFlowSides<2>(const Scene<2>&);
+template void checkFlowSides<3>(const Scene<3>&);
 
 }  // namespace num::io

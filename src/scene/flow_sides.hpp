@@ -1,6 +1,6 @@
 // The scene's inlets and outlets (boundaries.<side>.type "inlet" or "outlet") as the run's
-// FlowBoundaries, the speed scale their inflow sets, and the check of their velocities
-// (internal to numerics_io).
+// FlowBoundaries, the speed scale their inflow sets, and the checks of their openings and
+// velocities (internal to numerics_io).
 #pragma once
 
 #include <memory>
@@ -24,8 +24,9 @@ template <int Dim>
 double largestInflowSpeed(const Scene<Dim>& scene);
 
 /// Refuses (exit code 5, naming the key) an inlet whose velocity points out of the domain at a
-/// point of its side at one of those times.
+/// point of its opening at one of those times, and an opening ("from", "to") off its side,
+/// beyond it or narrower than two spacings.
 template <int Dim>
-void checkInflows(const Scene<Dim>& scene);
+void checkFlowSides(const Scene<Dim>& scene);
 
 }  // namespace num::io

@@ -401,7 +401,7 @@ void checkSceneGeometry(const Scene<Dim>& s) {
     checkProbes(s);
     checkFluidAmount(s, estimate);
     checkPeriodicAxes(s);
-    checkInflows(s);
+    checkFlowSides(s);
 }
 
 template void checkSceneGeometry<2>(const Scene<2>&);

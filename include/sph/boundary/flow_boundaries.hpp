@@ -50,6 +50,9 @@ struct FlowSide {
     VectorFunction<Dim> velocity;             ///< inlet: the velocity it imposes [m/s]
     PointFunction<Dim> temperature;  ///< inlet: the temperature it imposes; empty: the set-up's
     PointFunction<Dim> pressure;     ///< outlet: the pressure it imposes [Pa]
+    /// The opening: the box [openFrom, openTo] on the side (its own axis ignored); the rest of
+    /// the side is a wall. The default: the whole side.
+    Vector<Dim> openFrom = Vector<Dim>::filled(-1e300), openTo = Vector<Dim>::filled(1e300);
 
     /// How far x lies beyond the side [m] (< 0: inside the domain).
     Float beyond(const Vector<Dim>& x) const { return high ? x[axis] - plane : plane - x[axis]; }

@@ -1,6 +1,7 @@
 // An inlet or an outlet side: its layers are the buffer of an open boundary
 // (flow_boundaries.hpp says what the buffers do). An inlet imposes a velocity (of the position
-// on the side and of time) and optionally a temperature; an outlet a pressure. The run's
+// on the side and of time) and optionally a temperature; an outlet a pressure. Either may open
+// a part of the side only (FlowSide::openFrom, openTo), the rest being a wall. The run's
 // FlowBoundaries is made from these sides (FlowBoundaries::sides), each side's spec completed
 // with its place (flowSide()).
 #pragma once
@@ -27,6 +28,7 @@ class InletOutletBoundary : public ISideBoundary<Dim> {
         WallSide<Dim>& w = geometry.walls[axis][high];
         w.present = true;
         w.layers = spec_.kind;
+        w.openFrom = spec_.openFrom, w.openTo = spec_.openTo;
         if (held_) w.temperature = *held_;
     }
     Float pictureMargin(int wallLayers, Float spacing) const override {
@@ -42,6 +44,7 @@ class InletOutletBoundary : public ISideBoundary<Dim> {
         return side;
     }
     ParticleKind kind() const { return spec_.kind; }
+    const FlowSide<Dim>& spec() const { return spec_; }
 
   private:
     FlowSide<Dim> spec_;

@@ -43,7 +43,7 @@ class ParticleContainment : public IEquationTerm<Dim> {
                 if (!isFluid(kind[i])) continue;
                 for (int k = 0; k < Dim; ++k)
                     formulas::containInWalls(x[i][k], v[i][k], g.domain.min[k], g.domain.max[k],
-                                             keepsOut(k, 0), keepsOut(k, 1));
+                                             keepsOut(k, 0, x[i]), keepsOut(k, 1, x[i]));
                 for (int body : bodiesNear(x[i], near)) containOutside(body, x[i], v[i]);
                 for (const InteriorWall<Dim>& wall : g.interiorWalls)
                     if (wall.mayContain(x[i])) formulas::containOutsideBody<Dim>(x[i], v[i], wall);
@@ -53,11 +53,12 @@ class ParticleContainment : public IEquationTerm<Dim> {
     void create(Storage<Dim>&, IMaterial&) const override {}
 
   private:
-    /// Whether fluid is reflected at a side: a wall, or an inlet (fluid never flows back
-    /// through one); an outlet lets it through.
-    bool keepsOut(int axis, int side) const {
-        return geometry_.hasWall(axis, side) &&
-               geometry_.walls[axis][side].layers != ParticleKind::OUTLET;
+    /// Whether fluid at x is reflected at a side: a wall, an inlet (fluid never flows back
+    /// through one) or the wall around an outlet's opening; an outlet lets it through.
+    bool keepsOut(int axis, int side, const Vec& x) const {
+        if (!geometry_.hasWall(axis, side)) return false;
+        const WallSide<Dim>& w = geometry_.walls[axis][side];
+        return w.layers != ParticleKind::OUTLET || !w.inOpening(x, axis);
     }
     /// From this many bodies on, a particle is checked against the bodies near it only (debris
     /// in a flood), found in a grid of the bodies' centres of radius their largest reach.

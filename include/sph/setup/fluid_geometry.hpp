@@ -29,6 +29,16 @@ struct WallSide {
     /// What the layers beyond the side are: WALL, or the INLET or OUTLET buffer of an open
     /// boundary (boundary/flow_boundaries.hpp).
     ParticleKind layers = ParticleKind::WALL;
+    /// An inlet's or outlet's opening: the box [openFrom, openTo] on the side (the side's own
+    /// axis ignored); the rest of the side is a wall. The default: the whole side.
+    Vector<Dim> openFrom = Vector<Dim>::filled(-1e300), openTo = Vector<Dim>::filled(1e300);
+
+    /// Whether x lies across the opening (its coordinates along the side within it).
+    bool inOpening(const Vector<Dim>& x, int axis) const {
+        for (int k = 0; k < Dim; ++k)
+            if (k != axis && (x[k] < openFrom[k] || x[k] > openTo[k])) return false;
+        return true;
+    }
 };
 
 /// Fluid filling a shape (the part inside the box and outside every body and wall).
@@ -88,6 +98,20 @@ struct FluidGeometry {
     /// Whether the side is a solid wall (not an inlet or outlet).
     bool isSolidWall(int axis, int side) const {
         return hasWall(axis, side) && walls[axis][side].layers == ParticleKind::WALL;
+    }
+    /// The kind of the particle at x beyond side `side` of `axis` alone: an inlet's or
+    /// outlet's buffer across its opening where the water can reach the side (x moved onto the
+    /// side is in no body or interior wall: a pipe entering through the side), else a wall.
+    ParticleKind kindBeyond(int axis, int side, const Vector<Dim>& x) const {
+        const WallSide<Dim>& w = walls[axis][side];
+        if (w.layers == ParticleKind::WALL || !w.inOpening(x, axis)) return ParticleKind::WALL;
+        Vector<Dim> onSide = x;
+        onSide[axis] = side ? domain.max[axis] - 0.5 * spacing : domain.min[axis] + 0.5 * spacing;
+        const auto holds = [&](const auto& solids) {
+            return std::any_of(solids.begin(), solids.end(),
+                               [&](const auto& b) { return b.contains(onSide); });
+        };
+        return holds(bodies) || holds(interiorWalls) ? ParticleKind::WALL : w.layers;
     }
     /// Whether any boundary particles exist: box walls, bodies or interior walls.
     bool hasBoundaries() const {

@@ -73,7 +73,7 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
         GeneratedParticle<Dim> p;
         p.x = x;
         // Outside the box: a wall particle, described by the side it lies deepest beyond; beyond
-        // an inlet's or outlet's side only, a particle of its buffer.
+        // an inlet's or outlet's side only, a particle of its buffer (FluidGeometry::kindBeyond).
         Float depth = 0, wallDepth = 0;
         int axis = -1, side = 0, wallAxis = -1, wallSide = 0;
         for (int k = 0; k < Dim; ++k) {
@@ -88,7 +88,7 @@ std::vector<GeneratedParticle<Dim>> generateParticles(const FluidGeometry<Dim>& 
         if (wallAxis >= 0) axis = wallAxis, side = wallSide;
         if (axis >= 0) {
             const WallSide<Dim>& w = g.walls[axis][side];
-            p.kind = w.layers;
+            p.kind = wallAxis >= 0 ? ParticleKind::WALL : g.kindBeyond(axis, side, x);
             p.temperature = w.temperature, p.material = w.material;
             p.wallVelocity = w.velocity, p.slip = w.slip;
             out.push_back(p);

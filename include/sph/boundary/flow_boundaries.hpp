@@ -179,7 +179,7 @@ class FlowBoundaries {
     }
 
     /// A buffer particle's imposed values at time t: an inlet's velocity and temperature; no
-    /// heat exchange.
+    /// heat exchange, and no temperature rate left from its last evaluation as fluid.
     void setBuffer(Storage<Dim>& s, Size i, Float t) const {
         const auto x = s.template getValue<Vec>(QuantityId::POSITION);
         if (s.template getValue<int>(QuantityId::KIND)[i] == int(ParticleKind::INLET)) {
@@ -191,6 +191,8 @@ class FlowBoundaries {
         if (s.has(heat_ids::THERMAL_CONDITION))
             s.template getValue<int>(heat_ids::THERMAL_CONDITION)[i] =
                 int(ThermalCondition::ADIABATIC);
+        if (s.has(QuantityId::TEMPERATURE) && s.order(QuantityId::TEMPERATURE) >= OrderEnum::FIRST)
+            s.template getDt<Float>(QuantityId::TEMPERATURE)[i] = 0;  // as booked, from now on
     }
     static void becomeFluid(Storage<Dim>& s, Size i) {
         s.template getValue<int>(QuantityId::KIND)[i] = int(ParticleKind::FLUID);

@@ -95,21 +95,20 @@ void checkOpening(const Scene<Dim>& scene, int axis, int high) {
     for (const auto& [name, corner] : {std::pair{"from", spec.openFrom}, {"to", spec.openTo}})
         if (std::abs(corner[axis] - plane) > 1e-9 * (1 + std::abs(plane)))
             throw sceneError(scene.file, key + "." + name,
-                             std::string("a point on the side (coordinate ") + "xyz"[axis] +
-                                 " = " + formatted("%g", plane) + ")",
+                             std::string("a point on the side (coordinate ") + "xyz"[axis] + " = " +
+                                 formatted("%g", plane) + ")",
                              pointText(corner));
     for (int k = 0; k < Dim; ++k) {
         if (k == axis) continue;
         const bool inside = spec.openFrom[k] >= scene.domainMin[k] - 1e-12 &&
                             spec.openTo[k] <= scene.domainMax[k] + 1e-12;
         if (!inside || spec.openTo[k] - spec.openFrom[k] < 2 * scene.spacing - 1e-12)
-            throw sceneError(
-                scene.file, key + ".to",
-                std::string("an opening at least two spacings (") +
-                    formatted("%g", 2 * scene.spacing) + " m) wide along " + "xyz"[k] +
-                    " and within the side (the buffer needs particles across it)",
-                "from " + pointText(spec.openFrom) + " to " + pointText(spec.openTo),
-                "widen it, or refine particles.spacing");
+            throw sceneError(scene.file, key + ".to",
+                             std::string("an opening at least two spacings (") +
+                                 formatted("%g", 2 * scene.spacing) + " m) wide along " + "xyz"[k] +
+                                 " and within the side (the buffer needs particles across it)",
+                             "from " + pointText(spec.openFrom) + " to " + pointText(spec.openTo),
+                             "widen it, or refine particles.spacing");
     }
 }
 
@@ -128,8 +127,8 @@ void checkFlowSides(const Scene<Dim>& scene) {
                     throw sceneError(
                         scene.file, std::string("boundaries.") + sideName(k, hi) + ".velocity",
                         "a velocity into the domain (an inlet's water enters)",
-                        formatted("%g m/s out of it", out) + " at t = " + formatted("%g", t) +
-                            " s, " + pointText(x),
+                        formatted("%g m/s out of it", out) + " at " + pointText(x) +
+                            ", t = " + formatted("%g", t) + " s",
                         "give the velocity the sign that points into the domain, or make the "
                         "side an outlet");
             });

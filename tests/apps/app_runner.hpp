@@ -2,8 +2,10 @@
 // fresh work directories; small file helpers.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -58,6 +60,14 @@ inline void writeFile(const std::string& path, const std::string& text) {
 
 inline bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
+}
+
+/// A refusal: exit code `code` and one line of output that names every part.
+inline void expectOneLine(const Result& r, int code, std::initializer_list<const char*> parts) {
+    EXPECT_EQ(r.code, code) << r.output;
+    for (const char* p : parts)
+        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }
 
 /// A CSV file with a header line (particles_*.csv, probes.csv): column name -> values.

@@ -47,13 +47,6 @@ std::vector<std::vector<std::string>> csvRows(const std::string& text) {
     return rows;
 }
 
-void expectOneLine(const Result& r, int code, std::initializer_list<const char*> parts) {
-    EXPECT_EQ(r.code, code) << r.output;
-    for (const char* p : parts)
-        EXPECT_TRUE(contains(r.output, p)) << "missing '" << p << "' in:\n" << r.output;
-    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-}
-
 }  // namespace
 
 // A row per moving body per output time; a prescribed body travels V t exactly and turns by

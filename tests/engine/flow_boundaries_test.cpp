@@ -55,8 +55,8 @@ Storage<2> particles(const std::vector<double>& xs, const std::vector<ParticleKi
 // inlet's values of the new time.
 TEST(FlowBoundaries, AnInletParticlePastItsSideIsReplacedBehindIt) {
     FlowBoundaries<2> flow = channel();
-    Storage<2> s = particles({0.01, -0.15, 0.5}, {ParticleKind::INLET, ParticleKind::INLET,
-                                                  ParticleKind::FLUID});
+    Storage<2> s = particles({0.01, -0.15, 0.5},
+                             {ParticleKind::INLET, ParticleKind::INLET, ParticleKind::FLUID});
     ASSERT_TRUE(flow.exchange(s, 0.1, 100));
     ASSERT_EQ(s.size(), 4u);
     const auto kind = s.getValue<int>(QuantityId::KIND);
@@ -82,9 +82,9 @@ TEST(FlowBoundaries, AnInletParticlePastItsSideIsReplacedBehindIt) {
 // comes off the books), one past the buffer is removed.
 TEST(FlowBoundaries, OutletParticlesComeGoAndLeave) {
     FlowBoundaries<2> flow = channel();
-    Storage<2> s = particles({1.02, 0.99, 1.0 + kDepth + 0.01, 0.5},
-                             {ParticleKind::FLUID, ParticleKind::OUTLET, ParticleKind::OUTLET,
-                              ParticleKind::FLUID});
+    Storage<2> s = particles(
+        {1.02, 0.99, 1.0 + kDepth + 0.01, 0.5},
+        {ParticleKind::FLUID, ParticleKind::OUTLET, ParticleKind::OUTLET, ParticleKind::FLUID});
     ASSERT_TRUE(flow.exchange(s, 0.1, 100));
     ASSERT_EQ(s.size(), 3u);
     const auto kind = s.getValue<int>(QuantityId::KIND);
@@ -105,9 +105,9 @@ TEST(FlowBoundaries, TheBooksCloseAndIdsAreUnique) {
     std::vector<double> xs;
     std::vector<ParticleKind> kinds;
     for (int k = 0; k < 30; ++k)  // a buffer 0.3 deep, a channel 1 long, an outlet 0.3 deep
-        xs.push_back(-0.3 + 0.05 + 0.1 * k),
-            kinds.push_back(k < 3 ? ParticleKind::INLET : k < 13 ? ParticleKind::FLUID
-                                                                 : ParticleKind::OUTLET);
+        xs.push_back(-0.3 + 0.05 + 0.1 * k), kinds.push_back(k < 3    ? ParticleKind::INLET
+                                                             : k < 13 ? ParticleKind::FLUID
+                                                                      : ParticleKind::OUTLET);
     xs.resize(16), kinds.resize(16);
     Storage<2> s = particles(xs, kinds);
     auto fluidMass = [&] {

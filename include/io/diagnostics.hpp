@@ -48,6 +48,26 @@ Conservation<Dim> conservation(const sph::Storage<Dim>& s, const sph::Vector<Dim
     return c;
 }
 
+/// The volume flow rate through side `high` of `axis` of the box [lo, hi], along +axis
+/// [m^3/s; m^2/s in 2D]: the fluid in the slab one spacing dx deep inside the side,
+/// Q = sum_i V_i u_i,axis / dx with V_i = m_i / rho_i (the slab's mean of u times its area).
+template <int Dim>
+double sideFlowRate(const sph::Storage<Dim>& s, int axis, int high, const sph::Vector<Dim>& lo,
+                    const sph::Vector<Dim>& hi, double dx) {
+    using sph::QuantityId;
+    const auto x = s.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto v = s.template getDt<sph::Vector<Dim>>(QuantityId::POSITION);
+    const auto m = s.template getValue<double>(QuantityId::MASS);
+    const auto rho = s.template getValue<double>(QuantityId::DENSITY);
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
+    const double from = high ? hi[axis] - dx : lo[axis], to = from + dx;
+    double q = 0;
+    for (sph::Size i = 0; i < s.size(); ++i)
+        if (sph::isFluid(kind[i]) && x[i][axis] >= from && x[i][axis] < to)
+            q += m[i] / rho[i] * v[i][axis];
+    return q / dx;
+}
+
 /// The value of `field` (velocity gives one value per axis) at point p, interpolated from the
 /// fluid particles within the kernel support; NaN where no fluid particle is near.
 template <int Dim>

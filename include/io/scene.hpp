@@ -137,6 +137,7 @@ struct Probe {
     SceneVec<Dim> point{};
     int body = -1;  ///< the body whose force the probe records; -1: none
     int wall = -1;  ///< the interior wall whose force the probe records; -1: none (a point)
+    int side = -1;  ///< the box side (2 axis + high) whose flow rate it records; -1: none
     std::vector<std::string> fields;
 };
 

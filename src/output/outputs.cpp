@@ -131,8 +131,9 @@ void Outputs<Dim>::makeWriters(const Scene<Dim>& scene, const SceneSetup<Dim>& s
                                                                scene.output.plots));
     if (!scene.probes.empty()) {
         auto probes = std::make_unique<ProbesWriter<Dim>>(
-            context, scene.probes, setup.settings, scene.output.plots, bodyForces(scene, setup),
-            int(setup.geometry.bodies.size()));
+            context, scene.probes, setup.settings, scene.output.plots,
+            std::array<sph::Vector<Dim>, 2>{scene.domainMin, scene.domainMax}, scene.spacing,
+            bodyForces(scene, setup), int(setup.geometry.bodies.size()));
         probes_ = probes.get();
         writers_.push_back(std::move(probes));
     }

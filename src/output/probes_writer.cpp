@@ -51,6 +51,9 @@ void ProbesWriter<Dim>::write(const sph::Storage<Dim>& s, const std::vector<Outp
                                                  : -1;
                 target >= 0)
                 for (int k = 0; k < Dim; ++k) row += formatted(",%.10g", forces.at(target)[k]);
+            else if (p.side >= 0)
+                row += formatted(
+                    ",%.10g", sideFlowRate(s, p.side / 2, p.side % 2, box_[0], box_[1], spacing_));
             else
                 for (double v : probe(s, kernel_, p.point, f)) row += formatted(",%.10g", v);
     appendToFile(c_.path("probes.csv"), row + "\n");

@@ -1,9 +1,11 @@
 // The probes of a run: a row of probes.csv per probe time (output.probes_every: the fields
-// interpolated at each probe's point, or the force on a probe's body or wall), and at the end
+// interpolated at each probe's point, the force on a probe's body or wall, or the flow rate
+// through a probe's side: io/diagnostics.hpp, sideFlowRate), and at the end
 // their plot, probes.png (and .svg: output.plots), drawn by scripts/plot_series.py.
 // Internal to numerics_io.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,11 +22,15 @@ class ProbesWriter final : public IWriter<Dim> {
   public:
     /// `plots`: the formats of the plot ("png", "svg"; none: no plot); `bodyForces`: what the
     /// probes on bodies and walls read, the scene's `bodies` first, then its walls.
+    /// `box`: the domain [min, max] and `spacing` its particles', where probes on sides read.
     ProbesWriter(const WriterContext& context, std::vector<Probe<Dim>> probes,
                  const sph::RunSettings& settings, std::vector<std::string> plots,
+                 std::array<sph::Vector<Dim>, 2> box, double spacing,
                  std::optional<BodyForces<Dim>> bodyForces = std::nullopt, int bodies = 0)
         : c_(context),
           probes_(std::move(probes)),
+          box_(box),
+          spacing_(spacing),
           kernel_(settings),
           plots_(std::move(plots)),
           bodyForces_(std::move(bodyForces)),
@@ -42,6 +48,8 @@ class ProbesWriter final : public IWriter<Dim> {
   private:
     WriterContext c_;
     std::vector<Probe<Dim>> probes_;
+    std::array<sph::Vector<Dim>, 2> box_;
+    double spacing_;
     sph::RunKernel<Dim> kernel_;
     std::vector<std::string> plots_;
     bool plotted_ = false;  ///< the plot was drawn

@@ -484,10 +484,19 @@ void readOutput(const At& o, OutputSpec& out) {
     if (o.has("color_range")) readColorRange(o["color_range"], out);
 }
 
+/// A side's name ("x_min", ...) as 2 axis + high.
+template <int Dim>
+int sideIndex(const At& a) {
+    std::vector<std::string> names;
+    for (int k = 0; k < 2 * Dim; ++k) names.push_back(sideName(k / 2, k % 2));
+    const std::string name = a.choice(names);
+    return int(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
 /// A probe; `names` holds those of the probes before it (a name must be unique).
 template <int Dim>
 Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
-    e.object({"name", "point", "body", "wall", "fields"}, {"name"});
+    e.object({"name", "point", "body", "wall", "side", "fields"}, {"name"});
     Probe<Dim> pr;
     pr.name = e["name"].string();
     // Column names of probes.csv: letters, digits, '_' and '-' only (no separator,
@@ -498,25 +507,31 @@ Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
                        });
     if (!plain) e["name"].fail("a name of 1 to 64 letters, digits, '_' or '-'");
     if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
-    if (int(e.has("point")) + int(e.has("body")) + int(e.has("wall")) != 1)
-        e.fail("one of a \"point\", a \"body\" or a \"wall\"");
+    if (int(e.has("point")) + int(e.has("body")) + int(e.has("wall")) + int(e.has("side")) != 1)
+        e.fail("one of a \"point\", a \"body\", a \"wall\" or a \"side\"");
     const bool onBody = e.has("body") || e.has("wall");
     if (e.has("body"))
         pr.body = int(e["body"].integer(0, 1 << 30));
     else if (e.has("wall"))
         pr.wall = int(e["wall"].integer(0, 1 << 30));
+    else if (e.has("side"))
+        pr.side = sideIndex<Dim>(e["side"]);
     else
         pr.point = readVec<Dim>(e["point"], "m");
+    // The fields each kind of probe may record; by default a body's or side's one, a point's
+    // all but density.
+    const std::vector<std::string> choices =
+        onBody         ? std::vector<std::string>{"force"}
+        : pr.side >= 0 ? std::vector<std::string>{"flow_rate"}
+                       : std::vector<std::string>{"velocity", "density", "pressure", "temperature"};
     if (e.has("fields")) {
         const At fl = e["fields"];
         if (!fl.v.is_array() || fl.v.empty()) fl.fail("a non-empty array of field names");
-        for (std::size_t k = 0; k < fl.v.size(); ++k)
-            pr.fields.push_back(
-                onBody ? fl[k].choice({"force"})
-                       : fl[k].choice({"velocity", "density", "pressure", "temperature"}));
+        for (std::size_t k = 0; k < fl.v.size(); ++k) pr.fields.push_back(fl[k].choice(choices));
     } else {
-        pr.fields = onBody ? std::vector<std::string>{"force"}
-                           : std::vector<std::string>{"velocity", "pressure", "temperature"};
+        pr.fields = onBody || pr.side >= 0
+                        ? std::vector<std::string>{choices.front()}
+                        : std::vector<std::string>{"velocity", "pressure", "temperature"};
     }
     return pr;
 }

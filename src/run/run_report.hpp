@@ -76,7 +76,21 @@ void printRunReport(const std::string& program, const Outputs<Dim>& out, const S
     const double mechEnd = endOf("kinetic_energy") + endOf("potential_energy");
     const bool closed = summary.at("emitted_particles").get<std::uint64_t>() == 0 &&
                         summary.at("removed_particles").get<std::uint64_t>() == 0;
-    if (closed)
+    auto booked = [&](const char* k, const char* part) {
+        return c.at(k).contains(part) ? c.at(k).at(part).get<double>() : 0.0;
+    };
+    const bool flows = booked("mass", "in") != 0 || booked("mass", "out") != 0;
+    if (closed && flows)  // water flowed through inlets and outlets: the books' balance
+        item("  conservation books",
+             "mass end - (start + in - out) = " +
+                 formatted("%.3g kg", endOf("mass") - startOf("mass") - booked("mass", "in") +
+                                          booked("mass", "out")) +
+                 ", thermal energy end - (start + in - out + walls) = " +
+                 formatted("%.3g J", endOf("thermal_energy") - startOf("thermal_energy") -
+                                         booked("thermal_energy", "in") +
+                                         booked("thermal_energy", "out") -
+                                         booked("thermal_energy", "walls")));
+    else if (closed)
         item("  conservation drift",
              "mass " + detail::change(startOf("mass"), endOf("mass"), "kg") +
                  ", kinetic + potential energy " + detail::change(mechStart, mechEnd, "J") +

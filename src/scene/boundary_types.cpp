@@ -91,15 +91,15 @@ SideBoundary<Dim> readInlet(const At& b) {
     return std::make_shared<sph::InletOutletBoundary<Dim>>(spec, held);
 }
 
-/// An outlet: "pressure" (a number or expression of x, y, z and t [Pa]; without it, 0).
+/// An outlet: "pressure" (a number or expression of x, y, z and t [Pa]; without it, the
+/// background pressure: makeFlowBoundaries).
 template <int Dim>
 SideBoundary<Dim> readOutlet(const At& b) {
     sph::FlowSide<Dim> spec;
     spec.kind = sph::ParticleKind::OUTLET;
-    const Expression p = b.has("pressure")
-                             ? b["pressure"].expression(sideVariables<Dim>(), kSideMeaning)
-                             : Expression(0.0);
-    spec.pressure = pointFunction<Dim>(p);
+    if (b.has("pressure"))
+        spec.pressure =
+            pointFunction<Dim>(b["pressure"].expression(sideVariables<Dim>(), kSideMeaning));
     readOpening(b, spec);
     return std::make_shared<sph::InletOutletBoundary<Dim>>(spec, std::nullopt);
 }

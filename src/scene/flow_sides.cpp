@@ -59,13 +59,19 @@ void forEachSideSample(const Scene<Dim>& scene, int axis, int high, F&& f) {
 template <int Dim>
 std::shared_ptr<sph::FlowBoundaries<Dim>> makeFlowBoundaries(const Scene<Dim>& scene,
                                                              const sph::FluidGeometry<Dim>& geo,
-                                                             int wallLayers) {
+                                                             int wallLayers,
+                                                             double backgroundPressure) {
     auto flow = std::make_shared<sph::FlowBoundaries<Dim>>();
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)
-            if (const auto* side = flowSideAt(scene, k, hi))
-                flow->sides.push_back(
-                    side->flowSide(geo.domain, k, hi, wallLayers * scene.spacing));
+            if (const auto* side = flowSideAt(scene, k, hi)) {
+                auto spec = side->flowSide(geo.domain, k, hi, wallLayers * scene.spacing);
+                if (spec.kind == sph::ParticleKind::OUTLET && !spec.pressure)
+                    spec.pressure = [backgroundPressure](const sph::Vector<Dim>&, double) {
+                        return backgroundPressure;
+                    };
+                flow->sides.push_back(std::move(spec));
+            }
     return flow->sides.empty() ? nullptr : flow;
 }
 
@@ -137,10 +143,10 @@ void checkFlowSides(const Scene<Dim>& scene) {
 
 template std::shared_ptr<sph::FlowBoundaries<2>> makeFlowBoundaries<2>(const Scene<2>&,
                                                                        const sph::FluidGeometry<2>&,
-                                                                       int);
+                                                                       int, double);
 template std::shared_ptr<sph::FlowBoundaries<3>> makeFlowBoundaries<3>(const Scene<3>&,
                                                                        const sph::FluidGeometry<3>&,
-                                                                       int);
+                                                                       int, double);
 template double largestInflowSpeed<2>(const Scene<2>&);
 template double largestInflowSpeed<3>(const Scene<3>&);
 template void checkFlowSides<2>(const Scene<2>&);

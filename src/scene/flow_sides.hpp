@@ -11,12 +11,14 @@
 
 namespace num::io {
 
-/// The inlets and outlets of the scene's sides, each with a buffer `wallLayers` spacings deep;
-/// null where there are none.
+/// The inlets and outlets of the scene's sides, each with a buffer `wallLayers` spacings deep,
+/// an outlet without a pressure of its own at the background pressure; null where there are
+/// none.
 template <int Dim>
 std::shared_ptr<sph::FlowBoundaries<Dim>> makeFlowBoundaries(const Scene<Dim>& scene,
                                                              const sph::FluidGeometry<Dim>& geo,
-                                                             int wallLayers);
+                                                             int wallLayers,
+                                                             double backgroundPressure);
 
 /// The largest speed an inlet imposes [m/s]: its velocity on the lattice points of its side at
 /// 21 times from 0 to the end time (0 without inlets).

@@ -567,7 +567,8 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
         sph::wallLayersFor(sph::RunKernel<Dim>(setup.settings).supportRadius(), scene.spacing);
     m.density = densityMode(scene, setup.geometry, gravityOn);
     m.movingBodies = makeMovingBodies(scene);
-    m.flowBoundaries = makeFlowBoundaries(scene, setup.geometry, setup.wallLayers);
+    m.flowBoundaries =
+        makeFlowBoundaries(scene, setup.geometry, setup.wallLayers, m.backgroundPressure);
     for (const Emitter<Dim>& e : scene.emitters)
         setup.emitterTemplates.push_back(
             emitterTemplate(e, setup.materialIndex[e.material], scene.spacing, m, setup.settings));

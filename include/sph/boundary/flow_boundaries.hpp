@@ -154,6 +154,7 @@ class FlowBoundaries {
             keep.push_back(i);
         }
         if (!changed) return false;
+        if (replaced.empty() && keep.size() == s.size()) return true;  // kinds changed only
         const Size kept = Size(keep.size());
         keep.insert(keep.end(), replaced.begin(), replaced.end());
         s.gather(keep);  // the kept particles, then copies of the crossed inlet particles

@@ -610,7 +610,10 @@ def cylinder_drag(run):
     F is the force the benchmark's pressure-driven flow exerts: with p* = p - rho g x the momentum equation rho Du/Dt = -grad p + mu lap u + rho g
     becomes rho Du/Dt = -grad p* + mu lap u, the same flow driven by a pressure falling along the
     channel, and the force of p* on the cylinder is that of p plus rho g V (the divergence theorem
-    over the cylinder's area V = pi D^2 / 4): F = F_x + rho g V."""
+    over the cylinder's area V = pi D^2 / 4): F = F_x + rho g V. The reading of the former set-up
+    (scenes/validation/cylinder_re20_periodic.json), for validation/test_readings.py and
+    validation/pysph_cylinder_re20.py; since 2026-12-06 cylinder_re20 runs the benchmark's own
+    set-up (cylinder_benchmark)."""
     mat = next(iter(run.scene["materials"].values()))
     rho, nu = mat["density"], mat["viscosity"]
     D, H = 2 * run.scene["bodies"][0]["radius"], run.scene["domain"]["max"][1]
@@ -646,8 +649,10 @@ def cylinder_drag(run):
 SCHAEFER_TUREK_CL = 0.010619
 SCHAEFER_TUREK_DP = 0.11752
 SCHAEFER_TUREK_U = 0.2
-# The forces and the pressures are means over the last 2 s of the run.
-CYLINDER_WINDOW = 2.0
+# The forces and the pressures are means over the last 3 s of the run (t = 2 to 5 s; the start
+# is over by t = 2 s): c_D of single outputs 0.02 s apart scatters by 7 % (acoustic), its
+# means over 0.5 s by 2 %.
+CYLINDER_WINDOW = 3.0
 
 
 def cylinder_benchmark(run):
@@ -665,17 +670,18 @@ def cylinder_benchmark(run):
     cd, cl = float(cd_t[last].mean()), float(scale * pr["cylinder.force_y"][last].mean())
     dp = float((pr["front.pressure"][last] - pr["back.pressure"][last]).mean()) / rho
     t0, t = float(pr["time"][last][0]), float(pr["time"][-1])
-    mass = run.summary["conservation"]["mass"]
-    books = abs(mass["end"] - (mass["start"] + mass["in"] - mass["out"])) / mass["start"]
+    leftover = abs(books(run)) / run.summary["conservation"]["mass"]["start"]
+    shown = pr["time"] >= 1.0  # after the start's spikes (c_D up to 40)
     profile = {"xlabel": "t [s]", "ylabel": "c_D", "series": [
-        {"label": "app (each output)", "x": pr["time"].tolist(), "y": cd_t.tolist(), "style": "line"},
-        {"label": "Schaefer & Turek (1996), 2D-1", "x": [0.0, t], "y": [SCHAEFER_TUREK_CD] * 2, "style": "line"}]}
+        {"label": "app (each output, from t = 1 s)", "x": pr["time"][shown].tolist(), "y": cd_t[shown].tolist(), "style": "line"},
+        {"label": f"app, mean over t = {t0:g} to {t:g} s", "x": [t0, t], "y": [cd, cd], "style": "line"},
+        {"label": "Schaefer & Turek (1996), 2D-1", "x": [1.0, t], "y": [SCHAEFER_TUREK_CD] * 2, "style": "line"}]}
     checks = [{"metric": f"|c_D - {SCHAEFER_TUREK_CD}| / {SCHAEFER_TUREK_CD} (Schaefer & Turek 1996, 2D-1), "
                f"mean over t = {t0:g} to {t:g} s", "value": abs(cd - SCHAEFER_TUREK_CD) / SCHAEFER_TUREK_CD, "gate": 0.05}]
     notes = (f"c_D {cd:.4f} (F_x {cd / scale:.4f} N/m), c_L {cl:+.4f} (F_y {cl / scale:+.4f} N/m; the benchmark "
              f"{SCHAEFER_TUREK_CL}), Delta p / rho {dp:.4f} m^2/s^2 from the probes on the surface (the "
              f"benchmark {SCHAEFER_TUREK_DP}: {abs(dp - SCHAEFER_TUREK_DP) / SCHAEFER_TUREK_DP:.0%} off); Re = U D / nu "
-             f"{U * D / nu:g}; mass books |end - (start + in - out)| / start {books:.2g}; D / dx {D / run.spacing:g}")
+             f"{U * D / nu:g}; mass books |end - (start + in - out)| / start {leftover:.2g}; D / dx {D / run.spacing:g}")
     return checks, notes, profile
 
 
@@ -874,7 +880,7 @@ def dam_break_obstacle(run):
 INLET_MEAN_VELOCITY = 0.02
 # channel_inflow_2d is measured over the last 2 s of its run (41 outputs): the pressure drop,
 # 0.96 Pa over the channel against rho c0^2 = 90 Pa, rings acoustically (the slope of a single
-# output is 20 % off at spacing 0.0005, the mean of 41 outputs 1 %).
+# output is up to 29 % off at spacing 0.0005, the mean of 41 outputs 1 %).
 CHANNEL_INFLOW_WINDOW = 2.0
 
 
@@ -925,10 +931,10 @@ def channel_inflow(run):
     window = f"t = {t0:g} to {t:g} s ({len(frames)} outputs)"
     checks = [
         {"metric": f"max |mean(u - u_exact)| / u_max over the layers one spacing thick, L / 4 < x < 3 L / 4, {window} "
-                   "(gate: the Poiseuille cases')", "value": profile_err, "gate": 0.01},
+                   "(gate: issue 9's for the Poiseuille cases)", "value": profile_err, "gate": 0.01},
         {"metric": f"|dp/dx - ({dpdx:g} Pa/m)| / {-dpdx:g} Pa/m, dp/dx the slope fitted over L / 4 < x < 3 L / 4, "
-                   "mean over the outputs (gate: as for the drag on the cylinder)", "value": abs(slope - dpdx) / abs(dpdx), "gate": 0.05},
-        {"metric": "mass books |end - (start + in - out)| / start (round-off)", "value": abs(books(run)) / mass["start"], "gate": 1e-9}]
+                   "mean over the outputs (gate: issue 48's for the drag on a body)", "value": abs(slope - dpdx) / abs(dpdx), "gate": 0.05},
+        {"metric": "mass books |end - (start + in - out)| / start (gate: round-off)", "value": abs(books(run)) / mass["start"], "gate": 1e-9}]
     notes = (f"dp/dx {slope:.4g} Pa/m against {dpdx:g} (single outputs {min(slopes):.4g} to {max(slopes):.4g}), the drop "
              f"over the channel {-slope * L:.4g} Pa against {-dpdx * L:.4g}; the largest single particle's |u - u_exact| "
              f"at t = {t:g} s {single:.3g} u_max; mass in {mass['in']:.5g} kg/m, out {mass['out']:.5g}, start "
@@ -982,9 +988,9 @@ def sturm_liouville(n, extra=0.0):
 def graetz_developed(peb):
     """The developed Graetz mode with axial conduction, Peclet number peb = U b / alpha: theta =
     phi(eta) exp(-lambda xh) with phi'' + (lambda w + lambda^2 / peb^2) phi = 0 (by fixed-point
-    iteration on lambda). Returns lambda and the Nusselt number on 4 b from the wall flux,
-    Nu = -4 phi'(1) / int w phi = 4 lambda (1 + lambda r / peb^2), r = int phi / int w phi (the
-    energy balance over a section: the axial conduction of the developed profile added)."""
+    iteration on lambda). Returns lambda, the Nusselt number on 4 b from the wall flux,
+    Nu = -4 phi'(1) / int w phi = 4 lambda (1 + lambda r / peb^2) (the energy balance over a
+    section: the axial conduction of the developed profile added), and r = int phi / int w phi."""
     lam = 1.885
     for _ in range(100):
         values, phi, weight, h = sturm_liouville(500, lam / peb**2)
@@ -1089,11 +1095,12 @@ def graetz(run):
     window = f"t = {t0:g} to {t:g} s ({len(frames)} outputs)"
     checks = [
         {"metric": f"max |theta_b - theta_b,Graetz| over 0 < x < L (slices 2 spacings thick), {window} (gate: 5 % of "
-                   "T_in - T_w)", "value": float(err.max()), "gate": 0.05},
+                   "T_in - T_w, set with the case)", "value": float(err.max()), "gate": 0.05},
         {"metric": f"|Nu - {nu_pe:.4g}| / {nu_pe:.4g}, Nu from the decay of theta_b over {x_dev / H:.3g} H < x < L - H / 2 "
-                   f"(developed Nu at Pe = {4 * peb:g}; 7.541 without axial conduction, Shah & London 1978)",
+                   f"(developed Nu at Pe = {4 * peb:g}; 7.541 without axial conduction, Shah & London 1978; gate: 5 %, set with "
+                   "the case)",
          "value": abs(nu_app - nu_pe) / nu_pe, "gate": 0.05},
-        {"metric": "heat books |end - (start + in - out + walls)| / |walls| (gate: hot_ball_3d's heat balance)",
+        {"metric": "heat books |end - (start + in - out + walls)| / |walls| (gate: issue 59's heat balance of hot_ball_3d)",
          "value": abs(books(run, "thermal_energy")) / abs(heat["walls"]), "gate": 0.01}]
     notes = (f"Pe = U D_h / alpha = {4 * peb:g} (D_h = 2 H), Re = U H / nu = {U * H / mat['viscosity']:g}; theta_b's "
              f"largest deviation {float((theta - series)[np.argmax(err)]):+.4f} at x = {float(x[np.argmax(err)]):.4g} m; "
@@ -1175,6 +1182,7 @@ def case(name, scene, compare, doc, study, ci, **kw):
 #   0.132-0.137 (bound 0.16 kept), peak 0.67-1.28 -> 1.9 (was 2.8), mean 0.059-0.095 (gate);
 #   dam_break_martin_moyce at a / 20 0.224-0.296 (bound 0.34 kept); the cavities below.
 # note: a finding about the case that its numbers alone do not show; the report prints it.
+# gates: where the case's gates come from, for the report's table (default: the issue, "issue").
 # doc_note: where the documentation resolution is coarser than the case deserves (run.sh has to
 # finish on 2 cores), it says so; the report prints it. miss_note: for a case that misses its
 # gate, what was measured about why (the report prints it under the case's figures).
@@ -1280,10 +1288,31 @@ case("heat_slabs_k2_2d", "heat_slabs_2d.json", heat_slabs, 0.005, [0.02, 0.01, 0
 _MEASURED = "Wall times: 2026-12-05, 2 CPU cores shared with other work (not comparable with the others)"
 case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.02], (0.04, None), issue=48,
      note=_MEASURED)
-# c_D at D / dx = 10 (the CI spacing) misses the gate: MEASURE -> regression bound (times 1.5).
-CYLINDER_CI_BOUND = 0.29
-CYLINDER_NOTE = "TODO"
-CYLINDER_MISS = "TODO"
+# c_D at D / dx = 10 (the CI spacing) misses the gate: 0.194 (2026-12-06, the set-up with inlet and
+# outlet; 872ef69) -> regression bound 0.30 (times 1.5).
+CYLINDER_CI_BOUND = 0.30
+_MEASURED_FLOW = "Wall times: 2026-12-06, 2 CPU cores shared with other work (not comparable with the others)"
+CYLINDER_NOTE = (
+    "The set-up is the benchmark's, inflow, outflow and blockage; U is the inflow's mean, which the inlet "
+    "imposes. The start sends a pressure wave down the channel that the outlet (p held) sends back: c_D jumps "
+    "to 8 at t = 1.46 s at D / dx = 20, 1.5 s at 10 (about 2 x 2 m / c0, c0 = 3 m/s). After that c_D of single "
+    "outputs scatters by 7 %, so the forces are means over t = 2 to 5 s; two runs at D / dx = 10 that differ "
+    "only in their outputs and end gave 4.54 and 4.66 over t = 3 to 5 s. "
+    "Until 2026-12-06 the case ran a channel periodic along x, 10 D long, driven by a body force "
+    "(scenes/validation/cylinder_re20_periodic.json): c_D 19 % low at D / dx = 10 and 12 % at 20. PySPH's "
+    "transport-velocity scheme on that periodic set-up (validation/pysph_cylinder_re20.py, h = 1.2 dx) gave "
+    "5.255 at D / dx = 10, 5.8 % low; it has not been run on this one. " + _MEASURED_FLOW)
+CYLINDER_MISS = (
+    "c_D is 19.4 % low at D / dx = 10 and 6.1 % at 20 (D / dx = 40, some 50 min on 2 cores, is not run). "
+    "The kernel's width is not the whole error: with particles.h_over_spacing 1.2 instead of 1.5, c_D is 4.9 % "
+    "low at D / dx = 10 but 7.3 % at 20. The pressure difference across the cylinder from the probes on its "
+    "surface is far off (Delta p / rho 0.034 at D / dx = 10, 0.055 at 20, against 0.1175): fluid particles "
+    "lie on the surface itself (r = D / 2 to 1e-5 m, about ten at D / dx = 10, also in the periodic set-up) with "
+    "pressures far below their neighbours' (13 to 22 Pa at the front stagnation point against 110 to 160 Pa one "
+    "spacing out), and a probe on the surface, half of its kernel inside the body, reads mostly them. Extrapolated "
+    "to the surface along the centre line from the particles 0.5 to 5 spacings out, Delta p / rho is 0.098 at "
+    "D / dx = 10 (17 % low, as c_D). c_L (0.0106, 0.2 % of c_D) is within the noise: -0.074 at D / dx = 10, "
+    "-0.012 at 20")
 case("cylinder_re20", "cylinder_re20.json", cylinder_benchmark, 0.005, [0.01, 0.005],
      (0.01, [CYLINDER_CI_BOUND]), issue=48, note=CYLINDER_NOTE, miss_note=CYLINDER_MISS)
 OBSTACLE_NOTE = (
@@ -1303,9 +1332,37 @@ case("hot_ball_3d", "hot_ball_3d.json", hot_ball, 0.02, [0.02], (0.02, None), is
 case("floating_sphere_3d", "floating_sphere_3d.json", floating_sphere, 0.01, [0.02, 0.01], (0.02, [FLOATING_SPHERE_CI_BOUND]),
      issue=59)
 
-# Inlets and outlets.
-case("channel_inflow_2d", "channel_inflow_2d.json", channel_inflow, 0.00025, [0.001, 0.0005, 0.00025], (0.0005, None))
-case("graetz_2d", "graetz_2d.json", graetz, 0.00025, [0.001, 0.0005, 0.00025], (0.001, None))
+# Inlets and outlets (the apps' "inlet" and "outlet" sides).
+CHANNEL_INFLOW_NOTE = (
+    "The profile check averages: the deviation from the exact profile of each layer of particles one spacing "
+    "thick, over the middle half of the channel and the 41 outputs of the last 2 s (the Poiseuille cases take "
+    "the largest deviation of a single particle at one time; that figure is in the details). The pressure drop, "
+    "0.96 Pa, is 1 % of rho c0^2 (c0 = 0.3 m/s, ten times the largest inflow speed): the water rings "
+    "acoustically along the channel, and the slope of single outputs is up to 29 % off at 20 particles across (47 % "
+    "at 10, 15 % at 40). At 10 particles across the profile is flatter than the parabola (+1.8 % of u_max in the layers at "
+    "the walls, -0.9 % on the centre line); at 40 the largest deviation of any particle at the end is 0.8 % of "
+    "u_max. Within about 2 mm of the outlet (4 spacings at 20 particles across, 8 at 40) the flow is disturbed: "
+    "|v| rises to 5 % of u_max (3 % at 40 across), the particles bunch (nearest neighbour 0.84 spacing), and at "
+    "10 across the pressure there dips below the outlet's 0 Pa (-0.09 Pa in the last sixteenth of the channel, "
+    "exact +0.03). The mass books close to round-off: the inlet and the outlet book each particle's fixed mass. "
+    + _MEASURED_FLOW)
+GRAETZ_NOTE = (
+    "Pe = 40 keeps axial conduction small, not nil: the developed mode decays 1.4 % more slowly than without it "
+    "(4 lambda = 7.4355 against 7.5407) while the wall's Nusselt number hardly moves (7.548 against 7.541), and "
+    "near the inlet, across which the apps conduct no heat (its buffer particles exchange none), theta_b falls "
+    "faster than the series (graetz_axial, finite differences: 0.922 against 0.947 at x = H / 20). theta_b's "
+    "largest deviation from the series therefore sits in the first slice at the finer spacings; from that "
+    "solution the app departs by 0.013 at 20 and 40 particles across. Nu is low by 3.3 % at 20 and at 40 "
+    "particles across (4.1 % at 10): it does not converge to the reference. The decay is as slow at Pe = 80 "
+    "(conductivity halved: 3.3 %) and with physics.shifting false (3.1 %), while the temperature across the "
+    "channel where it is developed, theta / theta_b, follows the developed mode within 0.3 % of theta_b: not a "
+    "resistance at the walls but heat spreading across the flow about 3 % too slowly, as if the diffusivity "
+    "were 3 % low. The heat books leave 6.4e-5, 3.6e-5 and 1.7e-5 of the heat the walls took at 10, 20 and 40 "
+    "particles across, halving with the spacing (the mass books close to 1e-14). " + _MEASURED_FLOW)
+case("channel_inflow_2d", "channel_inflow_2d.json", channel_inflow, 0.00025, [0.001, 0.0005, 0.00025], (0.0005, None),
+     gates="the source each check names", note=CHANNEL_INFLOW_NOTE)
+case("graetz_2d", "graetz_2d.json", graetz, 0.00025, [0.001, 0.0005, 0.00025], (0.001, None),
+     gates="the source each check names", note=GRAETZ_NOTE)
 
 # setup: each case in a sentence or two for the report (the scene's "description" gives it all).
 _CHANNEL = ("Water between no-slip plates {a} = 0 and {a} = L = 1 mm, periodic along the other axes")

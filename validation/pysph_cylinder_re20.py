@@ -2,7 +2,7 @@
 """PySPH beside the app on the cylinder in a channel at Re = 20: PySPH's transport-velocity
 formulation (TVFScheme, Adami, Hu & Adams 2013: QuinticSpline, h = 1.2 dx, p0 = pb = rho0 c0^2
 with the app's sound speed for this scene, c0 = 3 m/s) on the set-up of
-scenes/validation/cylinder_re20.json, its drag measured as validation/cases.py (cylinder_drag)
+scenes/validation/cylinder_re20_periodic.json, its drag measured as validation/cases.py (cylinder_drag)
 measures the app's: c_D = 2 F / (rho0 U^2 D), F = F_x + rho0 g_x pi D^2 / 4, F_x and U means
 over the last 2 s.
 
@@ -47,7 +47,7 @@ import cases  # noqa: E402
 
 LENGTH, HEIGHT, DIAMETER, CENTRE = 1.0, 0.41, 0.1, (0.5, 0.2)
 RHO0, NU = 1000.0, 1e-3
-with open(os.path.join(cases.SCENES, "cylinder_re20.json")) as _scene:
+with open(os.path.join(cases.SCENES, "cylinder_re20_periodic.json")) as _scene:
     G_X = float(json.load(_scene)["gravity"][0])  # the scene's body force [m/s^2]
 PROFILE, U_MAX = 7.138607971, 0.3  # initial u = PROFILE y (H - y), its largest value
 C0, HDX = 3.0, 1.2  # the app's c0 (10 x physics.max_speed); PySPH's h / dx for TVF

@@ -139,7 +139,7 @@ def main():
         out = [f"## {name}\n", f"{c['setup']}.\n",
                f"Run: `{doc['command']}`: {doc['fluid_particles']} fluid particles, {doc['steps']} steps, "
                f"{doc['wall_seconds']:.0f} s on {threads}, build {build_name(doc['app_build'], '{build} of {date}')}.\n",
-               f"| check | measured | gate (issue {c.get('issue', 9)}) | result |",
+               f"| check | measured | gate ({c.get('gates', 'issue {}'.format(c.get('issue', 9)))}) | result |",
                "| --- | --- | --- | --- |"]
         for ch in doc["checks"]:
             metric = ch["metric"].replace("|", "\\|")
@@ -175,7 +175,8 @@ Each case is a scene of `scenes/validation/` run by `fluid_sim` or `fluid_sim_3d
 it (the app's defaults; only the spacing changes, `--set particles.spacing=DX`) and compared with
 its reference ([reference_solutions.md](reference_solutions.md), `validation/data/`) from the
 app's own outputs by `validation/cases.py`; nothing here comes from the C++ API tests. Gates are
-those of issue 9, of issue 48 for the cases with geometry and of issue 59 for moving bodies; a
+those of issue 9, of issue 48 for the cases with geometry and of issue 59 for moving bodies (for the
+inlet and outlet cases, each check names where its gate comes from); a
 gate is never loosened: a case that misses it says **MISSED**, with the number and what is known
 of why. CI checks each case
 at a coarser spacing, against the gate or, where a case misses it or comes close, a regression

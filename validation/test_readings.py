@@ -79,7 +79,7 @@ class CylinderDrag(unittest.TestCase):
         # u = U (pi / 2) |sin(2 pi y / H)|, whose mean is U = 0.2; the scene's body force g and
         # cylinder D add rho g pi D^2 / 4.
         with tempfile.TemporaryDirectory() as out:
-            with open(os.path.join(cases.SCENES, "cylinder_re20.json")) as f:
+            with open(os.path.join(cases.SCENES, "cylinder_re20_periodic.json")) as f:
                 scene = json.load(f)
             probes = [p for p in scene["probes"] if p["name"].startswith("u")]
             names = ["time", "cylinder.force_x", "cylinder.force_y"]

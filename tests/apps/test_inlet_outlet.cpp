@@ -35,8 +35,8 @@ json summaryOf(const std::string& name) {
 }  // namespace
 
 // Water flows through: mass end = start + in - out to round-off; the heat the inflow brings,
-// the outflow takes and the cold wall draws close the thermal books to within 1e-6 (a particle
-// that leaves takes half a step's conduction with it).
+// the outflow takes and the cold wall draws close the thermal books to within 1e-6 of the
+// water's heat (a particle that leaves takes half a step's conduction with it).
 class FlowBooks : public ::testing::TestWithParam<int> {};
 
 TEST_P(FlowBooks, Close) {

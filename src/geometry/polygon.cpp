@@ -1,9 +1,13 @@
 // Polygons: the even-odd inside test, the exact distance to the edges, and the check that a
-// polygon does not cross itself.
+// polygon does not cross itself, all through the edge tree of edge_tree.hpp.
 #include "geometry/polygon.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
+
+#include "edge_tree.hpp"
 
 namespace num::geometry {
 
@@ -11,8 +15,14 @@ namespace {
 
 double cross(const Point<2>& a, const Point<2>& b) { return a[0] * b[1] - a[1] * b[0]; }
 
-/// Whether segments p1-p2 and q1-q2 share a point (touching included).
+/// Whether segments p1-p2 and q1-q2 share a point (touching included). Segments whose boxes
+/// are apart never meet: the test is first, as the signs of nearly collinear segments far apart
+/// may look like a crossing by rounding (and the edge tree only offers edges near p1-p2).
 bool segmentsMeet(const Point<2>& p1, const Point<2>& p2, const Point<2>& q1, const Point<2>& q2) {
+    for (int k = 0; k < 2; ++k)
+        if (std::max(p1[k], p2[k]) < std::min(q1[k], q2[k]) ||
+            std::max(q1[k], q2[k]) < std::min(p1[k], p2[k]))
+            return false;
     const double d1 = cross(q2 - q1, p1 - q1), d2 = cross(q2 - q1, p2 - q1);
     const double d3 = cross(p2 - p1, q1 - p1), d4 = cross(p2 - p1, q2 - p1);
     if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0)))
@@ -30,23 +40,37 @@ std::string edgeName(std::size_t i, std::size_t n) {
            std::to_string((i + 1) % n) + ")";
 }
 
-/// Throws when two edges of the closed loop cross or touch, other than neighbours at their
-/// shared point; neighbours that fold back onto each other count as crossing.
-void checkSimple(const Loop& p) {
+/// Throws when edge i and the next fold back onto each other (a turn of 180 degrees).
+void checkFold(const Loop& p, std::size_t i) {
     const std::size_t n = p.size();
+    const Point<2>&a = p[i], &b = p[(i + 1) % n], &c = p[(i + 2) % n];
+    if (cross(b - a, c - b) == 0 && dot(b - a, c - b) < 0)
+        throw GeometryError("the polygon folds back on itself at point " +
+                            std::to_string((i + 1) % n) + " (" + edgeName(i, n) + " and " +
+                            edgeName((i + 1) % n, n) + " overlap)");
+}
+
+/// Throws when two edges of the closed loop cross or touch, other than neighbours at their
+/// shared point; neighbours that fold back onto each other count as crossing. The first fault
+/// in the order of a loop over i, then over j > i (a fold at i before a crossing of edge i):
+/// the edge tree offers each edge i the edges near it, of which the least j that meets it.
+void checkSimple(const Loop& p, const detail::EdgeTree& tree) {
+    const std::size_t n = p.size();
+    std::vector<int> near;
     for (std::size_t i = 0; i < n; ++i) {
-        const Point<2>&a = p[i], &b = p[(i + 1) % n], &c = p[(i + 2) % n];
-        if (cross(b - a, c - b) == 0 && dot(b - a, c - b) < 0)
-            throw GeometryError("the polygon folds back on itself at point " +
-                                std::to_string((i + 1) % n) + " (" + edgeName(i, n) + " and " +
-                                edgeName((i + 1) % n, n) + " overlap)");
-        for (std::size_t j = i + 2; j < n; ++j) {
-            if (i == 0 && j == n - 1) continue;
-            if (segmentsMeet(a, b, p[j], p[(j + 1) % n]))
-                throw GeometryError("the polygon crosses itself: " + edgeName(i, n) + " and " +
-                                    edgeName(j, n) +
-                                    " meet (list the points in order around the outline)");
+        checkFold(p, i);
+        const Point<2>&a = p[i], &b = p[(i + 1) % n];
+        tree.edgesNear(a, b, near);
+        std::size_t first = n;
+        for (const int k : near) {
+            const std::size_t j = std::size_t(k);
+            if (j < i + 2 || j >= first || (i == 0 && j == n - 1)) continue;
+            if (segmentsMeet(a, b, p[j], p[(j + 1) % n])) first = j;
         }
+        if (first < n)
+            throw GeometryError("the polygon crosses itself: " + edgeName(i, n) + " and " +
+                                edgeName(first, n) +
+                                " meet (list the points in order around the outline)");
     }
 }
 
@@ -54,29 +78,26 @@ void checkSimple(const Loop& p) {
 
 PolygonSet::PolygonSet(const std::vector<Loop>& loops) {
     bounds_ = {Point<2>::filled(HUGE_VAL), Point<2>::filled(-HUGE_VAL)};
+    std::vector<detail::PolygonEdge> edges;
+    std::size_t count = 0;
+    for (const Loop& loop : loops) count += loop.size();
+    edges.reserve(count);
     for (const Loop& loop : loops)
         for (std::size_t i = 0; i < loop.size(); ++i) {
-            edges_.push_back({loop[i], loop[(i + 1) % loop.size()]});
+            edges.push_back({loop[i], loop[(i + 1) % loop.size()]});
             for (int k = 0; k < 2; ++k)
                 bounds_.min[k] = std::min(bounds_.min[k], loop[i][k]),
                 bounds_.max[k] = std::max(bounds_.max[k], loop[i][k]);
         }
-    if (edges_.size() < 3) throw GeometryError("a polygon needs 3 points or more");
+    if (edges.size() < 3) throw GeometryError("a polygon needs 3 points or more");
+    tree_ = std::make_shared<const detail::EdgeTree>(edges);
 }
 
 /// The distance to the nearest edge, negative when a ray towards +x crosses an odd number of
 /// edges (each edge counted on the half-open span of its y).
 double PolygonSet::signedDistance(const Point<2>& x) const {
-    double d2 = HUGE_VAL;
-    bool inside = false;
-    for (const Edge& e : edges_) {
-        d2 = std::min(d2, segmentDistanceSqr(x, e.a, e.b));
-        if ((e.a[1] > x[1]) != (e.b[1] > x[1])) {
-            const double xCross = e.a[0] + (x[1] - e.a[1]) * (e.b[0] - e.a[0]) / (e.b[1] - e.a[1]);
-            if (x[0] < xCross) inside = !inside;
-        }
-    }
-    return inside ? -std::sqrt(d2) : std::sqrt(d2);
+    const double d = std::sqrt(tree_->nearestDistanceSqr(x));
+    return tree_->oddCrossings(x) ? -d : d;
 }
 
 SolidPtr<2> polygon(const Loop& points) {
@@ -88,8 +109,10 @@ SolidPtr<2> polygon(const Loop& points) {
             throw GeometryError("points " + std::to_string(i) + " and " +
                                 std::to_string((i + 1) % points.size()) +
                                 " of the polygon coincide (list each corner once)");
-    checkSimple(points);
-    return std::make_shared<PolygonSet>(std::vector<Loop>{points});
+    // The set's edges are the loop's in order: edge i of the tree is edge i of the outline.
+    auto set = std::make_shared<PolygonSet>(std::vector<Loop>{points});
+    checkSimple(points, *set->tree_);
+    return set;
 }
 
 }  // namespace num::geometry

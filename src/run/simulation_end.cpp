@@ -48,8 +48,8 @@ void addEngineFigures(const RunParts<Dim>& p, nlohmann::json& summary) {
     }
 }
 
-/// What crossed the inlets and outlets, and the heat the walls and bodies gave (with heat), in
-/// summary.json's conservation books: mass end = start + in - out, thermal energy end = start +
+/// What crossed the inlets and outlets, and the heat the walls and bodies gave (with heat, on
+/// one process), in summary.json's conservation books: mass end = start + in - out, thermal energy end = start +
 /// in - out + walls (to round-off, docs/outputs.md).
 template <int Dim>
 void addFlowBooks(const RunParts<Dim>& p, nlohmann::json& summary) {
@@ -58,7 +58,9 @@ void addFlowBooks(const RunParts<Dim>& p, nlohmann::json& summary) {
     const sph::FlowBooks books = flow ? flow->books : sph::FlowBooks{};
     c["mass"]["in"] = books.massIn, c["mass"]["out"] = books.massOut;
     c["thermal_energy"]["in"] = books.heatIn, c["thermal_energy"]["out"] = books.heatOut;
-    if (const auto* walls = p.solver->equations().template find<sph::ThermalBoundary<Dim>>())
+    // The walls' books are each process's own sums: given on one process only.
+    const auto* walls = p.solver->equations().template find<sph::ThermalBoundary<Dim>>();
+    if (walls && p.comm.size() == 1)
         c["thermal_energy"]["walls"] = walls->heatFromFixed() + walls->heatFromSources();
 }
 

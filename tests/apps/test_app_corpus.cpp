@@ -321,7 +321,7 @@ const std::vector<Case>& corpus() {
              return "";
          },
          kScene,
-         {"probes[0]", "one of a \"point\", a \"body\" or a \"wall\""}},
+         {"probes[0]", "one of a \"point\", a \"body\", a \"wall\" or a \"side\""}},
         {"probe_on_missing_body",
          2,
          [](json& j) {

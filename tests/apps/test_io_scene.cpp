@@ -159,8 +159,14 @@ TEST(SceneReader, EveryTableTypeReadsIntoItsModule) {
     for (const BoundaryType<2>& type : boundaryTypes<2>()) {
         SceneDocument doc =
             SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+        // An inlet needs its velocity, into the domain on each side.
         for (const char* side : {"x_min", "x_max"})
-            doc.set(std::string("boundaries.") + side + "=" + "{\"type\": \"" + type.name + "\"}");
+            doc.set(std::string("boundaries.") + side + "=" + "{\"type\": \"" + type.name + "\"" +
+                    (type.name == "inlet" ? side == std::string("x_min")
+                                                ? R"(, "velocity": [1, 0])"
+                                                : R"(, "velocity": [-1, 0])"
+                                          : "") +
+                    "}");
         const Scene<2> s = readScene<2>(doc);
         EXPECT_EQ(s.sides[0][0]->type(), type.name);
         EXPECT_EQ(s.sides[0][1]->type(), type.name);

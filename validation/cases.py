@@ -890,6 +890,19 @@ def books(run, field="mass"):
     return b["end"] - (b["start"] + b["in"] - b["out"] + b.get("walls", 0.0))
 
 
+def flow_checks(run, bins, window, profile_err, slope, dpdx):
+    """The checks of a flow between an inlet and an outlet: the velocity profile over the middle half
+    (the largest mean deviation over the `bins` one spacing thick), the pressure gradient there
+    against dpdx, and the mass books."""
+    mass = run.summary["conservation"]["mass"]
+    return [
+        {"metric": f"max |mean(u - u_exact)| / u_max over the {bins} one spacing thick, L / 4 < x < 3 L / 4, {window} "
+                   "(gate: issue 9's for the Poiseuille cases)", "value": profile_err, "gate": 0.01},
+        {"metric": f"|dp/dx - ({dpdx:g} Pa/m)| / {-dpdx:g} Pa/m, dp/dx the slope fitted over L / 4 < x < 3 L / 4, "
+                   "mean over the outputs (gate: issue 48's for the drag on a body)", "value": abs(slope - dpdx) / abs(dpdx), "gate": 0.05},
+        {"metric": "mass books |end - (start + in - out)| / start (gate: round-off)", "value": abs(books(run)) / mass["start"], "gate": 1e-9}]
+
+
 def channel_inflow(run):
     """Plane Poiseuille flow between a parabolic inlet and an outlet at p = 0, U the mean inflow
     velocity: over the middle half of the channel (L / 4 < x < 3 L / 4) the velocity profile,
@@ -929,12 +942,7 @@ def channel_inflow(run):
     mass = run.summary["conservation"]["mass"]
     t0, t = run.time(frames[0]), run.time()
     window = f"t = {t0:g} to {t:g} s ({len(frames)} outputs)"
-    checks = [
-        {"metric": f"max |mean(u - u_exact)| / u_max over the layers one spacing thick, L / 4 < x < 3 L / 4, {window} "
-                   "(gate: issue 9's for the Poiseuille cases)", "value": profile_err, "gate": 0.01},
-        {"metric": f"|dp/dx - ({dpdx:g} Pa/m)| / {-dpdx:g} Pa/m, dp/dx the slope fitted over L / 4 < x < 3 L / 4, "
-                   "mean over the outputs (gate: issue 48's for the drag on a body)", "value": abs(slope - dpdx) / abs(dpdx), "gate": 0.05},
-        {"metric": "mass books |end - (start + in - out)| / start (gate: round-off)", "value": abs(books(run)) / mass["start"], "gate": 1e-9}]
+    checks = flow_checks(run, "layers", window, profile_err, slope, dpdx)
     notes = (f"dp/dx {slope:.4g} Pa/m against {dpdx:g} (single outputs {min(slopes):.4g} to {max(slopes):.4g}), the drop "
              f"over the channel {-slope * L:.4g} Pa against {-dpdx * L:.4g}; the largest single particle's |u - u_exact| "
              f"at t = {t:g} s {single:.3g} u_max; mass in {mass['in']:.5g} kg/m, out {mass['out']:.5g}, start "
@@ -986,12 +994,7 @@ def pipe_flow(run):
     slope = float(np.mean(slopes))
     mass = run.summary["conservation"]["mass"]
     window = f"t = {run.time(frames[0]):g} to {run.time():g} s ({len(frames)} outputs)"
-    checks = [
-        {"metric": f"max |mean(u - u_exact)| / u_max over the shells one spacing thick, L / 4 < x < 3 L / 4, {window} "
-                   "(gate: issue 9's for the Poiseuille cases)", "value": profile_err, "gate": 0.01},
-        {"metric": f"|dp/dx - ({dpdx:g} Pa/m)| / {-dpdx:g} Pa/m, dp/dx the slope fitted over L / 4 < x < 3 L / 4, "
-                   "mean over the outputs (gate: issue 48's for the drag on a body)", "value": abs(slope - dpdx) / abs(dpdx), "gate": 0.05},
-        {"metric": "mass books |end - (start + in - out)| / start (gate: round-off)", "value": abs(books(run)) / mass["start"], "gate": 1e-9}]
+    checks = flow_checks(run, "shells", window, profile_err, slope, dpdx)
     notes = (f"dp/dx {slope:.4g} Pa/m against {dpdx:g} (single outputs {min(slopes):.4g} to {max(slopes):.4g}); "
              f"R / dx {R / dx:g}; mass in {mass['in']:.5g} kg, out {mass['out']:.5g}")
     rs = np.linspace(0, 1, 101)

@@ -91,43 +91,39 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
     return initial;
 }
 
-/// The moving bodies' states at the checkpoint's time.
-template <int Dim>
-void restoreBodies(RunParts<Dim>& p, const std::string& file) {
-    const auto& bodies = p.setup->model.movingBodies;
-    if (!bodies && p.state.bodies.empty()) return;
+/// Restores a part of the state a checkpoint keeps besides the particles (`saved`, empty where
+/// it had none): `present`, whether the scene has that part (`what`, for the message), and
+/// `restore`, which throws std::invalid_argument on values that do not fit it.
+template <class Restore>
+void restorePart(bool present, const std::vector<double>& saved, const char* what,
+                 const std::string& file, Restore&& restore) {
+    if (!present && saved.empty()) return;
     try {
-        if (!bodies) throw std::invalid_argument("holds moving bodies, the scene has none");
-        bodies->restore(p.state.bodies);
+        if (!present)
+            throw std::invalid_argument(std::string("holds ") + what + ", the scene has none");
+        restore(saved);
     } catch (const std::invalid_argument& e) {
         throw AppError(ExitCode::CHECKPOINT, file + ": the checkpoint " + e.what());
     }
 }
 
-/// The books of the inlets and outlets at the checkpoint's time.
+/// The moving bodies' states and the inlets' and outlets' books at the checkpoint's time.
 template <int Dim>
-void restoreFlowBooks(RunParts<Dim>& p, const std::string& file) {
+void restoreBodiesAndFlow(RunParts<Dim>& p, const std::string& file) {
+    const auto& bodies = p.setup->model.movingBodies;
+    restorePart(bool(bodies), p.state.bodies, "moving bodies", file,
+                [&](const std::vector<double>& v) { bodies->restore(v); });
     const auto& flow = p.setup->model.flowBoundaries;
-    if (!flow && p.state.flow.empty()) return;
-    try {
-        if (!flow) throw std::invalid_argument("holds inlets or outlets, the scene has none");
-        flow->books.restore(p.state.flow);
-    } catch (const std::invalid_argument& e) {
-        throw AppError(ExitCode::CHECKPOINT, file + ": the checkpoint " + e.what());
-    }
+    restorePart(bool(flow), p.state.flow, "inlets or outlets", file,
+                [&](const std::vector<double>& v) { flow->books.restore(v); });
 }
 
 /// The walls' heat books at the checkpoint's time (once the engine is made).
 template <int Dim>
 void restoreWallHeat(RunParts<Dim>& p, const std::string& file) {
     auto* walls = p.solver->equations().template find<sph::ThermalBoundary<Dim>>();
-    if (!walls && p.state.wallHeat.empty()) return;
-    try {
-        if (!walls) throw std::invalid_argument("holds heat books of walls, the scene has no heat");
-        walls->restoreBooks(p.state.wallHeat);
-    } catch (const std::invalid_argument& e) {
-        throw AppError(ExitCode::CHECKPOINT, file + ": the checkpoint " + e.what());
-    }
+    restorePart(walls != nullptr, p.state.wallHeat, "heat books of walls", file,
+                [&](const std::vector<double>& v) { walls->restoreBooks(v); });
 }
 
 /// The state and particles of the checkpoint options.restart names.
@@ -145,8 +141,7 @@ void readRestart(RunParts<Dim>& p, const sph::Storage<Dim>& initial) {
                                                  " emitters, the scene " +
                                                  std::to_string(p.scene.emitters.size()));
     p.storage = readStorage<Dim>(r, initial);
-    restoreBodies(p, file);
-    restoreFlowBooks(p, file);
+    restoreBodiesAndFlow(p, file);
     if (p.state.time >= p.scene.endTime)
         throw AppError(ExitCode::USAGE,
                        file + ": the checkpoint is at t = " + formatted("%g", p.state.time) +

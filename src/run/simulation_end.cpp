@@ -49,8 +49,8 @@ void addEngineFigures(const RunParts<Dim>& p, nlohmann::json& summary) {
 }
 
 /// What crossed the inlets and outlets, and the heat the walls and bodies gave (with heat, on
-/// one process), in summary.json's conservation books: mass end = start + in - out, thermal energy end = start +
-/// in - out + walls (to round-off, docs/outputs.md).
+/// one process), in summary.json's conservation books: mass end = start + in - out to round-off,
+/// thermal energy end = start + in - out + walls (docs/scenes.md, "Outputs").
 template <int Dim>
 void addFlowBooks(const RunParts<Dim>& p, nlohmann::json& summary) {
     nlohmann::json& c = summary["conservation"];

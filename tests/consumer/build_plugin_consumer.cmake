@@ -14,7 +14,9 @@ foreach(var NUMERICS_SOURCE_DIR WORK_DIR FLUID_SIM)
   endif()
 endforeach()
 
-set(common_args -DCMAKE_BUILD_TYPE=Release)
+# Debug: unoptimised, the library builds in 131 s instead of 307 s on 2 cores (2026-12-06); the
+# walkthrough's scene is small, and the plugin's speed is not what this test checks.
+set(common_args -DCMAKE_BUILD_TYPE=Debug)
 if(GENERATOR)
   list(APPEND common_args -G ${GENERATOR})
 endif()

@@ -1464,7 +1464,11 @@ case("graetz_2d", "graetz_2d.json", graetz, 0.00025, [0.001, 0.0005, 0.00025], (
 # (2026-12-06, the engine of 872ef69).
 PIPE_CI_BOUNDS = [0.052, 0.40, None]
 case("cylinder_re100", "cylinder_re100.json", cylinder_shedding, 0.01, [0.01], (0.01, None),
-     gates="Schaefer & Turek 1996, 2D-2", note="Documented only, not in CI (minutes at D / dx = 10). " + _MEASURED_FLOW)
+     gates="Schaefer & Turek 1996, 2D-2", note="Documented only, not in CI (minutes at D / dx = 10). " + _MEASURED_FLOW,
+     miss_note="At D / dx = 10 the wake does not shed as the benchmark's: the lift's spectrum peaks at 5.5 Hz "
+     "(St 0.55 against 0.30) and the drag is far low (mean c_D 1.37, the benchmark's about 3.2), where the steady "
+     "2D-1 flow at the same spacing is 19 % low. Finer spacings (D / dx = 20: about 30 min on 2 cores) and a peer "
+     "on the same set-up were not run.")
 case("pipe_inflow_3d", "pipe_inflow_3d.json", pipe_flow, 0.001, [0.001], (0.001, PIPE_CI_BOUNDS),
      gates="the source each check names", note="The pipe is a wall (the difference of a box and a cylinder); "
      "where it meets the inlet's side its layers are wall, so the profile is given as zero outside it. Documented "

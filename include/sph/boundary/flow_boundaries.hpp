@@ -246,8 +246,10 @@ class OutletCondition : public IEquationTerm<Dim> {
         const auto seen = [&](Size j) {
             return isFluid(kind[j]) || kind[j] == int(ParticleKind::OUTLET);
         };
-        std::vector<Size> slot(s.size(), 0);
-        for (std::size_t k = 0; k < outlets_.size(); ++k) slot[outlets_[k]] = Size(k);
+        // outlets_ is in increasing order: an outlet particle's slot by bisection.
+        const auto slot = [&](Size o) {
+            return std::lower_bound(outlets_.begin(), outlets_.end(), o) - outlets_.begin();
+        };
         gather_->forEachWhere(scheduler, outlets_, seen, [&](Size o, auto&& visit) {
             Vec sum{};
             Float weight = 0;
@@ -256,7 +258,7 @@ class OutletCondition : public IEquationTerm<Dim> {
             });
             const FlowSide<Dim>& side = flow_->sides[flow_->sideOf(x[o], ParticleKind::OUTLET)];
             p[o] = side.pressure(x[o], t), rho[o] = eos_.density(p[o]);
-            mean_[slot[o]] = weight > 0 ? sum / weight : v[o];
+            mean_[slot(o)] = weight > 0 ? sum / weight : v[o];
         });
         for (std::size_t k = 0; k < outlets_.size(); ++k) v[outlets_[k]] = mean_[k];
     }

@@ -395,8 +395,8 @@ void checkPeriodicAxes(const Scene<Dim>& s) {
 template <int Dim>
 void checkSceneGeometry(const Scene<Dim>& s) {
     checkSpacing(s);
+    checkBodiesAndWalls(s);  // first: a fluid block is cut by them (a body far out, named)
     const double estimate = checkFluidBlocks(s);
-    checkBodiesAndWalls(s);
     checkEmitters(s);
     checkProbes(s);
     checkFluidAmount(s, estimate);

@@ -103,6 +103,24 @@ TEST(BadGeometry, MeshNotClosed) {
     expectMessage(r, {"bodies[0]", "not closed", "3 open edges"});
 }
 
+TEST(BadGeometry, MeshMovedFarOutIsNamedOutsideTheDomain) {
+    // Translated by 1e300 the mesh's distances overflow: the body is named, not the fluid
+    // block it was thought to cover.
+    const std::string cube =
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+        "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+        "f 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+    json j = tiny3d();
+    j["domain"] = {{"min", {0, 0, 0}}, {"max", {2, 2, 2}}};
+    j["particles"]["spacing"] = 0.1;
+    j["fluids"][0]["max"] = {2, 2, 0.5};
+    j["probes"] = json::array();
+    j["boundaries"]["z_max"] = {{"type", "wall"}};
+    j["bodies"] = json::array({{{"shape", "mesh"}, {"file", "cube.obj"}, {"translate", {1e300, 0, 0}}}});
+    const Result r = runScene("far_mesh", j, "--quiet", {{"cube.obj", cube}});
+    expectMessage(r, {"bodies[0]", "inside the domain", "1e+300"});
+}
+
 TEST(BadGeometry, FileNotAMesh) {
     json j = tiny3d();
     j["walls"] = json::array({{{"shape", "mesh"}, {"file", "notes.stl"}}});

@@ -6,10 +6,11 @@
 RESULTS_DIR holds CASE@SPACING.json, one per app run (validation/run.sh; not kept in git: the
 profiles they hold are most of their size). SUMMARY.json (kept in git) holds every run's figures
 without its profile: the runs found in RESULTS_DIR replace their entries there, and the report
-is written from it. Per case the report gives the set-up (cases.py's SETUPS), the run, the checks
-at documentation resolution (measured error, the issue's gate, pass or MISSED), what the figures
-alone do not show and why a missed gate is missed (cases.py's note and miss_note), the
-convergence table over the study's spacings and a plot (PLOT_DIR/CASE.png: the app's result
+is written from it (an empty RESULTS_DIR rewrites the report from the summary alone). Per case
+the report gives the set-up (cases.py's SETUPS), the run, the checks at documentation resolution
+(measured error, the gate, pass or MISSED), the run's details where cases.py asks for them
+("details"), why a missed gate is missed (miss_note), what the figures alone do not show (note),
+the convergence table over the study's spacings and a plot (PLOT_DIR/CASE.png: the app's result
 against the reference, and the errors against the spacing; redrawn when the run at documentation
 resolution is in RESULTS_DIR, else the stored plot is kept).
 """
@@ -69,11 +70,6 @@ def build_date(build):
     return out.stdout.strip() if out.returncode == 0 else ""
 
 
-def build_name(build, form="{build} ({date})"):
-    date = build_date(build)
-    return form.format(build=build, date=date) if date else build
-
-
 def close(a, b):
     return abs(a - b) <= 1e-9 * max(abs(a), abs(b))
 
@@ -109,19 +105,37 @@ def plot(name, doc, runs, plot_dir):
     return path
 
 
+def ci_line(c, n_checks):
+    """What CI (ctest -L validation) asserts for a case, or why the case is not in it."""
+    if c.get("not_in_ci"):
+        return f"not in CI: {c['not_in_ci']}"
+    spacing, bounds = c["ci"]
+    bounds = bounds or [None] * n_checks
+    gated = [str(i + 1) for i, b in enumerate(bounds) if b is None]
+    if len(gated) == n_checks:
+        return f"CI at {spacing:.4g}: the gate"
+    bound = [f"check {i + 1} <= {b:g}" for i, b in enumerate(bounds) if b is not None]
+    text = f"CI at {spacing:.4g}: " + ", ".join(bound) + f" (regression bound{'s' if len(bound) > 1 else ''})"
+    if gated:
+        text += f", check{'s' if len(gated) > 1 else ''} {', '.join(gated)} the gate"
+    return text
+
+
 def main():
     results_dir, summary, report, plot_dir = sys.argv[1:5]
     os.makedirs(plot_dir, exist_ok=True)
     by_case = load(results_dir, summary)
     write_summary(by_case, summary)
     rel_plot = os.path.relpath(plot_dir, os.path.dirname(os.path.abspath(report)))
-    rows, sections, builds = [], [], set()
+    rows, sections, dates = [], [], set()
     passed = missed = absent = 0
     for name, c in cases.CASES.items():
         runs = by_case.get(name, [])
         doc = next((r for r in runs if close(r["spacing"], c["doc"])), None)
         for r in runs:
-            builds.add(r.get("app_build", "unknown"))
+            date = build_date(r.get("app_build", "unknown"))
+            if date:
+                dates.add(date)
         if doc is None or "failed" in doc:
             absent += 1
             why = doc["failed"] if doc else c.get("doc_note", "not run")
@@ -135,61 +149,60 @@ def main():
         rows.append(f"| [{name}](#{name}) | {doc['spacing']:.4g} ({doc['fluid_particles']} particles) | "
                     f"{main_ch['value']:.3g} | {main_ch['gate']:g} | {'pass' if ok else '**MISSED**'} |")
         png = plot(name, doc, runs, plot_dir)
-        threads = f"{doc['threads']} thread{'s' if doc['threads'] != 1 else ''}"
-        out = [f"## {name}\n", f"{c['setup']}.\n",
-               f"Run: `{doc['command']}`: {doc['fluid_particles']} fluid particles, {doc['steps']} steps, "
-               f"{doc['wall_seconds']:.0f} s on {threads}, build {build_name(doc['app_build'], '{build} of {date}')}.\n",
-               f"| check | measured | gate ({c.get('gates', 'issue {}'.format(c.get('issue', 9)))}) | result |",
-               "| --- | --- | --- | --- |"]
-        for ch in doc["checks"]:
-            metric = ch["metric"].replace("|", "\\|")
-            out.append(f"| {metric} | {ch['value']:.4g} | {ch['gate']:g} | {'pass' if ch['passed'] else '**MISSED**'} |")
-        out.append(f"\nDetails: {doc['notes']}.\n")
+        run = [f"{doc['steps']} steps"]
+        if doc["threads"] != 2:
+            run.append(f"{doc['threads']} thread{'s' if doc['threads'] != 1 else ''}")
+        if c.get("shared_cores"):
+            run.append("cores shared with other work")
+        run.append(f"build {doc['app_build']}")
+        out = [f"## {name}\n", f"{c['setup']}. Run: `{doc['command']}` ({', '.join(run)}).\n",
+               f"Checks (gate: {c.get('gates', 'issue {}'.format(c.get('issue', 9)))}; "
+               f"{ci_line(c, len(doc['checks']))}):\n"]
+        for i, ch in enumerate(doc["checks"]):
+            out.append(f"{i + 1}. {ch['metric']}: {ch['value']:.4g}, gate {ch['gate']:g}, "
+                       f"{'pass' if ch['passed'] else '**MISSED**'}")
+        out.append("")
+        if c.get("details"):
+            out.append(f"Details: {doc['notes']}.\n")
         if not ok and c.get("miss_note"):
-            out.append(f"**Why it misses**: {c['miss_note']}.\n")
+            out.append(f"**Why it misses**: {c['miss_note']}\n")
         if c.get("note"):
-            out.append(f"{c['note']}.\n")
+            out.append(f"{c['note']}\n")
         if c.get("doc_note"):
             out.append(f"Resolution: {c['doc_note']}.\n")
-        ci = c["ci"]
-        bounds = ci[1] or [None] * len(doc["checks"])
-        gated = [str(i + 1) for i, b in enumerate(bounds) if b is None]
-        asserts = [f"check {i + 1} <= {b:g} (a regression bound)" for i, b in enumerate(bounds) if b is not None]
-        if gated:
-            asserts.append(f"check{'s' if len(gated) > 1 else ''} {', '.join(gated)} within the gate")
-        out.append(f"Convergence (`--set particles.spacing=DX`); CI (`ctest -L validation`) runs {ci[0]:.4g}: "
-                   + "; ".join(asserts) + ".\n")
-        out.append("| spacing | fluid particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |")
-        out.append("| --- | --- | " + " | ".join("---" for _ in doc["checks"]) + " | --- |")
+        out.append("| spacing | particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |")
+        out.append("|" + "---|" * (len(doc["checks"]) + 3))
         for r in runs:
             if "failed" in r:
                 out.append(f"| {r['spacing']:.4g} | run failed: {r['failed']} |")
                 continue
-            out.append(f"| {r['spacing']:.4g} | {r['fluid_particles']} | " +
+            sp = f"{r['spacing']:.4g}"
+            out.append(f"| {f'**{sp}**' if r is doc else sp} | {r['fluid_particles']} | " +
                        " | ".join(f"{ch['value']:.4g}" for ch in r["checks"]) + f" | {r['wall_seconds']:.0f} |")
         out.append(f"\n![{name}]({rel_plot}/{os.path.basename(png)})\n")
         sections.append("\n".join(out))
+    span = (f"{min(dates)} to {max(dates)}" if len(dates) > 1 else min(dates) if dates else "dates unknown")
     head = f"""# Validation report
 
-Each case is a scene of `scenes/validation/` run by `fluid_sim` or `fluid_sim_3d` as a user runs
-it (the app's defaults; only the spacing changes, `--set particles.spacing=DX`) and compared with
-its reference ([reference_solutions.md](reference_solutions.md), `validation/data/`) from the
-app's own outputs by `validation/cases.py`; nothing here comes from the C++ API tests. Gates are
-those of issue 9, of issue 48 for the cases with geometry and of issue 59 for moving bodies (for the
-inlet and outlet cases, each check names where its gate comes from); a
-gate is never loosened: a case that misses it says **MISSED**, with the number and what is known
-of why. CI checks each case
-at a coarser spacing, against the gate or, where a case misses it or comes close, a regression
-bound (the error measured there plus 50 %; `validation/cases.py` says when each was measured).
+Each case is a scene of `scenes/validation/` run by `fluid_sim` or `fluid_sim_3d` with the app's
+defaults (only the spacing changes, `--set particles.spacing=DX`) and compared with its reference
+([reference_solutions.md](reference_solutions.md), `validation/data/`) from the app's own outputs
+by `validation/cases.py`. A gate is never loosened: a case that misses it says **MISSED**.
 
-`validation/run.sh` writes this page from every run's figures in `docs/validation/summary.json`.
-One case: `/usr/bin/python3 validation/cases.py run CASE --spacing DX --bin build/release/apps`.
-Wall times: 2 CPU cores (a KVM guest); app builds {", ".join(build_name(b) for b in sorted(builds)) or "none"}.
+- One case: `/usr/bin/python3 validation/cases.py run CASE --spacing DX --bin build/release/apps`.
+- Every case with its convergence study, and this page: `validation/run.sh` (the figures of every
+  run are kept in `docs/validation/summary.json`).
+- CI (`ctest -L validation`) runs each case at a coarser spacing against its gate or, where the
+  case misses it or comes close, a regression bound (the error measured there plus 50 %).
+
+Wall times: 2 threads on 2 CPU cores (a KVM guest) unless a run says otherwise.
+App builds of {span}; each case's run names its build.
+Each case's table is its convergence study, the documentation resolution in bold.
 
 **{passed} of {len(cases.CASES)} cases meet their gates** at documentation resolution, {missed} miss them{f", {absent} have no result" if absent else ""}.
 
 | case | documentation spacing | measured (the check furthest from its gate) | its gate | result |
-| --- | --- | --- | --- | --- |
+|---|---|---|---|---|
 """
     with open(report, "w") as f:
         f.write(head + "\n".join(rows) + "\n\n" + "\n".join(sections))

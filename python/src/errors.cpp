@@ -7,8 +7,10 @@
 #include "bindings.hpp"
 #include "io/errors.hpp"
 #include "io/expression.hpp"
+#include "set_up_interrupt.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/settings_error.hpp"
+#include "sph/setup/set_up_interrupt.hpp"
 
 namespace num::python {
 
@@ -36,6 +38,9 @@ void translate(std::exception_ptr thrown) {
         throw;  // pybind11's own (ValueError, KeyError...)
     } catch (const py::error_already_set&) {
         throw;  // a Python error on its way back
+    } catch (const sph::SetUpInterrupted&) {
+        // Ctrl-C in a set-up: the signal handler's exception (KeyboardInterrupt) is set.
+        if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
     } catch (const io::AppError& e) {
         raise(e.code(), e.what());
     } catch (const io::ExpressionError& e) {
@@ -58,6 +63,9 @@ void translate(std::exception_ptr thrown) {
 
 }  // namespace
 
-void bindErrors(py::module_&) { py::register_exception_translator(translate); }
+void bindErrors(py::module_&) {
+    py::register_exception_translator(translate);
+    installSetUpInterrupt();
+}
 
 }  // namespace num::python

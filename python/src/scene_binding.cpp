@@ -3,6 +3,7 @@
 
 #include "bindings.hpp"
 #include "io/scene_loader.hpp"
+#include "set_up_interrupt.hpp"
 
 namespace num::python {
 
@@ -21,6 +22,7 @@ void bindScene(py::module_& m) {
         .def(
             "check",
             [](const SceneDocument& d) {
+                const StopSetUpOnCtrlC ctrlC;
                 if (d.dimension() == 3)
                     io::readScene<3>(d);
                 else

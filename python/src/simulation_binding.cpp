@@ -6,6 +6,7 @@
 #include <string>
 
 #include "driver.hpp"
+#include "set_up_interrupt.hpp"
 
 namespace num::python {
 
@@ -94,6 +95,7 @@ void bindDriver(py::module_& m, const char* name) {
                          const std::optional<double>& endTime,
                          const std::optional<std::string>& backend) {
                  const io::RunOptions o = runOptions(threads, out, quiet, endTime, backend);
+                 const StopSetUpOnCtrlC ctrlC;
                  py::gil_scoped_release released;
                  return std::make_unique<D>(doc, o);
              }),

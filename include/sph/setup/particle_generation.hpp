@@ -9,10 +9,12 @@
 #include <vector>
 
 #include "sph/setup/fluid_geometry.hpp"
+#include "sph/setup/set_up_interrupt.hpp"
 
 namespace num::sph {
 
-/// Calls f(x) for every cell centre of the lattice covering [lo, hi) with spacing dx.
+/// Calls f(x) for every cell centre of the lattice covering [lo, hi) with spacing dx (polling
+/// pollSetUpInterrupt once per row along the first axis).
 template <int Dim, class F>
 void forEachLatticePoint(const Vector<Dim>& lo, const Vector<Dim>& hi, Float dx, F&& f) {
     std::array<long, Dim> n{};
@@ -28,6 +30,7 @@ void forEachLatticePoint(const Vector<Dim>& lo, const Vector<Dim>& hi, Float dx,
         int k = 0;
         while (k < Dim && ++i[k] == n[k]) i[k++] = 0;
         if (k == Dim) return;
+        if (k > 0) pollSetUpInterrupt();
     }
 }
 

@@ -11,6 +11,7 @@
 #include "io/errors.hpp"
 #include "io/fields.hpp"
 #include "io/formatted.hpp"
+#include "spatial/cell_grid.hpp"
 #include "sph/storage.hpp"
 
 namespace num::io {
@@ -24,8 +25,10 @@ class WrittenParticles {
         id_ = ints(s, sph::QuantityId::PARTICLE_ID);
     }
 
-    /// Throws AppError (USAGE) at the first written value the next step cannot take.
-    void check(const sph::Storage<Dim>& s, const FieldNames& names) const {
+    /// Throws AppError (USAGE) at the first written value the next step cannot take; `domain`:
+    /// the box the fluid lives in.
+    void check(const sph::Storage<Dim>& s, const FieldNames& names,
+               const Domain<Dim>& domain) const {
         using sph::QuantityId;
         const std::size_t n = s.size();
         const bool same = kind_.size() == n;  // a C++ front end may have added particles
@@ -63,6 +66,15 @@ class WrittenParticles {
                     if (!(v[i] > 0)) refuse(i, name, formatted("%g", v[i]), "a number > 0");
             }
         checkFluidState(s, kind, material);
+        checkFluidInside(s, kind, domain);
+        if (s.has(QuantityId::TEMPERATURE) &&
+            s.get(QuantityId::TEMPERATURE).template holds<sph::Float>()) {
+            const auto T = s.template getValue<sph::Float>(QuantityId::TEMPERATURE);
+            for (std::size_t i = 0; i < T.size(); ++i)
+                if (!(T[i] >= kAbsoluteZero))
+                    refuse(i, "temperature", formatted("%g degC", T[i]),
+                           "a temperature above absolute zero, -273.15 degC");
+        }
     }
 
   private:
@@ -141,6 +153,24 @@ class WrittenParticles {
                     i, "density", formatted("%g kg/m^3", rho[i]),
                     "half to twice its material's rest density, " + formatted("%g kg/m^3", rho0));
         }
+    }
+
+    static constexpr double kAbsoluteZero = -273.15;  ///< degC
+
+    /// A fluid particle lies inside the domain on its axes that are not periodic (the steps
+    /// would mirror it back from a wall or drop it at an open side).
+    static void checkFluidInside(const sph::Storage<Dim>& s, const std::vector<int>& kind,
+                                 const Domain<Dim>& domain) {
+        if (kind.size() != s.size()) return;
+        const auto x = s.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+        for (std::size_t i = 0; i < s.size(); ++i)
+            for (int k = 0; k < Dim; ++k)
+                if (kind[i] == int(sph::ParticleKind::FLUID) && !domain.periodic[k] &&
+                    !(x[i][k] >= domain.min[k] && x[i][k] <= domain.max[k]))
+                    refuse(i, "position", formatted("%g on axis ", x[i][k]) + std::to_string(k),
+                           "a fluid particle inside the domain, " +
+                               formatted("%g to %g", domain.min[k], domain.max[k]) +
+                               " on that axis");
     }
 
     std::vector<int> kind_, id_;

@@ -132,7 +132,9 @@ def test_position_that_is_not_a_number_refused(sim2d):
     ("density", np.inf, "density inf"), ("density", -1000.0, "density -1000"),
     ("density", 1e5, "density 100000 kg/m^3"), ("pressure", np.nan, "pressure nan"),
     ("temperature", np.inf, "temperature inf"), ("velocity", np.inf, "velocity inf on axis 0"),
-    ("velocity", 1e4, "velocity 14142.1 m/s")])
+    ("velocity", 1e4, "velocity 14142.1 m/s"), ("temperature", -500.0, "temperature -500 degC"),
+    ("position", [0.3, 0.05], "position 0.3 on axis 0"),
+    ("position", [0.05, -3.0], "position -3 on axis 1")])
 def test_written_quantities_are_checked(sim2d, field, value, text):
     p = sim2d.particles_writable()
     fluid = int(np.flatnonzero(p.kind == 0)[0])

@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -25,6 +26,13 @@ const char* const kGive = ": give an STL, OBJ or PLY file of triangles";
 
 [[noreturn]] void refuse(const std::string& path, const std::string& why) {
     throw GeometryError(path + ": not a readable mesh (" + why + ")" + kGive);
+}
+
+/// A count read from a file as it would be written: 255, 2.5, -1, nan.
+std::string countText(double n) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", n);
+    return text;
 }
 
 /// Bytes of a PLY scalar type, 0 for an unknown name.
@@ -225,7 +233,7 @@ void checkPly(const std::string& path, std::uintmax_t fileSize) {
                     binary ? bin.value(p.countSize, p.countSigned, false) : text.value();
                 const bool corners = e.name == "face";
                 if (!(n >= 0) || n != std::floor(n) || (corners && (n < 3 || n > kMaxFaceCorners)))
-                    refuse(path, e.name + " " + std::to_string(i) + " has " + std::to_string(n) +
+                    refuse(path, e.name + " " + std::to_string(i) + " has " + countText(n) +
                                      " items in its list '" + p.name +
                                      (corners ? "' (a face has 3 to " +
                                                     std::to_string(kMaxFaceCorners) + " corners)"

@@ -10,9 +10,11 @@
 #include "device/execution.hpp"
 #include "device/fluid_state.hpp"
 #include "device/neighbour_grid.hpp"
+#include "spatial/cell_grid.hpp"
 #include "sph/formulas/fluid_pairs.hpp"
 #include "sph/formulas/fluid_particles.hpp"
 #include "sph/formulas/heat_pairs.hpp"
+#include "sph/formulas/leapfrog.hpp"
 #include "sph/formulas/pair_geometry.hpp"
 #include "sph/formulas/post_step.hpp"
 #include "sph/formulas/wall_condition.hpp"
@@ -53,15 +55,8 @@ struct Wrap {
     Vector<Dim> lo, hi;
     bool periodic[Dim];
     NUMERICS_HD void operator()(Index i) const {
-        Vector<Dim> p = x[i];
-        for (int k = 0; k < Dim; ++k)  // Domain::wrap
-            if (periodic[k]) {
-                const double length = hi[k] - lo[k];
-                p[k] = lo[k] + ::fmod(p[k] - lo[k], length);
-                if (p[k] < lo[k]) p[k] += length;
-                if (p[k] >= hi[k]) p[k] = lo[k];
-            }
-        x[i] = p;
+        for (int k = 0; k < Dim; ++k)
+            if (periodic[k]) x[i][k] = wrapIntoPeriod(x[i][k], lo[k], hi[k]);
     }
 };
 
@@ -305,14 +300,9 @@ struct KickDrift {
     Arrays<Dim> d;
     Float dt;
     NUMERICS_HD void operator()(Index i) const {
-        d.v[i] += d.a[i] * (0.5 * dt);
-        d.x[i] += d.v[i] * dt;
-        d.drhoOld[i] = d.drho[i];
-        d.rho[i] += d.drho[i] * dt;
-        if (d.T) {
-            d.dTOld[i] = d.dT[i];
-            d.T[i] += d.dT[i] * dt;
-        }
+        sph::formulas::kickDrift(d.x[i], d.v[i], d.a[i], 0.5 * dt, dt);
+        sph::formulas::heunPredict(d.rho[i], d.drhoOld[i], d.drho[i], dt);
+        if (d.T) sph::formulas::heunPredict(d.T[i], d.dTOld[i], d.dT[i], dt);
     }
 };
 
@@ -322,9 +312,9 @@ struct Kick {
     Arrays<Dim> d;
     Float dt;
     NUMERICS_HD void operator()(Index i) const {
-        d.v[i] += d.a[i] * (0.5 * dt);
-        d.rho[i] += (d.drho[i] - d.drhoOld[i]) * (0.5 * dt);
-        if (d.T) d.T[i] += (d.dT[i] - d.dTOld[i]) * (0.5 * dt);
+        sph::formulas::kick(d.v[i], d.a[i], 0.5 * dt);
+        sph::formulas::heunCorrect(d.rho[i], d.drho[i], d.drhoOld[i], 0.5 * dt);
+        if (d.T) sph::formulas::heunCorrect(d.T[i], d.dT[i], d.dTOld[i], 0.5 * dt);
     }
 };
 

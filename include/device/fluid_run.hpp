@@ -1,10 +1,11 @@
 // The host side of the device step (plain C++; the apps and the tests use it): what a fluid
 // model must leave out to run on the device, its FluidStepConfig, the copies between a Storage
-// and the device step, and DeviceRun, the run loop of sph::Run (timestepping.hpp) over a device
-// step: the adaptive step from the same criteria (the maxima reduced on the device, offered in
-// the CPU solver's order, the diffusion limit of conduction last), the leapfrog, the post-step
-// phase. The heat books of thermal_walls.hpp (heat delivered by fixed temperatures and
-// sources) are not kept on the device.
+// and the device step, and DeviceRun, sph::Run's step (timestepping.hpp) over a device step:
+// the adaptive step from the same criteria (sph/formulas/time_step.hpp, from maxima reduced on
+// the device, offered in the CPU solver's order, the diffusion limit of conduction last), the
+// leapfrog (sph/formulas/leapfrog.hpp), the post-step phase. The apps' step loop is Simulation's
+// (src/run/engine.hpp: the device engine). The heat books of thermal_walls.hpp (heat delivered by
+// fixed temperatures and sources) are not kept on the device.
 #pragma once
 
 #include <memory>
@@ -12,25 +13,29 @@
 #include <stdexcept>
 #include <string>
 
+#include "device/device_terms.hpp"
 #include "device/fluid_step_on.hpp"
 #include "sph/defaults.hpp"
 #include "sph/fluid_model.hpp"
+#include "sph/formulas/time_step.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/timestepping.hpp"
 
 namespace num::device {
 
 /// What of a fluid model the device step does not run yet, as "what (why)", or "" when it runs
-/// all of it. Checked before anything is uploaded.
+/// all of it. Checked before anything is uploaded. The terms come from the model's own CPU
+/// equations (device_terms.hpp); the geometry and the settings the device step reads are checked
+/// here.
 template <int Dim>
-std::string unsupported(const sph::FluidModel<Dim>& model,
-                        const sph::FluidGeometry<Dim>& /*geometry*/,
+std::string unsupported(const sph::FluidModel<Dim>& model, const sph::FluidGeometry<Dim>& geometry,
                         const sph::RunSettings& settings) {
-    if (model.extraTerms.size() > 0) return "extra equation terms (plugins' or users' terms)";
-    if (model.movingBodies && model.movingBodies->anyMoves())
-        return "moving bodies (bodies[i].motion free or prescribed)";
-    if (model.flowBoundaries) return "inlets and outlets (boundaries of type inlet or outlet)";
-    if (model.density == sph::DensityMode::SUMMATION) return "density by summation";
+    if (const std::string term = firstTermNotOnDevice(sph::makeFluidEquations(model, geometry));
+        !term.empty())
+        // A plugin's term is named `term "spring" (plugins.0.terms.0, libx.so)` already.
+        return term.starts_with("term \"") ? term : "the equation term \"" + term + "\"";
+    if (!geometry.interiorWalls.empty()) return "walls inside the domain";
+    if (geometry.hasGeneralShapes()) return "shapes other than boxes and balls";
     if (sph::evaluationFromName(settings.get<std::string>("evaluation")) ==
         sph::Evaluation::SYMMETRIC)
         return "symmetric evaluation";
@@ -229,9 +234,6 @@ class DeviceRun : public sph::StepClock {
         fluid_->postStep(planned.dt);
         return planned.dt;
     }
-    void advanceTo(Float tEnd) {
-        while (time() < tEnd * (1 - 1e-14)) step(tEnd);
-    }
 
     IDeviceFluid<Dim>& fluid() { return *fluid_; }
 
@@ -244,16 +246,18 @@ class DeviceRun : public sph::StepClock {
         }
         const StepMaxima m = fluid_->maxima();
         limits.offer("dt_max", config_.dtMax);
+        const Float h = config_.h;
         if (m.acceleration2 > 0)
-            limits.offer("acceleration", config_.accelerationFactor *
-                                             std::sqrt(config_.h / std::sqrt(m.acceleration2)));
+            limits.offer("acceleration", sph::formulas::accelerationStep(config_.accelerationFactor,
+                                                                         h, m.acceleration2));
         limits.offer("courant",
-                     config_.cfl * config_.h / (config_.eos.c0 + std::sqrt(m.fluidSpeed2)));
+                     sph::formulas::courantStep(config_.cfl, h, config_.eos.c0, m.fluidSpeed2));
         if (config_.laminar && m.viscosity > 0)
-            limits.offer("viscous", config_.viscousFactor * config_.h * config_.h / m.viscosity);
+            limits.offer("viscous",
+                         sph::formulas::viscousStep(config_.viscousFactor, h, m.viscosity));
         if (config_.conduction && m.diffusivity > 0)
             limits.offer("diffusion",
-                         config_.diffusionFactor * config_.h * config_.h / m.diffusivity);
+                         sph::formulas::diffusionStep(config_.diffusionFactor, h, m.diffusivity));
         return limits;
     }
 

@@ -22,6 +22,15 @@
 namespace num {
 
 /// The simulation box and which of its axes are periodic.
+/// x mapped into [lo, hi) on a periodic axis (the CPU's Domain::wrap and the device's wrap).
+NUMERICS_HD_INLINE double wrapIntoPeriod(double x, double lo, double hi) {
+    const double length = hi - lo;
+    x = lo + hd::fmod(x - lo, length);
+    if (x < lo) x += length;
+    if (x >= hi) x = lo;
+    return x;
+}
+
 template <int Dim>
 struct Domain {
     Vec<double, Dim> min{}, max{};
@@ -42,11 +51,7 @@ struct Domain {
     /// Maps a position into [min, max) on periodic axes.
     Vec<double, Dim> wrap(Vec<double, Dim> x) const {
         for (int k = 0; k < Dim; ++k)
-            if (periodic[k]) {
-                x[k] = min[k] + std::fmod(x[k] - min[k], length(k));
-                if (x[k] < min[k]) x[k] += length(k);
-                if (x[k] >= max[k]) x[k] = min[k];
-            }
+            if (periodic[k]) x[k] = wrapIntoPeriod(x[k], min[k], max[k]);
         return x;
     }
 };

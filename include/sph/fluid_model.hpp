@@ -175,6 +175,13 @@ struct FluidModel {
     Vec bodyForceAt(Float t) const { return bodyForce ? bodyForce(t) : Vec{}; }
 };
 
+/// The built-in pair sums in one pass over the pairs (DerivativeHolder::fuse).
+template <int Dim>
+using BuiltInPairSums =
+    FuseDerivatives<Dim, ContinuityDensityPart<Dim>, DeltaSphPart<Dim>, PressureGradientPart<Dim>,
+                    ArtificialViscosityPart<Dim>, LaminarViscosityPart<Dim>,
+                    HeatConductionDerivative<Dim>, KernelSumPart<Dim>, ParticleShiftingPart<Dim>>;
+
 /// The fluid's equation terms, in the order described at the top of this file.
 template <int Dim>
 EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
@@ -291,11 +298,7 @@ EquationHolder<Dim> makeFluidEquations(const FluidModel<Dim>& model,
     eq += makeTerm<BoundaryHold<Dim>>();
     if (model.containParticles && boundaries)
         eq += makeTerm<ParticleContainment<Dim>>(geometry, model.movingBodies);
-    // The built-in pair sums in one pass over the pairs (DerivativeHolder::fuse).
-    eq += makeTerm<FuseDerivatives<Dim, ContinuityDensityPart<Dim>, DeltaSphPart<Dim>,
-                                   PressureGradientPart<Dim>, ArtificialViscosityPart<Dim>,
-                                   LaminarViscosityPart<Dim>, HeatConductionDerivative<Dim>,
-                                   KernelSumPart<Dim>, ParticleShiftingPart<Dim>>>();
+    eq += makeTerm<BuiltInPairSums<Dim>>();
     return eq;
 }
 

@@ -30,6 +30,7 @@ NUMERICS_HD_INLINE double sqrt(double x) { return ::sqrt(x); }
 NUMERICS_HD_INLINE double exp(double x) { return ::exp(x); }
 NUMERICS_HD_INLINE double pow(double x, double y) { return ::pow(x, y); }
 NUMERICS_HD_INLINE double floor(double x) { return ::floor(x); }
+NUMERICS_HD_INLINE double fmod(double x, double y) { return ::fmod(x, y); }
 
 /// std::min's definition: b if b < a, else a (the first argument when unordered).
 template <class T>

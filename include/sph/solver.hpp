@@ -44,6 +44,7 @@
 #include "sph/equation_term.hpp"
 #include "sph/evaluation_purity.hpp"
 #include "sph/formulas/pair_geometry.hpp"
+#include "sph/formulas/time_step.hpp"
 #include "sph/kernel_choice.hpp"
 
 namespace num::sph {
@@ -145,8 +146,9 @@ class Solver {
         const Float a2max =
             largestOf(scheduler_, Size(acc.size()), [&](Size i) { return normSqr(acc[i]); });
         if (a2max > 0)
-            limits.offer("acceleration", settings_.get<double>("acceleration_factor") *
-                                             std::sqrt(kernel_.h / std::sqrt(a2max)));
+            limits.offer("acceleration",
+                         formulas::accelerationStep(settings_.get<double>("acceleration_factor"),
+                                                    kernel_.h, a2max));
         equations_.forTerms(
             [&](const auto& term) { term.limitTimeStep(storage, settings_, limits); });
         if (decomposition_) decomposition_->combine(limits);

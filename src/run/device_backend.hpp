@@ -1,17 +1,21 @@
 // The CUDA back end in the apps (internal to numerics_io): which backend a run uses, what a
 // scene must leave out to run on it (refused before anything is allocated, with the scene key),
-// and the device run itself. A build without CUDA refuses --backend cuda here.
+// and the device engine. A build without CUDA refuses --backend cuda here.
 #pragma once
 
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "device/backend.hpp"
 #include "device/fluid_run.hpp"
 #include "io/errors.hpp"
 #include "io/scene_setup.hpp"
 #include "io/simulation.hpp"
+#include "run/engine.hpp"
 
 namespace num::io {
 
@@ -29,11 +33,43 @@ bool runsOnCuda(const Scene<Dim>& scene, const RunOptions& opt) {
     return opt.backendGiven ? opt.backend == "cuda" : scene.backend == "cuda";
 }
 
-/// Refuses what the CUDA back end does not run (yet), naming the scene key; then a build
-/// without the back end or a machine without a GPU (exit code 12).
+/// The scene key of a feature the CUDA back end does not run (yet) and what it is, or {"", ""}.
+/// Words for a user; what the device step cannot run is refused by device::unsupported, from the
+/// model itself, whether or not it is named here.
+template <int Dim>
+std::pair<std::string, std::string> keyNotOnCuda(const Scene<Dim>& scene,
+                                                 const SceneSetup<Dim>& setup) {
+    if (!scene.emitters.empty()) return {"emitters", "a scene with emitters"};
+    if (!scene.walls.empty()) return {"walls", "a wall inside the domain"};
+    if (const std::string key = firstGeneralShapeKey(scene); !key.empty())
+        return {key, "a shape other than a box or a ball"};
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) {
+            const std::string side = std::string("boundaries.") + sideName(k, hi) + ".type \"" +
+                                     scene.sides[k][hi]->type() + "\"";
+            if (scene.sides[k][hi]->letsFluidOut()) return {side, "an open side"};
+            if (setup.model.flowBoundaries && setup.geometry.hasWall(k, hi) &&
+                !setup.geometry.isSolidWall(k, hi))
+                return {side, "inlets and outlets"};
+        }
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+        if (scene.bodies[i].motion.type != sph::MotionType::FIXED)
+            return {"bodies[" + std::to_string(i) + "].motion", "moving bodies"};
+    if (scene.integrator != "leapfrog")
+        return {"time.integrator \"" + scene.integrator + "\"", "this integrator"};
+    if (sph::evaluationFromName(scene.evaluation) == sph::Evaluation::SYMMETRIC)
+        return {"particles.evaluation \"symmetric\"", "the symmetric evaluation"};
+    if (setup.model.density == sph::DensityMode::SUMMATION)
+        return {"physics.density \"" + scene.physics.density + "\" (density by summation here)",
+                "density by summation"};
+    return {"", ""};
+}
+
+/// Refuses what the CUDA back end does not run (yet), naming the scene key or the equation term
+/// (a plugin's); then a build without the back end or a machine without a GPU (exit code 12).
 template <int Dim>
 void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const RunOptions& opt,
-                  bool plugins, int processes) {
+                  int processes) {
     const std::string chosen =
         opt.backendGiven ? "--backend cuda" : scene.file + ": numerics.backend \"cuda\"";
     if (processes > 1)
@@ -44,24 +80,7 @@ void checkCudaRun(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, const R
         throw AppError(ExitCode::SCENE, chosen + " does not support " + key + " yet: " + what +
                                             " runs on the CPU back end only (--backend cpu)");
     };
-    if (plugins) refuse("plugins", "a plugin's equation terms");
-    if (!scene.emitters.empty()) refuse("emitters", "a scene with emitters");
-    if (!scene.walls.empty()) refuse("walls", "a wall inside the domain");
-    if (const std::string key = firstGeneralShapeKey(scene); !key.empty())
-        refuse(key, "a shape other than a box or a ball");
-    for (int k = 0; k < Dim; ++k)
-        for (int hi = 0; hi < 2; ++hi)
-            if (scene.sides[k][hi]->letsFluidOut())
-                refuse(std::string("boundaries.") + sideName(k, hi) + ".type \"" +
-                           scene.sides[k][hi]->type() + "\"",
-                       "an open side");
-    if (scene.integrator != "leapfrog")
-        refuse("time.integrator \"" + scene.integrator + "\"", "this integrator");
-    if (sph::evaluationFromName(scene.evaluation) == sph::Evaluation::SYMMETRIC)
-        refuse("particles.evaluation \"symmetric\"", "the symmetric evaluation");
-    if (setup.model.density == sph::DensityMode::SUMMATION)
-        refuse("physics.density \"" + scene.physics.density + "\" (density by summation here)",
-               "density by summation");
+    if (const auto [key, what] = keyNotOnCuda(scene, setup); !key.empty()) refuse(key, what);
     if (const std::string what = device::unsupported(setup.model, setup.geometry, setup.settings);
         !what.empty())
         refuse("this scene", what);
@@ -112,5 +131,57 @@ inline std::string cudaDeviceText() {
     return "";
 #endif
 }
+
+/// The device engine: the steps on the GPU (or, for tests, on the host execution), the
+/// particles copied to the host's storage only when asked (outputs, probes, checkpoints, the
+/// end, a front end) and sent up again when the host changed them. It keeps no heat books of
+/// walls and counts no neighbours.
+template <int Dim>
+class DeviceEngine final : public IEngine<Dim> {
+  public:
+    DeviceEngine(sph::Storage<Dim>& storage, const SceneSetup<Dim>& setup, double t0)
+        : storage_(storage), run_(makeCudaRun(setup, t0)) {}
+
+    const sph::StepClock& clock() const override { return *run_; }
+    void prime() override {
+        run_->upload(storage_, false);
+        run_->prime();
+        run_->download(storage_);
+    }
+    void resume(double t, sph::Size steps) override {
+        run_->setTime(t, steps);
+        run_->upload(storage_, true);
+    }
+    double allowedStep() override { return run_->timeStepLimits().dt(); }
+    double step(double target) override {
+        hostCurrent_ = false;
+        return run_->step(target);
+    }
+    void copyToHost() override {
+        if (!hostCurrent_) run_->download(storage_);
+        hostCurrent_ = true;
+    }
+    bool hostCurrent() const override { return hostCurrent_; }
+    void takeWrittenParticles() override { run_->upload(storage_, false); }
+    void takeNewParticleSet() override { run_->upload(storage_, false); }
+    void setDecomposition(sph::IDecomposition<Dim>*) override {
+        throw std::logic_error("the CUDA back end runs on one process");
+    }
+    void setAbandonCheck(std::function<bool()>) override {}  // a step on the GPU runs to its end
+    sph::ThermalBoundary<Dim>* wallHeat() const override { return nullptr; }
+    double meanNeighbours() const override { return 0; }
+    std::string backend() const override { return "cuda"; }
+    void describe(nlohmann::json& summary, std::size_t particles) const override {
+        summary["device"] = cudaDeviceText();
+        summary["device_bytes"] = run_->fluid().bytes();
+        summary["device_bytes_per_particle"] =
+            double(run_->fluid().bytes()) / double(std::max<std::size_t>(1, particles));
+    }
+
+  private:
+    sph::Storage<Dim>& storage_;
+    std::unique_ptr<device::DeviceRun<Dim>> run_;
+    bool hostCurrent_ = true;
+};
 
 }  // namespace num::io

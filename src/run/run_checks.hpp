@@ -29,7 +29,7 @@ template <int Dim>
 std::size_t emitParticles(RunParts<Dim>& p, double t) {
     const sph::RunKernel<Dim> kernel(p.setup->settings);
     auto occupied = [&](const std::vector<sph::Vector<Dim>>& points) {
-        return occupiedPoints(p.storage, p.solver->domain(), kernel, points, p.scene.spacing,
+        return occupiedPoints(p.storage, p.setup->geometry.domain, kernel, points, p.scene.spacing,
                               p.comm);
     };
     const std::int64_t first = nextParticleId(p);
@@ -65,7 +65,7 @@ class HealthObserver final : public IStepObserver<Dim> {
     }
     void afterStep(Simulation<Dim>& sim) override {
         RunParts<Dim>& p = sim.parts();
-        if (!p.storageCurrent) return;
+        if (!p.engine->hostCurrent()) return;
         const std::string criterion = p.stepClock().limitingCriterion();
         agreed(p.comm, [&] {
             checkHealth(*p.scheduler, p.storage, p.scene, sim.time(), sim.steps(), lastDt(p),
@@ -88,19 +88,28 @@ class HealthObserver final : public IStepObserver<Dim> {
 };
 
 /// Open sides remove the fluid that leaves the domain; inlets and outlets exchange particles
-/// with the fluid; emitters add particles; either way the engine learns that the particles
-/// changed.
+/// with the fluid; emitters add particles; either way the engine takes the new set.
 template <int Dim>
 class ParticleFlowObserver final : public IStepObserver<Dim> {
   public:
+    explicit ParticleFlowObserver(const RunParts<Dim>& p)
+        : active_(!p.scene.emitters.empty() || bool(p.setup->model.flowBoundaries)) {
+        for (int k = 0; k < Dim; ++k)
+            for (int hi = 0; hi < 2; ++hi)
+                active_ = active_ || p.scene.sides[k][hi]->letsFluidOut();
+    }
+    bool needsParticles(const Simulation<Dim>&) const override { return active_; }
     void afterStep(Simulation<Dim>& sim) override {
+        if (!active_) return;
         RunParts<Dim>& p = sim.parts();
+        bool changed = false;
         if (p.comm.any(removeOutflow(p.storage, p.scene) > 0)) {
             p.state.removed += std::uint64_t(p.comm.sum(p.owned - p.countOwned()));
-            p.run->particlesChanged();
+            changed = true;
         }
-        if (exchangeFlow(p, sim.time())) p.run->particlesChanged();
-        if (emitParticles(p, sim.time()) > 0) p.run->particlesChanged();
+        changed = exchangeFlow(p, sim.time()) || changed;
+        changed = emitParticles(p, sim.time()) > 0 || changed;
+        if (changed) p.engine->takeNewParticleSet();
         const auto& warnings = p.emitters->warnings();
         for (; printed_ < warnings.size(); ++printed_) p.warn(warnings[printed_]);
     }
@@ -110,6 +119,7 @@ class ParticleFlowObserver final : public IStepObserver<Dim> {
     }
 
   private:
+    bool active_;              ///< whether the scene has emitters, open sides, inlets or outlets
     std::size_t printed_ = 0;  ///< of the emitters' warnings
 };
 

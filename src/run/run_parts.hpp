@@ -11,7 +11,6 @@
 #include <optional>
 #include <string>
 
-#include "device/fluid_run.hpp"
 #include "io/emitters.hpp"
 #include "io/outputs.hpp"
 #include "io/progress.hpp"
@@ -20,6 +19,7 @@
 #include "plugin/plugins.hpp"
 #include "run/agreed_errors.hpp"
 #include "run/checkpoint_state.hpp"
+#include "run/engine.hpp"
 #include "run/stop_signals.hpp"
 #include "run/written_particles.hpp"
 #include "sph/timestepping.hpp"
@@ -53,14 +53,11 @@ struct RunParts {
 
     RunState<Dim> state;  ///< what a checkpoint keeps besides the particles
     sph::Storage<Dim> storage;
+    /// The CPU's threads: the CPU engine's steps, the health checks on either engine.
     std::unique_ptr<sph::IScheduler> scheduler;
-    std::unique_ptr<sph::Solver<Dim>> solver;
-    std::unique_ptr<sph::ITimeStepping<Dim>> integrator;
-    std::unique_ptr<sph::Run<Dim>> run;
-    /// On the CUDA back end the steps run on the GPU; `run` then keeps the time and the step
-    /// count, and `storage` is brought up to date when an observer needs it.
-    std::unique_ptr<device::DeviceRun<Dim>> gpu;
-    bool storageCurrent = true;
+    /// What steps `storage`'s particles (engine.hpp); on the CUDA back end `storage` is brought
+    /// up to date when an observer or a front end needs it.
+    std::unique_ptr<IEngine<Dim>> engine;
     bool hostChanged = false;       ///< a front end may have changed the particles since the step
     WrittenParticles<Dim> written;  ///< what they were when handed out, to check the writes
     /// Each process keeps its share of the particles and a halo; one process keeps them all.
@@ -75,10 +72,8 @@ struct RunParts {
     double lastOutput = -1;        ///< the time of the last output written; -1: none
     bool stopAsked = false;        ///< Simulation::requestStop
 
-    /// The clock of the last step: the GPU's run on the CUDA back end, else the CPU's.
-    const sph::StepClock& stepClock() const {
-        return gpu ? static_cast<const sph::StepClock&>(*gpu) : *run;
-    }
+    /// The clock of the last step.
+    const sph::StepClock& stepClock() const { return engine->clock(); }
 
     RunParts(const SceneDocument& document, const RunOptions& opt)
         : signalsOnExit(opt.handleSignals),

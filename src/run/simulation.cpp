@@ -4,6 +4,7 @@
 
 #include <thread>
 
+#include "run/cpu_engine.hpp"
 #include "run/device_backend.hpp"
 #include "run/run_checks.hpp"
 #include "run/run_outputs.hpp"
@@ -11,6 +12,7 @@
 #include "scene/initial_state.hpp"
 #include "scene/run_limits.hpp"
 #include "sph/evaluation_mode.hpp"
+#include "sph/setup/set_up_interrupt.hpp"
 
 namespace num::io {
 
@@ -55,7 +57,7 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
     p.plugins->failure->keepUntilStepEnd = p.comm.size() > 1;
     p.setup.emplace(makeSceneSetup(p.scene, p.threads, p.plugins->terms));
     SceneSetup<Dim>& setup = *p.setup;
-    if (p.onCuda) checkCudaRun(p.scene, setup, p.options, !p.plugins->empty(), p.comm.size());
+    if (p.onCuda) checkCudaRun(p.scene, setup, p.options, p.comm.size());
     checkRunLimits(p.scene, setup, p.options.checkpointEvery);
     sph::Storage<Dim> initial = makeInitialStorage(p.scene, setup);
     checkInitialState(p.scene, setup, initial);
@@ -118,10 +120,13 @@ void restoreBodiesAndFlow(RunParts<Dim>& p, const std::string& file) {
                 [&](const std::vector<double>& v) { flow->books.restore(v); });
 }
 
-/// The walls' heat books at the checkpoint's time (once the engine is made).
+/// The walls' heat books at the checkpoint's time (once the engine is made). An engine that
+/// keeps none (the device) ignores them; a checkpoint it wrote holds none.
 template <int Dim>
 void restoreWallHeat(RunParts<Dim>& p, const std::string& file) {
-    auto* walls = p.solver->equations().template find<sph::ThermalBoundary<Dim>>();
+    auto* walls = p.engine->wallHeat();
+    const bool conduction = p.setup->model.heat.conduction;
+    if (conduction && (!walls || p.state.wallHeat.empty())) return;
     restorePart(walls != nullptr, p.state.wallHeat, "heat books of walls", file,
                 [&](const std::vector<double>& v) { walls->restoreBooks(v); });
 }
@@ -149,7 +154,7 @@ void readRestart(RunParts<Dim>& p, const sph::Storage<Dim>& initial) {
                            " s (raise it with --end-time)");
 }
 
-/// The solver, integrator and run that step the particles (and the GPU's, on CUDA).
+/// The engine that steps the particles: the CPU's or the GPU's (engine.hpp).
 template <int Dim>
 void makeEngine(RunParts<Dim>& p) {
     const SceneSetup<Dim>& setup = *p.setup;
@@ -158,14 +163,13 @@ void makeEngine(RunParts<Dim>& p) {
     p.emitters->setEmitted(p.state.emitted);
     p.emitters->setBlocked(p.state.emitterBlocked);
     p.scheduler = sph::makeScheduler(p.cpuBackend, Size(p.threads));
-    p.solver = std::make_unique<sph::Solver<Dim>>(
-        *p.scheduler, setup.settings, sph::makeFluidEquations(setup.model, setup.geometry),
-        setup.geometry.domain);
-    p.integrator = sph::makeIntegrator<Dim>(p.scene.integrator);
-    p.run = std::make_unique<sph::Run<Dim>>(p.storage, *p.solver, *p.integrator, p.state.time);
-    if (p.onCuda) p.gpu = makeCudaRun(setup, p.state.time);
+    if (p.onCuda)
+        p.engine = std::make_unique<DeviceEngine<Dim>>(p.storage, setup, p.state.time);
+    else
+        p.engine = std::make_unique<CpuEngine<Dim>>(p.storage, *p.scheduler, setup,
+                                                    p.scene.integrator, p.cpuBackend, p.state.time);
     p.decomposition = std::make_unique<parallel::DomainDecomposition<Dim>>(
-        p.comm, p.solver->domain(), p.solver->kernel().supportRadius());
+        p.comm, setup.geometry.domain, sph::RunKernel<Dim>(setup.settings).supportRadius());
 }
 
 /// Continues from the checkpoint: it holds the derivatives at its time, and terms keep no time
@@ -175,10 +179,8 @@ template <int Dim>
 void resumeRun(RunParts<Dim>& p) {
     restoreWallHeat(p, *p.options.restart);
     p.decomposition->distribute(p.storage);
-    if (p.comm.size() > 1) p.solver->setDecomposition(p.decomposition.get());
-    p.run->setTime(p.state.time, Size(p.state.steps));
-    p.run->markPrimed(true);
-    if (p.gpu) p.gpu->setTime(p.state.time, Size(p.state.steps)), p.gpu->upload(p.storage, true);
+    if (p.comm.size() > 1) p.engine->setDecomposition(p.decomposition.get());
+    p.engine->resume(p.state.time, Size(p.state.steps));
     onRoot(p.comm, [&] { p.outputs->resume(p.state.time, p.state.series); });
 }
 
@@ -192,14 +194,8 @@ void startRun(RunParts<Dim>& p) {
     }
     emitParticles(p, 0.0);
     p.decomposition->distribute(p.storage);
-    if (p.comm.size() > 1) p.solver->setDecomposition(p.decomposition.get());
-    if (p.gpu) {
-        p.gpu->upload(p.storage, false);
-        p.gpu->prime();
-        p.gpu->download(p.storage);
-    } else {
-        p.run->prime();
-    }
+    if (p.comm.size() > 1) p.engine->setDecomposition(p.decomposition.get());
+    p.engine->prime();
     p.everyParticle(p.storage, [&](const sph::Storage<Dim>& all) {
         if (p.root()) p.state.start = conservationVector(all, p.setup->gravity(1e300));
     });
@@ -211,7 +207,7 @@ template <int Dim>
 void addRunObservers(Simulation<Dim>& sim) {
     RunParts<Dim>& p = sim.parts();
     sim.addObserver(std::make_unique<HealthObserver<Dim>>(p));
-    sim.addObserver(std::make_unique<ParticleFlowObserver<Dim>>());
+    sim.addObserver(std::make_unique<ParticleFlowObserver<Dim>>(p));
     sim.addObserver(std::make_unique<ProgressObserver<Dim>>());
     sim.addObserver(std::make_unique<TestSignalObserver<Dim>>(stop::testSignal()));
     auto output = std::make_unique<OutputObserver<Dim>>(p);
@@ -241,6 +237,7 @@ Simulation<Dim>::Simulation(const SceneDocument& doc, const RunOptions& options)
     if (options.handleSignals) stop::duringSetUp(options.program);
     readRunScene(p);
     sph::Storage<Dim> initial = setUpParticles(p);
+    sph::pollSetUpInterrupt();
     if (options.restart)
         readRestart(p, initial);
     else
@@ -248,21 +245,23 @@ Simulation<Dim>::Simulation(const SceneDocument& doc, const RunOptions& options)
     // Not needed any more: a copy of every particle for the whole run (a third of its memory).
     initial = sph::Storage<Dim>();
     makeEngine(p);
+    sph::pollSetUpInterrupt();
     if (options.restart)
         resumeRun(p);
     else
         startRun(p);
-    p.startSteps = p.run->steps();
+    sph::pollSetUpInterrupt();
+    p.startSteps = steps();
     // From here a signal asks for a stop (stop_signals.hpp): after the step in progress, or at
     // once when that step is still running half a second later. Several processes finish the
     // step in progress together: one alone cannot abandon it.
     if (options.handleSignals) stop::duringRun();
-    if (p.comm.size() == 1 && !p.gpu)
-        p.solver->setAbandonCheck([&p] { return stop::abandonStep(p.run->steps() + 1); });
+    if (p.comm.size() == 1)
+        p.engine->setAbandonCheck([&p] { return stop::abandonStep(p.stepClock().steps() + 1); });
     p.progress.emplace(options.quiet || !options.progressLine || !p.root() ? Progress::Mode::QUIET
                        : ::isatty(fileno(stdout)) ? Progress::Mode::TERMINAL
                                                   : Progress::Mode::PLAIN,
-                       p.run->time(), p.scene.endTime);
+                       time(), p.scene.endTime);
     addRunObservers(*this);
 }
 
@@ -271,7 +270,7 @@ Simulation<Dim>::~Simulation() = default;
 
 template <int Dim>
 double Simulation<Dim>::time() const {
-    return parts_->run->time();
+    return parts_->stepClock().time();
 }
 template <int Dim>
 double Simulation<Dim>::endTime() const {
@@ -279,7 +278,7 @@ double Simulation<Dim>::endTime() const {
 }
 template <int Dim>
 std::uint64_t Simulation<Dim>::steps() const {
-    return parts_->run->steps();
+    return parts_->stepClock().steps();
 }
 
 template <int Dim>
@@ -314,8 +313,7 @@ void Simulation<Dim>::addObserver(std::unique_ptr<IStepObserver<Dim>> observer) 
 
 template <int Dim>
 void Simulation<Dim>::copyParticlesToHost() {
-    if (!parts_->storageCurrent) parts_->gpu->download(parts_->storage);
-    parts_->storageCurrent = true;
+    parts_->engine->copyToHost();
 }
 
 template <int Dim>
@@ -337,9 +335,9 @@ sph::Storage<Dim>& Simulation<Dim>::particlesToChange() {
 template <int Dim>
 void Simulation<Dim>::acceptChangedParticles() {
     RunParts<Dim>& p = *parts_;
-    p.written.check(p.storage, p.fieldNames);
+    p.written.check(p.storage, p.fieldNames, p.setup->geometry.domain);
     p.hostChanged = false;
-    if (p.gpu) p.gpu->upload(p.storage, false);
+    p.engine->takeWrittenParticles();
 }
 
 template <int Dim>
@@ -361,19 +359,11 @@ double Simulation<Dim>::stepTowards(double limit) {
     for (const auto& o : observers_) landing = std::min(landing, o->landingTime());
     // A limit on a landing time (to round-off) steps to that time exactly, as a longer run does.
     const double target = reached(limit, landing) ? landing : limit;
-    const bool endStep =
-        target < landing &&
-        time() + (p.gpu ? p.gpu->timeStepLimits().dt() : p.solver->timeStepLimits(p.storage).dt()) >
-            target;
+    const bool endStep = target < landing && time() + p.engine->allowedStep() > target;
     for (auto& o : observers_) o->beforeStep(*this, endStep);
     double dt = 0;
     try {
-        if (p.gpu) {
-            dt = p.gpu->step(target);
-            p.run->setTime(p.gpu->time(), p.gpu->steps());
-        } else {
-            dt = p.run->step(target);
-        }
+        dt = p.engine->step(target);
     } catch (const AppError& e) {
         // An error this process met alone, mid-step.
         if (p.comm.size() > 1) throw LoneFailure(e);
@@ -382,7 +372,6 @@ double Simulation<Dim>::stepTowards(double limit) {
     // A plugin's term that failed on any process, reported once (plugin_term.hpp).
     if (p.comm.size() > 1 && !p.plugins->empty())
         agreed(p.comm, [&] { p.plugins->failure->rethrow(); });
-    p.storageCurrent = !p.gpu;
     p.owned = p.countOwned();
     p.particles = p.comm.sum(p.owned);
     p.particleSteps += double(p.particles);

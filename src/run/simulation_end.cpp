@@ -1,7 +1,6 @@
 // The end of a Simulation's run: summary.json (with what each observer adds), the report on
 // the terminal and the exit code.
 #include "io/file.hpp"
-#include "run/device_backend.hpp"
 #include "run/run_parts.hpp"
 #include "run/run_report.hpp"
 #include "run/run_state.hpp"
@@ -28,26 +27,6 @@ nlohmann::json decompositionJson(const RunParts<Dim>& p, std::uint64_t runSteps)
          "at the last redistribution; halo figures summed over the processes, at the end"}};
 }
 
-/// What the engine tells of the run: the device, the neighbour lists, the passes.
-template <int Dim>
-void addEngineFigures(const RunParts<Dim>& p, nlohmann::json& summary) {
-    summary["processes"] = p.comm.size();
-    if (p.gpu) {
-        summary["device"] = cudaDeviceText();
-        summary["device_bytes"] = p.gpu->fluid().bytes();
-        summary["device_bytes_per_particle"] =
-            double(p.gpu->fluid().bytes()) / double(std::max<std::size_t>(1, p.storage.size()));
-    }
-    summary["neighbour_list_builds"] = p.solver->neighbours().builds();
-    // The passes of an evaluation, each with its terms in the order they run.
-    const std::vector<std::string> termNames = p.solver->equations().names();
-    for (const auto& pass : p.solver->schedule().passes) {
-        nlohmann::json names = nlohmann::json::array();
-        for (std::size_t t : pass.terms) names.push_back(termNames[t]);
-        summary["passes"].push_back(names);
-    }
-}
-
 /// What crossed the inlets and outlets, and the heat the walls and bodies gave (with heat, on
 /// one process), in summary.json's conservation books: mass end = start + in - out to round-off,
 /// thermal energy end = start + in - out + walls (docs/scenes.md, "Outputs").
@@ -59,7 +38,7 @@ void addFlowBooks(const RunParts<Dim>& p, nlohmann::json& summary) {
     c["mass"]["in"] = books.massIn, c["mass"]["out"] = books.massOut;
     c["thermal_energy"]["in"] = books.heatIn, c["thermal_energy"]["out"] = books.heatOut;
     // The walls' books are each process's own sums: given on one process only.
-    const auto* walls = p.solver->equations().template find<sph::ThermalBoundary<Dim>>();
+    const auto* walls = p.engine->wallHeat();
     if (walls && p.comm.size() == 1)
         c["thermal_energy"]["walls"] = walls->heatFromFixed() + walls->heatFromSources();
 }
@@ -81,13 +60,13 @@ int Simulation<Dim>::finishRun(RunEnd end) {
     p.everyParticle(p.storage, [&](const sph::Storage<Dim>& all) {
         onRoot(p.comm, [&] {
             files = p.outputs->finish(end.status == "completed");
-            end.summary =
-                summaryJson(p.scene, all, *p.setup, p.state, time(), steps(), runSteps, wall,
-                            p.particleSteps, p.threads, p.gpu ? "cuda" : p.cpuBackend, end.status,
-                            end.message, p.solver->meanNeighbours());
+            end.summary = summaryJson(p.scene, all, *p.setup, p.state, time(), steps(), runSteps,
+                                      wall, p.particleSteps, p.threads, p.engine->backend(),
+                                      end.status, end.message, p.engine->meanNeighbours());
         });
     });
-    addEngineFigures(p, end.summary);
+    end.summary["processes"] = p.comm.size();
+    p.engine->describe(end.summary, p.storage.size());
     if (p.root()) addFlowBooks(p, end.summary);
     end.summary["decomposition"] = decomposition;
     end.warnings = p.scene.warnings;

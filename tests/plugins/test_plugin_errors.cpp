@@ -58,6 +58,14 @@ TEST(PluginErrors, UnknownTerm) {
                 "the string \"sprung\" (did you mean \"spring\"?)");
 }
 
+TEST(PluginErrors, CudaBackendRefusesAPluginTermByName) {
+    json s = sceneWith(SPRING_PLUGIN, kSpring);
+    s["numerics"] = {{"backend", "cuda"}};
+    expectError("cuda", s, kScene,
+                "numerics.backend \"cuda\" does not support this scene yet: term \"spring\" "
+                "(plugins.0.terms.0, libspring_plugin.so) runs on the CPU back end only");
+}
+
 TEST(PluginErrors, BadParameters) {
     json terms = kSpring;
     terms.push_back({{"term", "spring"}, {"stiffness", -3}});

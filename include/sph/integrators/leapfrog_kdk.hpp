@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "sph/formulas/leapfrog.hpp"
 #include "sph/integrator.hpp"
 
 namespace num::sph {
@@ -26,10 +27,8 @@ class LeapfrogKDK final : public ITimeStepping<Dim> {
             const Size n = Size(b.value.size());
             if (o == OrderEnum::SECOND) {
                 sch.parallelFor(n, grain, [&](Size i0, Size i1) {
-                    for (Size i = i0; i < i1; ++i) {
-                        b.dt[i] += b.d2t[i] * half;
-                        b.value[i] += b.dt[i] * dt;
-                    }
+                    for (Size i = i0; i < i1; ++i)
+                        formulas::kickDrift(b.value[i], b.dt[i], b.d2t[i], half, dt);
                 });
             } else {
                 using V = std::decay_t<decltype(b.dt)>;
@@ -38,10 +37,8 @@ class LeapfrogKDK final : public ITimeStepping<Dim> {
                 V& old = std::get<V>(saved_[k++]);
                 old.resize(n);
                 sch.parallelFor(n, grain, [&](Size i0, Size i1) {
-                    for (Size i = i0; i < i1; ++i) {
-                        old[i] = b.dt[i];
-                        b.value[i] += b.dt[i] * dt;
-                    }
+                    for (Size i = i0; i < i1; ++i)
+                        formulas::heunPredict(b.value[i], old[i], b.dt[i], dt);
                 });
             }
         });
@@ -51,12 +48,13 @@ class LeapfrogKDK final : public ITimeStepping<Dim> {
             const Size n = Size(b.value.size());
             if (o == OrderEnum::SECOND) {
                 sch.parallelFor(n, grain, [&](Size i0, Size i1) {
-                    for (Size i = i0; i < i1; ++i) b.dt[i] += b.d2t[i] * half;
+                    for (Size i = i0; i < i1; ++i) formulas::kick(b.dt[i], b.d2t[i], half);
                 });
             } else {
                 const auto& old = std::get<std::decay_t<decltype(b.dt)>>(saved_[k++]);
                 sch.parallelFor(n, grain, [&](Size i0, Size i1) {
-                    for (Size i = i0; i < i1; ++i) b.value[i] += (b.dt[i] - old[i]) * half;
+                    for (Size i = i0; i < i1; ++i)
+                        formulas::heunCorrect(b.value[i], b.dt[i], old[i], half);
                 });
             }
         });

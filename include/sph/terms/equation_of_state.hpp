@@ -14,6 +14,7 @@
 
 #include "sph/equation_term.hpp"
 #include "sph/formulas/equation_of_state.hpp"
+#include "sph/formulas/time_step.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
 namespace num::sph {
@@ -60,7 +61,7 @@ class EquationOfStateTerm : public IEquationTerm<Dim> {
             return isFluid(kind[i]) ? normSqr(v[i]) : Float(0);
         });
         const Float h = settings.get<double>("smoothing_length");
-        limits.offer("courant", settings.get<double>("cfl") * h / (eos_.c0 + std::sqrt(v2)));
+        limits.offer("courant", formulas::courantStep(settings.get<double>("cfl"), h, eos_.c0, v2));
     }
 
   private:

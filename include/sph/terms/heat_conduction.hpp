@@ -32,6 +32,7 @@
 #include "sph/boundary/thermal_condition.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/formulas/heat_pairs.hpp"
+#include "sph/formulas/time_step.hpp"
 
 namespace num::sph {
 
@@ -191,7 +192,8 @@ class HeatConduction : public IEquationTerm<Dim> {
                     std::max(alphaMax, table[m].conductivity / (rhoMin[m] * table[m].heatCapacity));
         const Float h = settings.get<double>("smoothing_length");
         if (alphaMax > 0)
-            limits.offer("diffusion", settings.get<double>("diffusion_factor") * h * h / alphaMax);
+            limits.offer("diffusion", formulas::diffusionStep(
+                                          settings.get<double>("diffusion_factor"), h, alphaMax));
     }
 };
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "sph/formulas/fluid_pairs.hpp"
+#include "sph/formulas/time_step.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 #include "sph/terms/pair_inputs.hpp"
 
@@ -122,7 +123,8 @@ class LaminarViscosity : public IEquationTerm<Dim> {
         const Float numax = largestOf(limits.scheduler(), s.size(), [&](Size i) { return nu[i]; });
         const Float h = settings.get<double>("smoothing_length");
         if (numax > 0)
-            limits.offer("viscous", settings.get<double>("viscous_factor") * h * h / numax);
+            limits.offer("viscous",
+                         formulas::viscousStep(settings.get<double>("viscous_factor"), h, numax));
     }
 
   private:

@@ -1,0 +1,76 @@
+// The device refuses by construction: a model runs on the device step only if every term of its
+// CPU equations is one the device implements (device/device_terms.hpp); any other term is
+// refused by its name, without a list of what the device lacks.
+#include <gtest/gtest.h>
+
+#include "device/fluid_run.hpp"
+
+namespace {
+
+using namespace num;
+using namespace num::sph;
+
+/// A 2D tank of water with gravity: the device runs all of it.
+FluidGeometry<2> tank() {
+    FluidGeometry<2> g;
+    g.spacing = 0.05;
+    g.domain.min = {{0, 0}}, g.domain.max = {{1, 1}};
+    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box({{0, 0}}, {{0.5, 0.5}})));
+    return g;
+}
+
+FluidModel<2> water() {
+    FluidModel<2> m;
+    m.bodyForce = constantForce(Vector<2>{{0, -9.81}});
+    m.maxVelocity = 3;
+    m.viscosity = 1e-6;
+    m.heat.conduction = true;
+    return m;
+}
+
+/// A drag a user adds to the CPU engine: the device has no kernel for it.
+class Drag : public IEquationTerm<2> {
+  public:
+    void setDerivatives(DerivativeHolder<2>&, const RunSettings&) override {}
+    void initialize(IScheduler&, Storage<2>&, Float) override {}
+    void finalize(IScheduler&, Storage<2>&, Float) override {}
+    void create(Storage<2>&, IMaterial&) const override {}
+    std::string name() const override { return "drag"; }
+};
+
+/// A built-in term changed by a subclass: not the term the device implements.
+class SofterPressure : public PressureGradient<2> {};
+
+std::string refusal(const FluidModel<2>& model, const FluidGeometry<2>& geometry = tank()) {
+    return device::unsupported(model, geometry, RunSettings());
+}
+
+TEST(DeviceRefusal, RunsTheDefaultFluidWithHeat) { EXPECT_EQ(refusal(water()), ""); }
+
+TEST(DeviceRefusal, RefusesATermAddedOnTheCpuByItsName) {
+    FluidModel<2> m = water();
+    m.extraTerms += makeTerm<Drag>();
+    EXPECT_EQ(refusal(m), "the equation term \"drag\"");
+}
+
+TEST(DeviceRefusal, RefusesASubclassOfABuiltInTerm) {
+    FluidModel<2> m = water();
+    m.extraTerms += makeTerm<SofterPressure>();
+    EXPECT_NE(refusal(m).find("SofterPressure"), std::string::npos) << refusal(m);
+}
+
+TEST(DeviceRefusal, RefusesSummationDensityByItsTerm) {
+    FluidModel<2> m = water();
+    m.density = DensityMode::SUMMATION;
+    EXPECT_NE(refusal(m).find("SummationDensity"), std::string::npos) << refusal(m);
+}
+
+TEST(DeviceRefusal, RefusesGeometryItDoesNotRead) {
+    FluidGeometry<2> g = tank();
+    InteriorWall<2> wall;
+    wall.shape = Shape<2>::box({{0.7, 0}}, {{0.8, 0.2}});
+    g.interiorWalls.push_back(wall);
+    EXPECT_EQ(refusal(water(), g), "walls inside the domain");
+}
+
+}  // namespace

@@ -152,9 +152,20 @@ bool writeAll(int fd, const void* data, std::size_t n) {
     return true;
 }
 
+// AddressSanitizer and ThreadSanitizer reserve terabytes of address space for their shadow
+// memory, which an address-space limit would refuse them. GCC says they are on with
+// __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__; clang before 15 only with __has_feature.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define NUMERICS_SANITIZER_SHADOW 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define NUMERICS_SANITIZER_SHADOW 1
+#endif
+#endif
+
 /// The child: reads the mesh and sends 'M', the counts and the arrays, or 'E' and the message.
 [[noreturn]] void childReads(const std::string& path, int fd) {
-#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#ifndef NUMERICS_SANITIZER_SHADOW
     const rlim_t memory = rlim_t(kMeshReaderMemory);
     const rlimit limit{memory, memory};
     ::setrlimit(RLIMIT_AS, &limit);

@@ -170,6 +170,10 @@ bool writeAll(int fd, const void* data, std::size_t n) {
     const rlimit limit{memory, memory};
     ::setrlimit(RLIMIT_AS, &limit);
 #endif
+    // A CPU-time limit of its own: a child whose parent was killed (no one to end it at the
+    // deadline) must not spin on a file forever.
+    const rlimit cpu{rlim_t(kMeshReaderSeconds + 1), rlim_t(kMeshReaderSeconds + 2)};
+    ::setrlimit(RLIMIT_CPU, &cpu);
     bool ok = false;
     try {
         const TriangleMesh mesh = readWithAssimp(path);

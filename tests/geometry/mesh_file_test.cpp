@@ -120,6 +120,11 @@ TEST(MeshFile, BadPlyHeadersAreRefused) {
                          "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad "
                          "x\nend_header\n1\n"),
                    "of unknown type 'quad'");
+    // A first line other than "ply" that assimp still takes for PLY (it hung on the first two).
+    for (const char* first : {"plyent ply", "ply0", "PLY"})
+        EXPECT_REFUSED(
+            write("first_line.ply", first + asciiPly(kTetraVertices, kTetraFaces).substr(3)),
+            "a PLY file whose first line is not 'ply'");
 }
 
 TEST(MeshFile, WhatIsNotARegularFileIsRefused) {

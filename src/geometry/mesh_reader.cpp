@@ -103,8 +103,9 @@ void weldCorners(TriangleMesh& mesh) {
     mesh = std::move(out);
 }
 
-/// Every triangle of the file, read by assimp in this process.
-TriangleMesh readWithAssimp(const std::string& path) {
+}  // namespace
+
+TriangleMesh detail::readWithAssimp(const std::string& path) {
     Assimp::Importer importer;
     // Node transformations baked into the vertices; polygons split into triangles.
     const aiScene* scene =
@@ -139,6 +140,8 @@ TriangleMesh readWithAssimp(const std::string& path) {
                             ": the file holds no triangles: give a surface mesh of triangles");
     return mesh;
 }
+
+namespace {
 
 /// Writes all of `n` bytes (the child's side of the pipe).
 bool writeAll(int fd, const void* data, std::size_t n) {
@@ -176,7 +179,7 @@ bool writeAll(int fd, const void* data, std::size_t n) {
     ::setrlimit(RLIMIT_CPU, &cpu);
     bool ok = false;
     try {
-        const TriangleMesh mesh = readWithAssimp(path);
+        const TriangleMesh mesh = detail::readWithAssimp(path);
         const std::uint64_t counts[2] = {mesh.vertices.size(), mesh.triangles.size()};
         ok =
             writeAll(fd, "M", 1) && writeAll(fd, counts, sizeof counts) &&
@@ -196,11 +199,11 @@ bool writeAll(int fd, const void* data, std::size_t n) {
 TriangleMesh readMesh(const std::string& path) {
     checkMeshFile(path);
     int fds[2];
-    if (::pipe(fds) != 0) return readWithAssimp(path);  // no pipe: read here, checked
+    if (::pipe(fds) != 0) return detail::readWithAssimp(path);  // no pipe: read here, checked
     const pid_t child = ::fork();
     if (child < 0) {
         ::close(fds[0]), ::close(fds[1]);
-        return readWithAssimp(path);
+        return detail::readWithAssimp(path);
     }
     if (child == 0) {
         ::close(fds[0]);

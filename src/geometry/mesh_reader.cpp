@@ -122,6 +122,13 @@ TriangleMesh detail::readWithAssimp(const std::string& path) {
             if (face.mNumIndices != 3) continue;  // points and lines of the file
             std::array<int, 3> t;
             for (int c = 0; c < 3; ++c) {
+                // assimp can hand over a face naming corners past its vertices (a fuzzed PLY file)
+                if (face.mIndices[c] >= part.mNumVertices)
+                    throw GeometryError(path + ": not a readable mesh (triangle " +
+                                        std::to_string(mesh.triangles.size()) +
+                                        " names the vertex " + std::to_string(face.mIndices[c]) +
+                                        " of " + std::to_string(part.mNumVertices) +
+                                        "): give an STL, OBJ or PLY file of triangles");
                 const aiVector3D& p = part.mVertices[face.mIndices[c]];
                 if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                     throw GeometryError(

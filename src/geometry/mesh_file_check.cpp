@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -50,6 +51,14 @@ struct PlyElement {
     std::uint64_t count = 0;
     std::vector<PlyProperty> properties;
 };
+
+/// A value of the file as text: an index as an integer, any other number too (1e+49, nan), where
+/// a cast to an integer would be undefined.
+std::string number(double v) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%.15g", v);
+    return s;
+}
 
 bool isSignedType(const std::string& t) {
     return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" ||
@@ -238,8 +247,7 @@ void checkPly(const std::string& path, std::uintmax_t fileSize) {
                         binary ? bin.value(p.size, p.itemSigned, p.isFloat) : text.value();
                     if (corners && !(v >= 0 && v < double(vertices)))
                         refuse(path, "face " + std::to_string(i) + " names the vertex " +
-                                         std::to_string(std::int64_t(v)) + " of " +
-                                         std::to_string(vertices));
+                                         number(v) + " of " + std::to_string(vertices));
                 }
             }
     }

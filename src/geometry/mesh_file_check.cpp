@@ -271,13 +271,17 @@ void checkMeshFile(const std::string& path) {
     in.read(head, sizeof head);
     if (!in && in.gcount() == 0) refuse(path, std::strerror(errno));
     const std::size_t got = std::size_t(in.gcount());
-    // assimp takes any file whose first three letters are "ply", in either case, for PLY (and
-    // hangs on some that are not): its first line must be "ply" for the header to be walked.
-    bool ply = got >= 3;
-    for (std::size_t k = 0; k < 3 && k < got; ++k)
-        ply &= std::tolower(static_cast<unsigned char>(head[k])) == "ply"[k];
+    // assimp takes any file whose first three letters are "ply", in either case and after blank
+    // lines, for PLY (and hangs on some that are not): its first line must be "ply" for the
+    // header to be walked.
+    std::size_t lead = 0;
+    while (lead < got && std::isspace(static_cast<unsigned char>(head[lead]))) ++lead;
+    bool ply = got >= lead + 3;
+    for (std::size_t k = 0; k < 3 && lead + k < got; ++k)
+        ply &= std::tolower(static_cast<unsigned char>(head[lead + k])) == "ply"[k];
     if (ply) {
-        if (got < 4 || std::memcmp(head, "ply", 3) != 0 || (head[3] != '\n' && head[3] != '\r'))
+        if (lead > 0 || got < 4 || std::memcmp(head, "ply", 3) != 0 ||
+            (head[3] != '\n' && head[3] != '\r'))
             refuse(path, "a PLY file whose first line is not 'ply'");
         in.close();
         checkPly(path, size);

@@ -1,9 +1,10 @@
 // A mesh file checked before a reader (assimp) trusts it: a regular file (not a FIFO or a device,
-// which would block), of at most kMaxMeshFileBytes; a PLY file walked whole (its end_header
-// within kMaxPlyHeader bytes, element counts within kMaxMeshElements, every element of its
-// header there, a face of 3 to kMaxFaceCorners corners naming vertices that exist); a binary
-// STL of 84 + 50 n bytes. What assimp can still do wrong runs in a child process
-// (readMesh, mesh_reader.cpp).
+// which would block), of at most kMaxMeshFileBytes; a PLY file (any file whose first three
+// letters are "ply", in either case, as assimp takes one) walked whole (its first line "ply",
+// its end_header within kMaxPlyHeader bytes, element counts within kMaxMeshElements, every
+// element of its header there, a face of 3 to kMaxFaceCorners corners naming vertices that
+// exist); a binary STL of 84 + 50 n bytes. What assimp can still do wrong runs in a child
+// process (readMesh, mesh_reader.cpp), with limits on its memory, time and CPU time.
 #pragma once
 
 #include <cstdint>

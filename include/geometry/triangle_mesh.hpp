@@ -26,6 +26,12 @@ struct TriangleMesh {
 /// or holds no triangle.
 TriangleMesh readMesh(const std::string& path);
 
+namespace detail {
+/// readMesh's reading without its check and its child process: assimp reads the file in this
+/// process, so a file it crashes on ends the program. For the in-process fuzzers (tests/fuzz/).
+TriangleMesh readWithAssimp(const std::string& path);
+}  // namespace detail
+
 /// The volume enclosed: the divergence theorem gives sum over triangles of a . (b x c) / 6
 /// (positive when the triangles face outward).
 double enclosedVolume(const TriangleMesh& mesh);

@@ -59,6 +59,14 @@ struct PlyElement {
     std::vector<PlyProperty> properties;
 };
 
+/// A value of the file as text: an index as an integer, any other number too (1e+49, nan), where
+/// a cast to an integer would be undefined.
+std::string number(double v) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%.15g", v);
+    return s;
+}
+
 bool isSignedType(const std::string& t) {
     return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" ||
            t == "int32" || t == "float" || t == "float32" || t == "double" || t == "float64";
@@ -246,8 +254,7 @@ void checkPly(const std::string& path, std::uintmax_t fileSize) {
                         binary ? bin.value(p.size, p.itemSigned, p.isFloat) : text.value();
                     if (corners && !(v >= 0 && v < double(vertices)))
                         refuse(path, "face " + std::to_string(i) + " names the vertex " +
-                                         std::to_string(std::int64_t(v)) + " of " +
-                                         std::to_string(vertices));
+                                         number(v) + " of " + std::to_string(vertices));
                 }
             }
     }
@@ -271,7 +278,18 @@ void checkMeshFile(const std::string& path) {
     in.read(head, sizeof head);
     if (!in && in.gcount() == 0) refuse(path, std::strerror(errno));
     const std::size_t got = std::size_t(in.gcount());
-    if (got >= 4 && std::memcmp(head, "ply", 3) == 0 && (head[3] == '\n' || head[3] == '\r')) {
+    // assimp takes any file whose first three letters are "ply", in either case and after blank
+    // lines, for PLY (and hangs on some that are not): its first line must be "ply" for the
+    // header to be walked.
+    std::size_t lead = 0;
+    while (lead < got && std::isspace(static_cast<unsigned char>(head[lead]))) ++lead;
+    bool ply = got >= lead + 3;
+    for (std::size_t k = 0; k < 3 && lead + k < got; ++k)
+        ply &= std::tolower(static_cast<unsigned char>(head[lead + k])) == "ply"[k];
+    if (ply) {
+        if (lead > 0 || got < 4 || std::memcmp(head, "ply", 3) != 0 ||
+            (head[3] != '\n' && head[3] != '\r'))
+            refuse(path, "a PLY file whose first line is not 'ply'");
         in.close();
         checkPly(path, size);
         return;

@@ -103,8 +103,9 @@ void weldCorners(TriangleMesh& mesh) {
     mesh = std::move(out);
 }
 
-/// Every triangle of the file, read by assimp in this process.
-TriangleMesh readWithAssimp(const std::string& path) {
+}  // namespace
+
+TriangleMesh detail::readWithAssimp(const std::string& path) {
     Assimp::Importer importer;
     // Node transformations baked into the vertices; polygons split into triangles.
     const aiScene* scene =
@@ -121,6 +122,13 @@ TriangleMesh readWithAssimp(const std::string& path) {
             if (face.mNumIndices != 3) continue;  // points and lines of the file
             std::array<int, 3> t;
             for (int c = 0; c < 3; ++c) {
+                // assimp can hand over a face naming corners past its vertices (a fuzzed PLY file)
+                if (face.mIndices[c] >= part.mNumVertices)
+                    throw GeometryError(path + ": not a readable mesh (triangle " +
+                                        std::to_string(mesh.triangles.size()) +
+                                        " names the vertex " + std::to_string(face.mIndices[c]) +
+                                        " of " + std::to_string(part.mNumVertices) +
+                                        "): give an STL, OBJ or PLY file of triangles");
                 const aiVector3D& p = part.mVertices[face.mIndices[c]];
                 if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
                     throw GeometryError(
@@ -140,6 +148,8 @@ TriangleMesh readWithAssimp(const std::string& path) {
     return mesh;
 }
 
+namespace {
+
 /// Writes all of `n` bytes (the child's side of the pipe).
 bool writeAll(int fd, const void* data, std::size_t n) {
     const char* p = static_cast<const char*>(data);
@@ -152,16 +162,31 @@ bool writeAll(int fd, const void* data, std::size_t n) {
     return true;
 }
 
+// AddressSanitizer and ThreadSanitizer reserve terabytes of address space for their shadow
+// memory, which an address-space limit would refuse them. GCC says they are on with
+// __SANITIZE_ADDRESS__ / __SANITIZE_THREAD__; clang before 15 only with __has_feature.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define NUMERICS_SANITIZER_SHADOW 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define NUMERICS_SANITIZER_SHADOW 1
+#endif
+#endif
+
 /// The child: reads the mesh and sends 'M', the counts and the arrays, or 'E' and the message.
 [[noreturn]] void childReads(const std::string& path, int fd) {
-#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#ifndef NUMERICS_SANITIZER_SHADOW
     const rlim_t memory = rlim_t(kMeshReaderMemory);
     const rlimit limit{memory, memory};
     ::setrlimit(RLIMIT_AS, &limit);
 #endif
+    // A CPU-time limit of its own: a child whose parent was killed (no one to end it at the
+    // deadline) must not spin on a file forever.
+    const rlimit cpu{rlim_t(kMeshReaderSeconds + 1), rlim_t(kMeshReaderSeconds + 2)};
+    ::setrlimit(RLIMIT_CPU, &cpu);
     bool ok = false;
     try {
-        const TriangleMesh mesh = readWithAssimp(path);
+        const TriangleMesh mesh = detail::readWithAssimp(path);
         const std::uint64_t counts[2] = {mesh.vertices.size(), mesh.triangles.size()};
         ok =
             writeAll(fd, "M", 1) && writeAll(fd, counts, sizeof counts) &&
@@ -181,11 +206,11 @@ bool writeAll(int fd, const void* data, std::size_t n) {
 TriangleMesh readMesh(const std::string& path) {
     checkMeshFile(path);
     int fds[2];
-    if (::pipe(fds) != 0) return readWithAssimp(path);  // no pipe: read here, checked
+    if (::pipe(fds) != 0) return detail::readWithAssimp(path);  // no pipe: read here, checked
     const pid_t child = ::fork();
     if (child < 0) {
         ::close(fds[0]), ::close(fds[1]);
-        return readWithAssimp(path);
+        return detail::readWithAssimp(path);
     }
     if (child == 0) {
         ::close(fds[0]);

@@ -1,6 +1,10 @@
 // Runs a libFuzzer harness once on every file of the folders given (its corpus and its
 // regressions), as the fuzzer replays them, for builds without libFuzzer: a crash, a sanitizer
-// report (in the debug preset) or an exception the harness lets through fails the test.
+// report (in the debug preset) or an exception the harness lets through fails the test, and so
+// does an input that takes more than kSeconds (a hang: the fuzzers run with -timeout=20).
+#include <signal.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -13,9 +17,23 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
 
+namespace {
+
+constexpr unsigned kSeconds = 20;
+/// Names the input being run; made before it runs (the handler allocates nothing).
+std::string hangMessage;
+
+void hang(int) {
+    (void)!::write(2, hangMessage.data(), hangMessage.size());
+    ::_exit(70);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     namespace fs = std::filesystem;
     std::size_t inputs = 0;
+    ::signal(SIGALRM, hang);
     for (int a = 1; a < argc; ++a) {
         if (!fs::is_directory(argv[a])) {
             std::fprintf(stderr, "%s: not a folder of inputs\n", argv[a]);
@@ -29,8 +47,11 @@ int main(int argc, char** argv) {
             std::ifstream in(f, std::ios::binary);
             const std::string bytes((std::istreambuf_iterator<char>(in)),
                                     std::istreambuf_iterator<char>());
+            hangMessage = f.string() + ": more than " + std::to_string(kSeconds) + " s (a hang)\n";
+            ::alarm(kSeconds);
             LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()),
                                    bytes.size());
+            ::alarm(0);
             ++inputs;
         }
     }

@@ -102,6 +102,10 @@ TEST(MeshFile, CutAndInconsistentPlyAreRefused) {
                                                "3 0 2 1\n3 0 1 77\n3 1 2 3\n3 0 "
                                                "3 2\n")),
                    "names the vertex 77 of 4");
+    // One far past any integer (its cast to an integer was undefined).
+    EXPECT_REFUSED(
+        write("far.ply", asciiPly(kTetraVertices, "3 0 2 1\n3 0 1 2e49\n3 1 2 3\n3 0 3 2\n")),
+        "names the vertex 2e+49 of 4");
     // A token that is not a number.
     EXPECT_REFUSED(write("word.ply", asciiPly("0 0 0\n1 zero 0\n0 1 0\n0 0 1\n", kTetraFaces)),
                    "'zero' in the PLY body is not a number");
@@ -120,6 +124,11 @@ TEST(MeshFile, BadPlyHeadersAreRefused) {
                          "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad "
                          "x\nend_header\n1\n"),
                    "of unknown type 'quad'");
+    // A first line other than "ply" that assimp still takes for PLY (it hung on all but "PLY").
+    for (const char* first : {"plyent ply", "ply0", "PLY", "\nply"})
+        EXPECT_REFUSED(
+            write("first_line.ply", first + asciiPly(kTetraVertices, kTetraFaces).substr(3)),
+            "a PLY file whose first line is not 'ply'");
 }
 
 TEST(MeshFile, WhatIsNotARegularFileIsRefused) {

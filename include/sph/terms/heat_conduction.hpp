@@ -170,7 +170,9 @@ class HeatConduction : public IEquationTerm<Dim> {
         const std::vector<ThermalMaterial> table = thermalMaterials(s);
         const auto rho = s.template getValue<Float>(QuantityId::DENSITY);
         std::vector<int> zeros;
-        const auto [mat, cond] = materialAndCondition(s, zeros);
+        // Not a structured binding: clang 14 cannot capture one in the lambda below.
+        const auto materialCondition = materialAndCondition(s, zeros);
+        const ArrayView<const int> mat = materialCondition.first, cond = materialCondition.second;
         // alpha = k / (rho c) is largest at a material's smallest density: one division per
         // material (rounding is monotonic, so this is bitwise the largest alpha of a particle).
         const std::vector<Float> rhoMin = reduceChunks(

@@ -100,61 +100,84 @@ double largestBlockSpeed(const Scene<Dim>& scene, const FluidBlock<Dim>& f) {
     return u;
 }
 
+/// A velocity scale and the scene key (or cause) it comes from.
+struct SpeedScale {
+    double U = 0;
+    std::string from;
+    /// Keeps u where it is the largest so far.
+    void see(double u, const std::string& source) {
+        if (u > U) U = u, from = source;
+    }
+};
+
+/// The buoyancy speed sqrt(g beta dT H) of a closed box (dT the spread of the fluid
+/// temperatures at every lattice point of every block, and of the walls and bodies).
+template <int Dim>
+double buoyancySpeed(const Scene<Dim>& scene, double gravity, double height) {
+    double tMin = 1e300, tMax = -1e300, beta = 0;
+    auto see = [&](double T) { tMin = std::min(tMin, T), tMax = std::max(tMax, T); };
+    for (const auto& f : scene.fluids)
+        forEachBlockSample(scene, f,
+                           [&](const sph::Vector<Dim>& x) { see(at<Dim>(f.temperature, x, 0.0)); });
+    for (const auto& b : scene.bodies) see(b.temperature);
+    for (const auto& w : scene.walls)
+        if (const auto held = w.boundary->heldTemperature()) see(*held);
+    for (int k = 0; k < Dim; ++k)
+        for (const auto& side : scene.sides[k])
+            if (const auto held = side->heldTemperature()) see(*held);
+    for (const auto& [name, m] : scene.materials) beta = std::max(beta, m.thermalExpansion);
+    if (!scene.physics.heat || !scene.physics.buoyancy || !(tMax > tMin)) return 0;
+    return std::sqrt(gravity * beta * (tMax - tMin) * height);
+}
+
+/// The speeds gravity gives: the free-fall speed sqrt(2 g H) over the domain's height along g
+/// where the water has a free surface, or, where the fluid fills a closed box, sqrt(g H) (its
+/// hydrostatic compression rho0 g H must stay near 1 % of rho0 c0^2: c0 >= 10 sqrt(g H),
+/// Monaghan 1994, sec. 3) and the buoyancy speed.
+template <int Dim>
+void seeGravity(const Scene<Dim>& scene, const sph::Vector<Dim>& g, bool open, SpeedScale& s) {
+    const double gravity = norm(g);
+    if (!(gravity > 0)) return;
+    double height = 0, domainVolume = 1, fluidVolume = 0;
+    for (int k = 0; k < Dim; ++k) {
+        height += std::abs(g[k]) / gravity * (scene.domainMax[k] - scene.domainMin[k]);
+        domainVolume *= scene.domainMax[k] - scene.domainMin[k];
+    }
+    for (const auto& f : scene.fluids) fluidVolume += blockVolume(scene, f);
+    const std::string fall = "gravity over the domain's height, " + formatted("%g m", height);
+    if (open || !scene.emitters.empty() || fluidVolume < 0.99 * domainVolume) {
+        s.see(std::sqrt(2 * gravity * height), "the free fall under " + fall);
+    } else {
+        s.see(std::sqrt(gravity * height), "the hydrostatic compression under " + fall);
+        s.see(buoyancySpeed(scene, gravity, height), "buoyancy (physics.buoyancy)");
+    }
+}
+
 /// The flow's velocity scale U for "auto" sound speeds (c0 = 10 U), derived from the scene:
 /// the largest of the initial fluid speeds (every lattice point of every block), the speeds
-/// of moving walls and of emitters, and, under gravity, the free-fall speed sqrt(2 g H) over
-/// the domain's height along g where the water has a free surface, or, where the fluid fills a
-/// closed box, sqrt(g H) (its hydrostatic compression) and the buoyancy speed sqrt(g beta dT H)
-/// (dT the spread of the fluid temperatures at every lattice point of every block, and of the
-/// walls and bodies). physics.max_speed overrides it. 0 where none of these gives a speed.
+/// of moving walls, emitters and inlets, and the speeds gravity gives (seeGravity), with the
+/// key it comes from. physics.max_speed overrides it. 0 where none of these gives a speed.
 template <int Dim>
-double velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
-    if (scene.maxSpeed > 0) return scene.maxSpeed;
-    double U = 0;
-    for (const auto& f : scene.fluids) U = std::max(U, largestBlockSpeed(scene, f));
+SpeedScale velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
+    SpeedScale s;
+    if (scene.maxSpeed > 0) return {scene.maxSpeed, "physics.max_speed"};
+    for (std::size_t i = 0; i < scene.fluids.size(); ++i)
+        s.see(largestBlockSpeed(scene, scene.fluids[i]),
+              "fluids[" + std::to_string(i) + "].velocity");
     bool open = false;
     for (int k = 0; k < Dim; ++k)
-        for (const auto& side : scene.sides[k]) {
-            U = std::max(U, side->surfaceSpeed());
+        for (int hi = 0; hi < 2; ++hi) {
+            const auto& side = scene.sides[k][hi];
+            s.see(side->surfaceSpeed(), std::string("boundaries.") + sideName(k, hi) + ".velocity");
             open |= side->letsFluidOut();
         }
-    for (const auto& w : scene.walls) U = std::max(U, w.boundary->surfaceSpeed());
-    for (const auto& e : scene.emitters) U = std::max(U, e.speed);
-    U = std::max(U, largestInflowSpeed(scene));
-    const double gravity = norm(g);
-    if (gravity > 0) {
-        double height = 0, domainVolume = 1, fluidVolume = 0;
-        for (int k = 0; k < Dim; ++k) {
-            height += std::abs(g[k]) / gravity * (scene.domainMax[k] - scene.domainMin[k]);
-            domainVolume *= scene.domainMax[k] - scene.domainMin[k];
-        }
-        for (const auto& f : scene.fluids) fluidVolume += blockVolume(scene, f);
-        const bool freeSurface =
-            open || !scene.emitters.empty() || fluidVolume < 0.99 * domainVolume;
-        if (freeSurface) {
-            U = std::max(U, std::sqrt(2 * gravity * height));
-        } else {
-            // No fall, but the hydrostatic compression rho0 g H must stay near 1 % of
-            // rho0 c0^2: c0 >= 10 sqrt(g H) (Monaghan 1994, sec. 3).
-            U = std::max(U, std::sqrt(gravity * height));
-            double tMin = 1e300, tMax = -1e300, beta = 0;
-            auto see = [&](double T) { tMin = std::min(tMin, T), tMax = std::max(tMax, T); };
-            for (const auto& f : scene.fluids)
-                forEachBlockSample(scene, f, [&](const sph::Vector<Dim>& x) {
-                    see(at<Dim>(f.temperature, x, 0.0));
-                });
-            for (const auto& b : scene.bodies) see(b.temperature);
-            for (const auto& w : scene.walls)
-                if (const auto held = w.boundary->heldTemperature()) see(*held);
-            for (int k = 0; k < Dim; ++k)
-                for (const auto& side : scene.sides[k])
-                    if (const auto held = side->heldTemperature()) see(*held);
-            for (const auto& [name, m] : scene.materials) beta = std::max(beta, m.thermalExpansion);
-            if (scene.physics.heat && scene.physics.buoyancy && tMax > tMin)
-                U = std::max(U, std::sqrt(gravity * beta * (tMax - tMin) * height));
-        }
-    }
-    return U;
+    for (std::size_t i = 0; i < scene.walls.size(); ++i)
+        s.see(scene.walls[i].boundary->surfaceSpeed(), "walls[" + std::to_string(i) + "].velocity");
+    for (std::size_t i = 0; i < scene.emitters.size(); ++i)
+        s.see(scene.emitters[i].speed, "emitters[" + std::to_string(i) + "].speed");
+    s.see(largestInflowSpeed(scene), "an inlet's velocity (boundaries)");
+    seeGravity(scene, g, open, s);
+    return s;
 }
 
 /// Whether the fluid fills a box closed by walls on every side, with no bodies or emitters: no
@@ -204,22 +227,18 @@ void asSceneError(const std::string& file, const std::string& key, F&& f) {
 /// The sound speed derived by "auto" (10 U) within the limit of an explicit one. (A scale that
 /// is not finite comes from an initial velocity that is not: checkInitialState names it.)
 template <int Dim>
-void checkSoundSpeed(const Scene<Dim>& scene, const std::string& fluidName, double U) {
+void checkSoundSpeed(const Scene<Dim>& scene, const std::string& fluidName, const SpeedScale& U) {
     const MaterialSpec& fluid = scene.materials.at(fluidName);
     const std::string key = "materials." + fluidName + ".sound_speed";
-    const double c0 = fluid.soundSpeed ? *fluid.soundSpeed : sph::defaults::soundSpeedFactor * U;
-    const std::string from = scene.maxSpeed > 0 ? "physics.max_speed"
-                                                : "the scene's speeds (initial velocities, moving "
-                                                  "walls, emitters, the height of a fall)";
+    const double c0 = fluid.soundSpeed ? *fluid.soundSpeed : sph::defaults::soundSpeedFactor * U.U;
     if (!fluid.soundSpeed && std::isfinite(c0) && c0 > kMaxSoundSpeed)
         throw sceneError(
             scene.file, key, "a sound speed of at most " + formatted("%g", kMaxSoundSpeed) + " m/s",
-            formatted("\"auto\" = %g x U = %.3g m/s, from the velocity scale U = "
-                      "%.3g m/s of ",
-                      sph::defaults::soundSpeedFactor, c0, U) +
-                from,
+            formatted("\"auto\" = %g x U = %.3g m/s, from the velocity scale U = %.3g m/s of ",
+                      sph::defaults::soundSpeedFactor, c0, U.U) +
+                U.from,
             "the weakly-compressible model is for flows far below the speed of "
-            "sound: lower those speeds, at most " +
+            "sound: lower that speed, at most " +
                 formatted("%g", kMaxSoundSpeed / sph::defaults::soundSpeedFactor) + " m/s");
 }
 
@@ -288,16 +307,16 @@ double settledVelocityScale(const Scene<Dim>& scene, const std::string& fluidNam
     const MaterialSpec& fluid = scene.materials.at(fluidName);
     const double ramp = scene.physics.gravityRamp;
     const sph::Vector<Dim> g0 = at<Dim>(scene.gravity, sph::Vector<Dim>{}, std::max(ramp, 0.0));
-    double U = velocityScale(scene, g0);
-    if (!(U > 0) && !fluid.soundSpeed)
+    SpeedScale U = velocityScale(scene, g0);
+    if (!(U.U > 0) && !fluid.soundSpeed)
         throw sceneError(scene.file, "physics.max_speed",
                          "the largest speed you expect, for the automatic sound speed",
                          "nothing that moves the fluid (no initial velocity, moving wall, "
                          "emitter or gravity)",
                          "or give the material a sound_speed");
-    if (!(U > 0)) U = *fluid.soundSpeed / sph::defaults::soundSpeedFactor;
+    if (!(U.U > 0)) U.U = *fluid.soundSpeed / sph::defaults::soundSpeedFactor;
     checkSoundSpeed(scene, fluidName, U);
-    return U;
+    return U.U;
 }
 
 /// The fluid model's flow: rest density, equation of state, viscosities, density diffusion,

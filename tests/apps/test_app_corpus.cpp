@@ -121,7 +121,7 @@ const std::vector<Case>& corpus() {
          },
          kScene,
          {"materials.water.sound_speed", "at most 1e+06 m/s", "\"auto\" = 10 x U = 1e+07 m/s",
-          "at most 100000 m/s"}},
+          "of fluids[0].velocity", "at most 100000 m/s"}},
         {"auto_sound_speed_from_max_speed",
          3,
          [](json& j) {

@@ -51,7 +51,7 @@ SKIP = 77
 # there), and the most seconds both runs may take. At 1e7 most of a run is its set-up on the CPU
 # (the particles made on one thread), so few steps.
 SIZES = [("1e5", 0.01293, (5, 200), (2, 20), 60),
-         ("1e6", 0.006, (5, 60), (1, 6), 90),
+         ("1e6", 0.006, (5, 60), (1, 4), 90),
          ("1e7", 0.002785, (3, 15), None, 200)]
 QUIET = ["-q", "--set", "output.images=false", "--set", "output.video=false",
          "--set", "output.formats=[]", "--set", "output.plots=[]", "--set", "probes=[]"]
@@ -137,8 +137,10 @@ def per_particle_step(first, second):
     return n, steps, ns, second["device_bytes_per_particle"]
 
 
-def scaling_figure(n, steps, ns, bytes_per_particle):
-    return f"{n:,} particles, {steps} steps: {ns:.2f} ns per particle-step, {bytes_per_particle:.0f} B per particle"
+def scaling_figure(n, steps, ns, bytes_per_particle, fluid=None):
+    of = f"{fluid:,} fluid of " if fluid is not None else ""
+    return (f"{of}{n:,} particles, {steps} steps: {ns:.2f} ns per particle-step, "
+            f"{bytes_per_particle:.0f} B per particle")
 
 
 def first_end_time(scene, dx, steps):
@@ -260,7 +262,8 @@ def check_size(a, env, name, dx, steps, budget):
         figures = per_particle_step(*summaries)
     except ValueError as e:
         return Row(f"{name} particles", FAIL, str(e), seconds)
-    return Row(f"{name} particles", INFO, scaling_figure(*figures), seconds)
+    return Row(f"{name} particles", INFO,
+               scaling_figure(*figures, fluid=summaries[1].get("fluid_particles")), seconds)
 
 
 def main(argv=None):

@@ -39,6 +39,9 @@ class Figures(unittest.TestCase):
         text = gc.scaling_figure(n, steps, ns, per)
         self.assertIn(f"{n:,} particles", text)
         self.assertIn(f"{ns:.2f} ns per particle-step", text)
+        fluid = self.b["fluid_particles"]
+        self.assertIn(f"{fluid:,} fluid of {n:,} particles",
+                      gc.scaling_figure(n, steps, ns, per, fluid=fluid))
 
     def test_refusals(self):
         with self.assertRaises(ValueError):  # the same run twice: no steps between them

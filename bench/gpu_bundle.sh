@@ -47,6 +47,7 @@ if git -C "$here" ls-files --error-unmatch "$out" >/dev/null 2>&1 ||
    { case "$(cd "$out" && pwd)/" in "$here"/*) true ;; *) false ;; esac &&
      ! git -C "$here" check-ignore -q "$out"; }; then
     echo "gpu_bundle.sh: $out is inside the repository and not ignored by git: use build/ or out/" >&2
+    rmdir "$out" 2>/dev/null || true
     exit 1
 fi
 rm -rf "$out"

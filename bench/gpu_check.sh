@@ -7,6 +7,11 @@
 # failure.
 #
 #   bench/gpu_check.sh [BUILD_DIR]        (default build/release)
+#
+# This is the full check, for a GPU machine with the build environment (a compiler and the
+# Debian -dev packages). For a first contact with a GPU machine that has only the NVIDIA driver,
+# CUDA and Python, build the bundle here with bench/gpu_bundle.sh and run its check.sh there
+# (shorter runs, about 5 minutes, no CPU timings; docs/performance.md).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build/release}

@@ -3,13 +3,22 @@
 // the same functor the host runs in a loop, reductions by CUB's DeviceReduce and the cell sort
 // by CUB's DeviceRadixSort::SortPairs (stable, so the order is the host's std::stable_sort).
 // Every call is on the default stream, in order; errors become DeviceError.
+//
+// Debug mode (NUMERICS_CUDA_DEBUG=1 in the environment, read when the execution is made): every
+// kernel launch and CUB call is followed by cudaGetLastError and cudaDeviceSynchronize, so that a
+// failing kernel (a bad address, a launch failure) throws a DeviceError naming it (the functor's
+// type) and the CUDA error, instead of a later call reporting it. It changes no result, only
+// when the host waits; without it nothing is synchronised beyond what the copies do.
 #pragma once
 
 #include <cuda_runtime.h>
+#include <cxxabi.h>
 
+#include <cstdlib>
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_reduce.cuh>
 #include <string>
+#include <typeinfo>
 
 #include "device/execution.hpp"
 
@@ -18,6 +27,22 @@ namespace num::device {
 inline void check(cudaError_t e, const char* what) {
     if (e != cudaSuccess)
         throw DeviceError(std::string("CUDA: ") + what + ": " + cudaGetErrorString(e));
+}
+
+/// NUMERICS_CUDA_DEBUG=1 (or any value but "" and "0"): the debug mode above.
+inline bool cudaDebugMode() {
+    const char* e = std::getenv("NUMERICS_CUDA_DEBUG");
+    return e && *e && std::string(e) != "0";
+}
+
+/// A kernel's name for messages: the functor's type, demangled.
+template <class F>
+std::string kernelName() {
+    int status = 0;
+    char* name = abi::__cxa_demangle(typeid(F).name(), nullptr, nullptr, &status);
+    std::string s = status == 0 && name ? name : typeid(F).name();
+    std::free(name);
+    return s;
 }
 
 template <class F>
@@ -31,7 +56,9 @@ class CudaExecution {
     static constexpr bool onDevice = true;
     static const char* name() { return "cuda"; }
 
-    CudaExecution() { check(cudaMalloc(&result_, sizeof(double)), "cudaMalloc"); }
+    CudaExecution() : debug_(cudaDebugMode()) {
+        check(cudaMalloc(&result_, sizeof(double)), "cudaMalloc");
+    }
     CudaExecution(const CudaExecution&) = delete;
     CudaExecution& operator=(const CudaExecution&) = delete;
     ~CudaExecution() {
@@ -64,6 +91,11 @@ class CudaExecution {
         if (n == 0) return;
         constexpr unsigned threads = 256;
         forEachKernel<<<(n + threads - 1) / threads, threads>>>(n, f);
+        if (debug_) {
+            completed(
+                ("kernel " + kernelName<F>() + " (" + std::to_string(n) + " threads)").c_str());
+            return;
+        }
         check(cudaGetLastError(), "kernel launch");
     }
 
@@ -72,6 +104,7 @@ class CudaExecution {
         std::size_t bytes = 0;
         check(cub::DeviceReduce::Max(nullptr, bytes, v, result_, int(n)), "DeviceReduce::Max");
         check(cub::DeviceReduce::Max(temp(bytes), bytes, v, result_, int(n)), "DeviceReduce::Max");
+        if (debug_) completed("cub::DeviceReduce::Max");
         return fetchResult();
     }
     double minOf(const double* v, Index n) {
@@ -79,6 +112,7 @@ class CudaExecution {
         std::size_t bytes = 0;
         check(cub::DeviceReduce::Min(nullptr, bytes, v, result_, int(n)), "DeviceReduce::Min");
         check(cub::DeviceReduce::Min(temp(bytes), bytes, v, result_, int(n)), "DeviceReduce::Min");
+        if (debug_) completed("cub::DeviceReduce::Min");
         return fetchResult();
     }
 
@@ -91,11 +125,23 @@ class CudaExecution {
         check(cub::DeviceRadixSort::SortPairs(temp(bytes), bytes, keysIn, keysOut, valuesIn,
                                               valuesOut, int(n), 0, keyBits),
               "DeviceRadixSort::SortPairs");
+        if (debug_) completed("cub::DeviceRadixSort::SortPairs");
     }
 
     void synchronize() { check(cudaDeviceSynchronize(), "kernel"); }
 
   private:
+    /// Debug mode: the launch of `what` and its run to completion, or a DeviceError naming it.
+    void completed(const char* what) {
+        const cudaError_t launch = cudaGetLastError();
+        if (launch != cudaSuccess)
+            throw DeviceError(std::string("CUDA: launch of ") + what +
+                              " failed: " + cudaGetErrorString(launch));
+        const cudaError_t run = cudaDeviceSynchronize();
+        if (run != cudaSuccess)
+            throw DeviceError(std::string("CUDA: ") + what + " failed: " + cudaGetErrorString(run));
+    }
+
     /// CUB's temporary storage, grown as needed and kept.
     void* temp(std::size_t bytes) {
         if (bytes > tempBytes_) {
@@ -112,6 +158,7 @@ class CudaExecution {
         return r;
     }
 
+    bool debug_ = false;
     void* temp_ = nullptr;
     std::size_t tempBytes_ = 0;
     double* result_ = nullptr;

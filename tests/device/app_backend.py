@@ -10,6 +10,8 @@
   restart CPU -> cuda -> CPU, and the refusals.
 --mode gpu (label gpu): the same on the GPU, longer, with the figures within 1 %; exits 77
   (ctest: skipped) with the reason when the build has no CUDA back end or there is no GPU.
+--short (with --mode gpu): the runs a fifth as long (the GPU check bundle's first contact,
+  bench/gpu_bundle.sh); --mode host is short already.
 """
 import argparse
 import filecmp
@@ -97,8 +99,11 @@ def main():
     ap.add_argument("scenes")
     ap.add_argument("work")
     ap.add_argument("--mode", choices=["host", "gpu"], required=True)
+    ap.add_argument("--short", action="store_true", help="--mode gpu: runs a fifth as long")
     a = ap.parse_args()
     host = a.mode == "host"
+    # The GPU's end times; --short: a fifth of them.
+    gpu_time = (lambda t: f"{float(t) / 5:g}") if a.short else (lambda t: t)
     env = {"NUMERICS_TEST_DEVICE_EXECUTION": "host"} if host else {"NUMERICS_TEST_DEVICE_EXECUTION": ""}
     work = os.path.join(a.work, a.mode)
     shutil.rmtree(work, ignore_errors=True)
@@ -126,10 +131,11 @@ def main():
     # 2D and 3D dam breaks: cuda against cpu. On the host execution the order of operations is
     # the CPU's up to round-off, so the figures agree to many digits and the steps are the same;
     # on the GPU (its own pow and libm) within 1 %.
-    cases = [("2D dam break (Martin & Moyce)", a.fluid_sim, s2, "0.05" if host else "0.5", []),
-             ("3D dam break", a.fluid_sim_3d, s3, "0.05" if host else "0.5",
+    cases = [("2D dam break (Martin & Moyce)", a.fluid_sim, s2, "0.05" if host else gpu_time("0.5"), []),
+             ("3D dam break", a.fluid_sim_3d, s3, "0.05" if host else gpu_time("0.5"),
               ["--set", "particles.spacing=0.08"] if host else []),
-             ("2D default scene (bodies, heat)", a.fluid_sim, hot_cold, "0.01" if host else "0.2", [])]
+             ("2D default scene (bodies, heat)", a.fluid_sim, hot_cold,
+              "0.01" if host else gpu_time("0.2"), [])]
     tolerance = 1e-6 if host else 1e-2
     for name, app, scene, end, extra in cases:
         print(name + ", t = " + end + " s:")
@@ -141,7 +147,7 @@ def main():
 
     # Two cuda runs: bitwise identical (their checkpoints byte for byte).
     print("two cuda runs, bitwise:")
-    end = "0.02" if host else "0.2"
+    end = "0.02" if host else gpu_time("0.2")
     dirs = [os.path.join(work, f"repeat{k}") for k in (1, 2)]
     for d in dirs:
         run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", end, "--checkpoint-every", end,
@@ -153,7 +159,7 @@ def main():
 
     # Restart CPU -> cuda -> CPU against the CPU all the way.
     print("restart cpu -> cuda -> cpu:")
-    t1, t2, t3 = ("0.01", "0.02", "0.03") if host else ("0.1", "0.2", "0.3")
+    t1, t2, t3 = ("0.01", "0.02", "0.03") if host else tuple(gpu_time(t) for t in ("0.1", "0.2", "0.3"))
     r1, r2, r3, ref = (os.path.join(work, n) for n in ("r_cpu1", "r_cuda", "r_cpu2", "r_ref"))
     run(a.fluid_sim, [s2, "--backend", "cpu", "--end-time", t1, "--checkpoint-every", t1, "--out", r1] + quiet)
     run(a.fluid_sim, ["--restart", os.path.join(r1, "checkpoint_0001.chk"), "--backend", "cuda",

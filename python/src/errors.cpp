@@ -63,9 +63,11 @@ void translate(std::exception_ptr thrown) {
 
 }  // namespace
 
-void bindErrors(py::module_&) {
+void bindErrors(py::module_& m) {
     py::register_exception_translator(translate);
     installSetUpInterrupt();
+    m.def("_sigint_at_set_up_poll", &sendSigintAtSetUpPoll, py::arg("poll"),
+          "For tests: the next set-up sends itself SIGINT at this poll (0: never).");
 }
 
 }  // namespace num::python

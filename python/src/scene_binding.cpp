@@ -23,6 +23,7 @@ void bindScene(py::module_& m) {
             "check",
             [](const SceneDocument& d) {
                 const StopSetUpOnCtrlC ctrlC;
+                py::gil_scoped_release released;  // other Python threads run meanwhile
                 if (d.dimension() == 3)
                     io::readScene<3>(d);
                 else

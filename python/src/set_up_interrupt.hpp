@@ -9,6 +9,10 @@ namespace num::python {
 /// Installs the check; once, when the module is imported.
 void installSetUpInterrupt();
 
+/// For tests (_numerics._sigint_at_set_up_poll): the next set-up sends itself SIGINT, as Ctrl-C
+/// does, at its poll-th poll (0: never), so that a test stops a set-up at a known point.
+void sendSigintAtSetUpPoll(long poll);
+
 /// While one lives, the set-up on this thread stops on Ctrl-C. The GIL may be released.
 class StopSetUpOnCtrlC {
   public:

@@ -92,22 +92,22 @@ QUIET_OUTPUT = {"every": 0.001, "formats": ["vtu"], "images": False, "video": Fa
                 "plots": []}
 
 
-def scene2d(bodies=True):
-    j = copy.deepcopy(TINY_2D)
-    j["output"] = dict(QUIET_OUTPUT, directory="out/tiny_2d")
+def tiny_scene(base, name, drop=None):
+    """A copy of a tiny scene that writes little and has no probes, without the key `drop`."""
+    j = copy.deepcopy(base)
+    j["output"] = dict(QUIET_OUTPUT, directory=f"out/{name}")
     j["probes"] = []
-    if not bodies:
-        j.pop("bodies")
+    if drop:
+        j.pop(drop)
     return j
+
+
+def scene2d(bodies=True):
+    return tiny_scene(TINY_2D, "tiny_2d", None if bodies else "bodies")
 
 
 def scene3d(emitters=False):
-    j = copy.deepcopy(TINY_3D)
-    j["output"] = dict(QUIET_OUTPUT, directory="out/tiny_3d")
-    j["probes"] = []
-    if not emitters:
-        j.pop("emitters")
-    return j
+    return tiny_scene(TINY_3D, "tiny_3d", None if emitters else "emitters")
 
 
 # A unit cube, outward facing (0-based faces).

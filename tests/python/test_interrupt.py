@@ -6,6 +6,7 @@ import threading
 import pytest
 
 import numerics
+from numerics import _numerics
 
 
 def interrupt_after_steps(sim, steps):
@@ -45,31 +46,27 @@ def test_ctrl_c_from_another_thread(tiny2d, tmp_path):
 
 def huge_set_up(scene):
     """The scene with a polygon of water on a lattice of 5e7 points (the domain's 1.8e8 are within
-    the limit of 2e8): its set-up counts them for seconds on any machine, allocating nothing."""
+    the limit of 2e8): its set-up polls for Ctrl-C once per lattice row, thousands of times."""
     scene.set("particles.spacing", 1.5e-5)
     scene.set("fluids.0", {"material": "water", "shape": "polygon",
                            "points": [[0, 0], [0.1, 0], [0.1, 0.12], [0, 0.12]]})
     return scene
 
 
-def interrupted_soon():
-    timer = threading.Timer(0.2, signal.raise_signal, args=(signal.SIGINT,))
-    timer.start()
-    return timer
-
-
 @pytest.mark.parametrize("what", ["Simulation", "check"])
 def test_ctrl_c_during_set_up(tiny2d, tmp_path, what):
-    """Ctrl-C stops a long set-up within the polling interval; the folder and the interpreter
-    can be used again."""
+    """Ctrl-C (SIGINT, sent by the set-up itself at its 100th poll, as a terminal would send it)
+    stops a long set-up; the folder and the interpreter can be used again."""
     scene = huge_set_up(tiny2d.copy())
-    timer = interrupted_soon()
-    with pytest.raises(KeyboardInterrupt):
-        if what == "check":
-            scene.check()
-        else:
-            numerics.Simulation(scene, threads=2, out=tmp_path, quiet=True)
-    timer.join()
+    _numerics._sigint_at_set_up_poll(100)
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            if what == "check":
+                scene.check()
+            else:
+                numerics.Simulation(scene, threads=2, out=tmp_path, quiet=True)
+    finally:
+        _numerics._sigint_at_set_up_poll(0)
     sim = numerics.Simulation(tiny2d, threads=2, out=tmp_path, quiet=True)
     sim.run(progress=False)
     assert sim.summary["status"] == "completed"

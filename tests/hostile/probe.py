@@ -1116,21 +1116,28 @@ def cli():
     py_case(C, "two_simulations_one_folder", refuse(7, "in use", excs=("RunError",)),
             "a = numerics.Simulation(SCENE, out=OUT, threads=1, quiet=True)\n"
             "b = numerics.Simulation(SCENE, out=OUT, threads=1, quiet=True)\n")
+    # The first thread is held inside run() (in its callback) while the second tries, whatever
+    # the machine's speed.
     thread_code = """\
 sim = numerics.Simulation(SCENE, out=OUT, threads=1, quiet=True, end_time=0.6)
 box = {}
+inside, go = threading.Event(), threading.Event()
+def hold(s):
+    inside.set()
+    go.wait()
 def worker():
     try:
-        box['rc'] = sim.run(progress=False)
+        box['rc'] = sim.run(callback=hold, every=0.01, progress=False)
     except Exception as e:
         box['err'] = repr(e)
 t = threading.Thread(target=worker)
 t.start()
-time.sleep(1.0)
+inside.wait(30)
 RES['first_running'] = t.is_alive()
 try:
     %s
 finally:
+    go.set()
     t.join()
     RES['first'] = box
 """

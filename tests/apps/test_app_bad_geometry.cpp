@@ -116,7 +116,8 @@ TEST(BadGeometry, MeshMovedFarOutIsNamedOutsideTheDomain) {
     j["fluids"][0]["max"] = {2, 2, 0.5};
     j["probes"] = json::array();
     j["boundaries"]["z_max"] = {{"type", "wall"}};
-    j["bodies"] = json::array({{{"shape", "mesh"}, {"file", "cube.obj"}, {"translate", {1e300, 0, 0}}}});
+    j["bodies"] =
+        json::array({{{"shape", "mesh"}, {"file", "cube.obj"}, {"translate", {1e300, 0, 0}}}});
     const Result r = runScene("far_mesh", j, "--quiet", {{"cube.obj", cube}});
     expectMessage(r, {"bodies[0]", "inside the domain", "1e+300"});
 }

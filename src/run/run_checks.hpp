@@ -93,11 +93,8 @@ template <int Dim>
 class ParticleFlowObserver final : public IStepObserver<Dim> {
   public:
     explicit ParticleFlowObserver(const RunParts<Dim>& p)
-        : active_(!p.scene.emitters.empty() || bool(p.setup->model.flowBoundaries)) {
-        for (int k = 0; k < Dim; ++k)
-            for (int hi = 0; hi < 2; ++hi)
-                active_ = active_ || p.scene.sides[k][hi]->letsFluidOut();
-    }
+        : active_(!p.scene.emitters.empty() || bool(p.setup->model.flowBoundaries) ||
+                  anySideLetsFluidOut(p.scene)) {}
     bool needsParticles(const Simulation<Dim>&) const override { return active_; }
     void afterStep(Simulation<Dim>& sim) override {
         if (!active_) return;

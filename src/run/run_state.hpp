@@ -127,14 +127,20 @@ void checkHealth(sph::IScheduler& scheduler, const sph::Storage<Dim>& s, const S
         throw AppError(ExitCode::UNSTABLE, where + std::string("the time step collapsed") + cause);
 }
 
+/// Whether any side of the box lets the fluid out (an open side).
+template <int Dim>
+bool anySideLetsFluidOut(const Scene<Dim>& scene) {
+    bool anyOut = false;
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) anyOut |= scene.sides[k][hi]->letsFluidOut();
+    return anyOut;
+}
+
 /// The sides' post-step sink: removes the fluid particles that left through a side that lets
 /// fluid out (ISideBoundary::markLeaving); returns how many.
 template <int Dim>
 std::size_t removeOutflow(sph::Storage<Dim>& s, const Scene<Dim>& scene) {
-    bool anyOut = false;
-    for (int k = 0; k < Dim; ++k)
-        for (int hi = 0; hi < 2; ++hi) anyOut |= scene.sides[k][hi]->letsFluidOut();
-    if (!anyOut) return 0;
+    if (!anySideLetsFluidOut(scene)) return 0;
     std::vector<char> leaving(s.size(), 0);
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi)

@@ -7,6 +7,7 @@
 //   heat        evaluation with heat conduction (+ search)
 //   all         the full fused evaluation (fluid + heat)
 //   step        one leapfrog step of the full scene with heat on
+// The loops also count the pairs one evaluation visits (`pairs`).
 // Items per second count all particles (fluid and wall) per evaluation or step.
 #include <benchmark/benchmark.h>
 
@@ -93,12 +94,29 @@ void search(benchmark::State& state) {
     state.counters["neighbours"] = double(pairs) / n;
 }
 
+/// The particles the loop's gather evaluates: fluid ones, and with conduction the walls that
+/// conduct (IDerivative::gathersAtBoundary).
+template <int Dim>
+std::size_t evaluatedParticles(Loop loop, const Storage<Dim>& s) {
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
+    const bool heat =
+        (loop == Loop::HEAT || loop == Loop::ALL) && s.has(heat_ids::THERMAL_CONDITION);
+    std::size_t n = 0;
+    for (Size i = 0; i < s.size(); ++i)
+        n +=
+            isFluid(kind[i]) || (heat && s.template getValue<int>(heat_ids::THERMAL_CONDITION)[i] !=
+                                             int(ThermalCondition::ADIABATIC));
+    return n;
+}
+
 template <int Dim, Loop L>
 void loop(benchmark::State& state) {
     auto s = scene<Dim>(int(state.range(0)));
     Solver<Dim> solver(*s->scheduler, s->settings, termsOf<Dim>(L, *s), s->geometry.domain);
     for (auto _ : state) solver.evaluate(s->storage, 0.0);
     state.SetItemsProcessed(state.iterations() * s->storage.size());
+    // The pairs one evaluation visits (bench/roofline.py).
+    state.counters["pairs"] = solver.meanNeighbours() * double(evaluatedParticles(L, s->storage));
 }
 
 template <int Dim>

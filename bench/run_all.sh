@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole benchmark suite: micro-benchmarks, end-to-end dam breaks (2D heat off/on, 3D), the
-# 2D scaling from 1e4 to 1e6 particles, 1 versus 2 threads, and the PySPH comparison.
+# 2D scaling from 1e4 to 1e6 particles, 1 versus 2 threads, the roofline of the pair loops and
+# the PySPH comparison.
 #
 #   bench/run_all.sh [BUILD_DIR]        (default build/release; configured and built if needed)
 #
@@ -13,7 +14,7 @@ BUILD=${1:-build/release}
 REPEATS=${REPEATS:-5}
 BACKEND=${BACKEND:-threads}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD" --target bench_dam_break bench_pair_loops bench_neighbours bench_two_cores \
+cmake --build "$BUILD" --target bench_dam_break bench_pair_loops bench_neighbours bench_two_cores bench_core_peak \
     -j2 >/dev/null
 DAM="$BUILD/bench/bench_dam_break"
 
@@ -85,6 +86,11 @@ echo
 echo '```'
 "$BUILD/bench/bench_two_cores" --rounds "$REPEATS"
 echo '```'
+
+echo
+echo "## The roofline of the pair loops (1 thread)"
+echo
+/usr/bin/python3 bench/roofline.py "$BUILD" 3
 
 echo
 echo "## PySPH side by side"

@@ -155,6 +155,17 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
 
     std::int64_t sum(std::int64_t local) const override { return comm_.sum(local); }
 
+    std::vector<std::vector<double>> allGather(std::span<const double> local) const override {
+        Bytes mine(local.size_bytes());
+        std::memcpy(mine.data(), local.data(), mine.size());
+        std::vector<std::vector<double>> all;
+        for (const Bytes& b : comm_.allGather(mine)) {
+            all.emplace_back(b.size() / sizeof(double));
+            std::memcpy(all.back().data(), b.data(), b.size());
+        }
+        return all;
+    }
+
     bool beforeStep(sph::Storage<Dim>& s, bool reorder, bool particlesChanged) override {
         if (comm_.size() == 1) {
             ownEveryParticle(s);

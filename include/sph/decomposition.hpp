@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "sph/equation_term.hpp"
 #include "sph/storage.hpp"
@@ -31,6 +32,8 @@ class IDecomposition {
     virtual void combine(TimeStepLimits& limits) const = 0;
     /// The sum over every process (exact: integers).
     virtual std::int64_t sum(std::int64_t local) const = 0;
+    /// Every process's values, by rank, on every process.
+    virtual std::vector<std::vector<double>> allGather(std::span<const double> local) const = 0;
     /// Before a step (Run::step): migrates particles to their owners and rebuilds the halos when
     /// particles moved far enough, were added or removed (particlesChanged), or the storage is
     /// reordered (reorder: every process sets the keys of its particles and sorts them).

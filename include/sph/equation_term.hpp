@@ -90,8 +90,13 @@ inline Float diffusionTimeStep(Float factor, Float h, Float alpha) {
 /// neighbours.forEachNeighbourOf(i, f) calls f(j, dx = x_i - x_j, r2) for every j within the
 /// support radius (nearest images, i itself included), in increasing j.
 template <int Dim>
+class IDecomposition;
+
+/// `decomposition`: the run's processes (sph/decomposition.hpp), null on one process.
+template <int Dim>
 struct EvaluationContext {
     const VerletList<Dim>& neighbours;
+    const IDecomposition<Dim>* decomposition = nullptr;
 };
 
 template <int Dim>

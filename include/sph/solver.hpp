@@ -222,7 +222,7 @@ class Solver {
         neighbours_.update(
             storage.template getValue<Vec>(QuantityId::POSITION),
             [&](std::size_t n, const auto& body) { scheduler_.parallelFor(Size(n), 1, body); });
-        const EvaluationContext<Dim> context{neighbours_};
+        const EvaluationContext<Dim> context{neighbours_, decomposition_};
         equations_.forTerms([&](auto& term) { term.beginEvaluation(context); });
         for (std::size_t p = 0; p < passes_.size(); ++p) evaluatePass(storage, t, p, purity);
     }

@@ -70,10 +70,6 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
         throw AppError(ExitCode::USAGE,
                        "particles.evaluation \"symmetric\" cannot run on several processes: "
                        "remove it (the default gathers) or run without mpirun");
-    if (p.comm.size() > 1 && setup.model.movingBodies)
-        throw AppError(ExitCode::USAGE,
-                       "moving bodies (bodies[i].motion) run on one process: run without mpirun "
-                       "(threads: --threads)");
     if (p.comm.size() > 1 && setup.model.flowBoundaries)
         throw AppError(ExitCode::USAGE,
                        "inlets and outlets (boundaries type \"inlet\", \"outlet\") run on one "

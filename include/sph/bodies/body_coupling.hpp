@@ -4,7 +4,10 @@
 // moving body, F_j = -sum_{fluid i} m_i a_ij (sph/formulas/boundary_force.hpp), and from them
 // each body's force and torque about its reference point X:
 //   F_b = sum_{j in b} F_j,   tau_b = sum_{j in b} (x_j - X) x F_j
-// in storage order, on one thread, so the sums are the same for any number of threads.
+// in storage order, on one thread, so the sums are the same for any number of threads. On
+// several processes each sums the particles it owns, and every process adds all of them in the
+// order of a single process's storage (ORDER_KEY, then PARTICLE_ID: sph/particle_order.hpp), so
+// that every process integrates the same bodies, bitwise those of one process.
 // Once per step (postStep, before containment) each body advances by its motion
 // (rigid_body.hpp) and its particles follow rigidly: x_j = X + R r_j and
 // v_j = V + omega x (R r_j), the velocity the wall condition (Adami et al. 2012, eq. 22-23)
@@ -23,12 +26,15 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "sph/bodies/moving_bodies.hpp"
+#include "sph/decomposition.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/formulas/boundary_force.hpp"
 #include "sph/setup/fluid_geometry.hpp"
@@ -60,6 +66,7 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
     }
     void beginEvaluation(const EvaluationContext<Dim>& context) override {
         lists_ = &context.neighbours;
+        decomposition_ = context.decomposition;
     }
     void initialize(IScheduler&, Storage<Dim>&, Float) override {}
     void finalize(IScheduler& scheduler, Storage<Dim>& s, Float) override {
@@ -89,14 +96,26 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
     void sumParticleForces(IScheduler& scheduler, const Storage<Dim>& s);
     /// The contact law of body b's particles (none for a prescribed body).
     ContactLaw<Dim> contactLaw(int b) const;
-    /// Each body's number of particles (they keep their particles for the whole run).
+    /// Each body's number of particles over every process (they keep their particles for the
+    /// whole run).
     void countParticles(const Storage<Dim>& s) {
         if (!particleCount_.empty()) return;
         particleCount_.assign(bodies_->bodies.size(), 0);
-        for (int b : s.template getValue<int>(QuantityId::BODY_INDEX))
-            if (b >= 0) ++particleCount_[std::size_t(b)];
+        const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+        for (Size j = 0; j < s.size(); ++j)
+            if (body[j] >= 0 && owns(j)) ++particleCount_[std::size_t(body[j])];
+        if (decomposition_)
+            for (std::size_t& n : particleCount_)
+                n = std::size_t(decomposition_->sum(std::int64_t(n)));
     }
+    /// Whether this process owns particle j (a halo copy's owner sums it).
+    bool owns(Size j) const { return !decomposition_ || decomposition_->owned()[j]; }
     void sumBodyLoads(const Storage<Dim>& s);
+    /// The moving particles' loads, one record each: order key, id, body, the arm x_j - X,
+    /// the fluid's force, the contacts' force; every process's, in a single process's storage
+    /// order.
+    std::vector<double> loadRecords(const Storage<Dim>& s) const;
+    static constexpr std::size_t kRecord = 3 + 3 * Dim;
 
     std::shared_ptr<MovingBodies<Dim>> bodies_;
     std::vector<SolidBody<Dim>> shapes_;
@@ -104,6 +123,7 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
     Float alpha_, c0_, dx_;
     std::optional<RunKernel<Dim>> kernel_;
     const VerletList<Dim>* lists_ = nullptr;
+    const IDecomposition<Dim>* decomposition_ = nullptr;  ///< null on one process
     std::vector<Vec> particleForce_, particleContact_;
     std::vector<std::size_t> particleCount_;
     std::vector<Size> movingParticles_;  ///< of the evaluation
@@ -165,7 +185,7 @@ void RigidBodyCoupling<Dim>::sumParticleForces(IScheduler& scheduler, const Stor
     countParticles(s);
     movingParticles_.clear();  // in increasing index: the threads share them evenly
     for (Size j = 0; j < s.size(); ++j)
-        if (bodies_->moves(body[j])) movingParticles_.push_back(j);
+        if (bodies_->moves(body[j]) && owns(j)) movingParticles_.push_back(j);
     // One pass over each moving particle's neighbours: the fluid's force, and for a free
     // body the contacts with other solids, each summed in increasing neighbour index.
     withKernel<Dim>(kernel_->type, [&](auto kernel) {
@@ -202,18 +222,51 @@ ContactLaw<Dim> RigidBodyCoupling<Dim>::contactLaw(int b) const {
 }
 
 template <int Dim>
-void RigidBodyCoupling<Dim>::sumBodyLoads(const Storage<Dim>& s) {
+std::vector<double> RigidBodyCoupling<Dim>::loadRecords(const Storage<Dim>& s) const {
     const auto x = s.template getValue<Vec>(QuantityId::POSITION);
     const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    std::vector<double> records;
+    records.reserve(movingParticles_.size() * kRecord);
+    for (const Size j : movingParticles_) {
+        const bool keyed = decomposition_ != nullptr;  // one process: the storage's order
+        records.push_back(keyed ? s.template getValue<int>(QuantityId::ORDER_KEY)[j] : 0);
+        records.push_back(keyed ? s.template getValue<int>(QuantityId::PARTICLE_ID)[j] : 0);
+        records.push_back(body[j]);
+        for (const Vec& v : {x[j] - bodies_->bodies[body[j]].state.position, particleForce_[j],
+                             particleContact_[j]})
+            for (int k = 0; k < Dim; ++k) records.push_back(v[k]);
+    }
+    if (!decomposition_) return records;
+    // Each process's records come in its storage's order; merged by (key, id) they are in a
+    // single process's.
+    std::vector<std::array<double, kRecord>> all;
+    for (const std::vector<double>& mine : decomposition_->allGather(records))
+        for (std::size_t r = 0; r + kRecord <= mine.size(); r += kRecord)
+            all.emplace_back(),
+                std::copy_n(mine.begin() + std::ptrdiff_t(r), kRecord, all.back().begin());
+    std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) {
+        return std::tie(a[0], a[1]) < std::tie(b[0], b[1]);
+    });
+    records.clear();
+    for (const auto& r : all) records.insert(records.end(), r.begin(), r.end());
+    return records;
+}
+
+template <int Dim>
+void RigidBodyCoupling<Dim>::sumBodyLoads(const Storage<Dim>& s) {
     for (MovingBody<Dim>& b : bodies_->bodies)
         b.fluidForce = b.contactForce = Vec{}, b.fluidTorque = b.contactTorque = {};
-    for (const Size j : movingParticles_) {
-        MovingBody<Dim>& b = bodies_->bodies[body[j]];
-        const Vec arm = x[j] - b.state.position;
-        b.fluidForce += particleForce_[j];
-        b.fluidTorque += cross(arm, particleForce_[j]);
-        b.contactForce += particleContact_[j];
-        b.contactTorque += cross(arm, particleContact_[j]);
+    const std::vector<double> records = loadRecords(s);
+    for (std::size_t r = 0; r < records.size(); r += kRecord) {
+        MovingBody<Dim>& b = bodies_->bodies[std::size_t(records[r + 2])];
+        Vec arm, force, contact;
+        for (int k = 0; k < Dim; ++k)
+            arm[k] = records[r + 3 + k], force[k] = records[r + 3 + Dim + k],
+            contact[k] = records[r + 3 + 2 * Dim + k];
+        b.fluidForce += force;
+        b.fluidTorque += cross(arm, force);
+        b.contactForce += contact;
+        b.contactTorque += cross(arm, contact);
     }
 }
 

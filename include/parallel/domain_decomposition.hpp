@@ -155,6 +155,17 @@ class DomainDecomposition final : public sph::IDecomposition<Dim> {
 
     std::int64_t sum(std::int64_t local) const override { return comm_.sum(local); }
 
+    void shareAdded(sph::Storage<Dim>& s, Size first) const override {
+        std::vector<Size> mine(s.size() - first);
+        std::iota(mine.begin(), mine.end(), first);
+        Bytes packed;
+        packParticles(s, mine, packed);
+        std::vector<Size> before(first);
+        std::iota(before.begin(), before.end(), Size(0));
+        s.gather(before);
+        for (const Bytes& b : comm_.allGather(packed)) appendParticles(s, b);
+    }
+
     std::vector<std::vector<double>> allGather(std::span<const double> local) const override {
         Bytes mine(local.size_bytes());
         std::memcpy(mine.data(), local.data(), mine.size());

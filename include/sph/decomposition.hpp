@@ -34,6 +34,9 @@ class IDecomposition {
     virtual std::int64_t sum(std::int64_t local) const = 0;
     /// Every process's values, by rank, on every process.
     virtual std::vector<std::vector<double>> allGather(std::span<const double> local) const = 0;
+    /// Replaces the particles from `first` on (this process's additions) by every process's
+    /// additions, by rank, so that every process holds them alike (as beforeStep expects).
+    virtual void shareAdded(Storage<Dim>& storage, Size first) const = 0;
     /// Before a step (Run::step): migrates particles to their owners and rebuilds the halos when
     /// particles moved far enough, were added or removed (particlesChanged), or the storage is
     /// reordered (reorder: every process sets the keys of its particles and sorts them).

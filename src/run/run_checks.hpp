@@ -43,12 +43,14 @@ std::size_t emitParticles(RunParts<Dim>& p, double t) {
     return added;
 }
 
-/// Inlets and outlets exchange particles with the fluid after a step (FlowBoundaries::exchange);
-/// returns whether any particle changed.
+/// Inlets and outlets exchange particles with the fluid after a step (FlowBoundaries::exchange,
+/// each process its own particles); returns whether any particle of any process changed.
 template <int Dim>
 bool exchangeFlow(RunParts<Dim>& p, double t) {
     const auto& flow = p.setup->model.flowBoundaries;
-    return flow && flow->exchange(p.storage, t, nextParticleId(p));
+    if (!flow) return false;
+    const sph::IDecomposition<Dim>* processes = p.comm.size() > 1 ? p.decomposition.get() : nullptr;
+    return p.comm.any(flow->exchange(p.storage, t, nextParticleId(p), processes));
 }
 
 /// Non-finite values, collapsed steps and fluid beyond walls stop the run (checkHealth); so do

@@ -70,10 +70,6 @@ sph::Storage<Dim> setUpParticles(RunParts<Dim>& p) {
         throw AppError(ExitCode::USAGE,
                        "particles.evaluation \"symmetric\" cannot run on several processes: "
                        "remove it (the default gathers) or run without mpirun");
-    if (p.comm.size() > 1 && setup.model.flowBoundaries)
-        throw AppError(ExitCode::USAGE,
-                       "inlets and outlets (boundaries type \"inlet\", \"outlet\") run on one "
-                       "process: run without mpirun (threads: --threads)");
     // The process that owns each particle (parallel/domain_decomposition.hpp); -1 until the
     // particles are distributed.
     initial.template insert<int>(QuantityId::OWNER, sph::OrderEnum::ZERO, -1);

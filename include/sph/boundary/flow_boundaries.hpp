@@ -18,17 +18,26 @@
 // PairInputs); heat conduction skips them (adiabatic: the heat crossing is the heat carried).
 // Books (FlowBooks): the mass and the heat (sum m c T) that became fluid at inlets and stopped
 // being fluid at outlets, so that the fluid's mass at the end is start + in - out exactly.
+// Several processes: each exchanges every particle it holds, owned or halo copy, alike (a halo
+// copy equals its owner between steps), books those it owns and makes the buffer particles that
+// replace them, which every process then receives; the books' additions and the new particles'
+// ids follow a single process's storage order (ORDER_KEY, then PARTICLE_ID), so the books and ids
+// are bitwise those of one process.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <numeric>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 #include "sph/boundary/thermal_condition.hpp"
+#include "sph/decomposition.hpp"
 #include "sph/particle_order.hpp"
 #include "sph/terms/equation_of_state.hpp"
 #include "sph/terms/neighbour_gather.hpp"
@@ -114,22 +123,28 @@ class FlowBoundaries {
     /// replaced one buffer depth behind (new ids from nextId on, the order of the particles they
     /// replace), the others take the velocity and temperature of time t; fluid past an outlet
     /// becomes an outlet particle, one back inside becomes fluid; outlet particles past the
-    /// buffer are removed. Returns whether any particle changed kind or number.
-    bool exchange(Storage<Dim>& s, Float t, std::int64_t nextId) {
+    /// buffer are removed. With several processes (decomposition), see the top of the file.
+    /// Returns whether any particle of this process changed kind or number.
+    bool exchange(Storage<Dim>& s, Float t, std::int64_t nextId,
+                  const IDecomposition<Dim>* decomposition = nullptr) {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const auto x = s.template getValue<Vec>(QuantityId::POSITION);
         const auto heat = heatContent(s);
         std::vector<Size> keep, replaced;
+        std::vector<double> entries;  // the books' additions (BookEntry)
+        std::int64_t dropped = 0;
         bool changed = false;
         keep.reserve(s.size());
         for (Size i = 0; i < s.size(); ++i) {
             const int before = kind[i];
+            const bool owned = !decomposition || decomposition->owned()[i];
+            BookEntry e{};
             if (before == int(ParticleKind::INLET)) {
                 const FlowSide<Dim>& side = sides[sideOf(x[i], ParticleKind::INLET)];
                 if (side.beyond(x[i]) <= 0) {
                     becomeFluid(s, i);
-                    books.massIn += massOf(s, i), books.heatIn += heat(i);
-                    replaced.push_back(i);
+                    e.massIn = massOf(s, i), e.heatIn = heat(i);
+                    if (owned) replaced.push_back(i);  // the owner makes its successor
                 } else {
                     setBuffer(s, i, t);  // the profile at the new time and place
                 }
@@ -137,34 +152,123 @@ class FlowBoundaries {
                 const FlowSide<Dim>& side = sides[sideOf(x[i], ParticleKind::OUTLET)];
                 if (side.beyond(x[i]) <= 0) {
                     becomeFluid(s, i);
-                    books.massOut -= massOf(s, i), books.heatOut -= heat(i);
+                    e.massOut = -massOf(s, i), e.heatOut = -heat(i);
                 } else if (side.beyond(x[i]) > side.depth) {
-                    ++books.dropped, changed = true;
+                    dropped += owned, changed = true;
                     continue;  // not kept
                 }
             } else if (isFluid(before)) {
                 const int o = sideOf(x[i], ParticleKind::OUTLET);
                 if (o >= 0 && sides[o].beyond(x[i]) > 0) {
-                    books.massOut += massOf(s, i), books.heatOut += heat(i);
+                    e.massOut = massOf(s, i), e.heatOut = heat(i);
                     kind[i] = int(ParticleKind::OUTLET);
                     setBuffer(s, i, t);
                 }
             }
-            changed |= kind[i] != before;
+            if (kind[i] != before) {
+                if (owned) e.append(s, i, entries);
+                changed = true;
+            }
             keep.push_back(i);
         }
-        if (!changed) return false;
-        if (replaced.empty() && keep.size() == s.size()) return true;  // kinds changed only
+        addToBooks(entries, dropped, decomposition);
+        const std::uint64_t created = books.created;
+        const std::vector<std::int64_t> ids = newIds(s, replaced, nextId, decomposition);
+        // Every process takes part in sharing the new particles, any process's.
+        const bool share = decomposition && books.created > created;
+        if (!changed && !share) return false;
+        if (replaced.empty() && keep.size() == s.size() && !share)
+            return true;  // kinds changed only
         const Size kept = Size(keep.size());
         keep.insert(keep.end(), replaced.begin(), replaced.end());
         s.gather(keep);  // the kept particles, then copies of the crossed inlet particles
-        refill(s, kept, t, nextId);
+        refill(s, kept, t, ids);
+        if (share) shareNew(s, kept, *decomposition);
         return true;
     }
 
   private:
-    /// The copies from `first` on, of inlet particles that crossed: back into the buffer.
-    void refill(Storage<Dim>& s, Size first, Float t, std::int64_t nextId) {
+    /// What one particle's change of kind adds to the books, and the particle's place in a
+    /// single process's order (key, id).
+    struct BookEntry {
+        double massIn = 0, heatIn = 0, massOut = 0, heatOut = 0;
+        static constexpr std::size_t kSize = 6;
+        void append(const Storage<Dim>& s, Size i, std::vector<double>& out) const {
+            out.insert(out.end(), {double(s.template getValue<int>(QuantityId::ORDER_KEY)[i]),
+                                   double(s.template getValue<int>(QuantityId::PARTICLE_ID)[i]),
+                                   massIn, heatIn, massOut, heatOut});
+        }
+    };
+
+    /// Every process's records of `size` doubles, each beginning with (key, id), in a single
+    /// process's order; on one process (no decomposition) `mine` itself.
+    static std::vector<double> inSingleProcessOrder(std::vector<double> mine, std::size_t size,
+                                                    const IDecomposition<Dim>* decomposition) {
+        if (!decomposition) return mine;
+        std::vector<std::vector<double>> records;
+        for (const std::vector<double>& theirs : decomposition->allGather(mine))
+            for (std::size_t r = 0; r + size <= theirs.size(); r += size)
+                records.emplace_back(theirs.begin() + std::ptrdiff_t(r),
+                                     theirs.begin() + std::ptrdiff_t(r + size));
+        std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) {
+            return std::tie(a[0], a[1]) < std::tie(b[0], b[1]);
+        });
+        mine.clear();
+        for (const auto& r : records) mine.insert(mine.end(), r.begin(), r.end());
+        return mine;
+    }
+
+    /// Adds the entries (BookEntry records) of every process to the books, in a single
+    /// process's order, and the particles dropped by every process.
+    void addToBooks(std::vector<double> entries, std::int64_t dropped,
+                    const IDecomposition<Dim>* decomposition) {
+        constexpr std::size_t n = BookEntry::kSize;
+        entries = inSingleProcessOrder(std::move(entries), n, decomposition);
+        for (std::size_t r = 0; r < entries.size(); r += n) {
+            books.massIn += entries[r + 2], books.heatIn += entries[r + 3];
+            books.massOut += entries[r + 4], books.heatOut += entries[r + 5];
+        }
+        books.dropped += std::uint64_t(decomposition ? decomposition->sum(dropped) : dropped);
+    }
+
+    /// The ids of the buffer particles that replace `replaced` (this process's, in its storage
+    /// order): nextId on, in a single process's order of every process's replaced particles.
+    std::vector<std::int64_t> newIds(const Storage<Dim>& s, const std::vector<Size>& replaced,
+                                     std::int64_t nextId,
+                                     const IDecomposition<Dim>* decomposition) {
+        const auto key = s.template getValue<int>(QuantityId::ORDER_KEY);
+        const auto id = s.template getValue<int>(QuantityId::PARTICLE_ID);
+        std::vector<double> mine;
+        for (Size i : replaced) mine.insert(mine.end(), {double(key[i]), double(id[i])});
+        const std::vector<double> all = inSingleProcessOrder(mine, 2, decomposition);
+        std::vector<std::int64_t> ids;
+        std::size_t r = 0;  // this process's records come in the same order as in `all`
+        for (std::size_t k = 0; k < mine.size(); k += 2) {
+            while (all[r] != mine[k] || all[r + 1] != mine[k + 1]) r += 2;
+            ids.push_back(nextId + std::int64_t(r / 2));
+        }
+        books.created += all.size() / 2;
+        return ids;
+    }
+
+    /// Every process's new buffer particles (from `first` on) on every process, by id: last in
+    /// the particle order, as a single process holds them, and held alike (OWNER -1: the
+    /// decomposition gives each to the process whose box it is in).
+    static void shareNew(Storage<Dim>& s, Size first, const IDecomposition<Dim>& decomposition) {
+        decomposition.shareAdded(s, first);
+        const auto id = s.template getValue<int>(QuantityId::PARTICLE_ID);
+        std::vector<Size> order(s.size());
+        std::iota(order.begin(), order.end(), Size(0));
+        std::sort(order.begin() + first, order.end(),
+                  [&](Size a, Size b) { return id[a] < id[b]; });
+        s.gather(order);
+        auto owner = s.template getValue<int>(QuantityId::OWNER);
+        std::fill(owner.begin() + first, owner.end(), -1);
+    }
+
+    /// The copies from `first` on, of inlet particles that crossed: back into the buffer, with
+    /// the given ids.
+    void refill(Storage<Dim>& s, Size first, Float t, const std::vector<std::int64_t>& ids) {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
         const auto x = s.template getValue<Vec>(QuantityId::POSITION);
         const auto id = s.template getValue<int>(QuantityId::PARTICLE_ID);
@@ -173,9 +277,8 @@ class FlowBoundaries {
             const FlowSide<Dim>& side = sides[sideOf(x[i], ParticleKind::INLET)];
             kind[i] = int(ParticleKind::INLET);
             x[i] += side.outward() * side.depth;
-            id[i] = int(nextId++), key[i] = kNewParticleKey;
+            id[i] = int(ids[i - first]), key[i] = kNewParticleKey;
             setBuffer(s, i, t);
-            ++books.created;
         }
     }
 

@@ -6,8 +6,10 @@
 // reads what another process computed.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
+#include <tuple>
 #include <vector>
 
 #include "sph/equation_term.hpp"
@@ -43,5 +45,25 @@ class IDecomposition {
     /// Returns whether the storage changed (the solver's neighbour lists are then invalid).
     virtual bool beforeStep(Storage<Dim>& storage, bool reorder, bool particlesChanged) = 0;
 };
+
+/// Records of `size` doubles from every process, each beginning with its particle's ORDER_KEY
+/// and PARTICLE_ID, in a single process's storage order (sph/particle_order.hpp), on every
+/// process; without a decomposition (one process) `mine` itself, in the storage's order already.
+template <int Dim>
+std::vector<double> inSingleProcessOrder(std::vector<double> mine, std::size_t size,
+                                         const IDecomposition<Dim>* decomposition) {
+    if (!decomposition) return mine;
+    std::vector<std::vector<double>> records;
+    for (const std::vector<double>& theirs : decomposition->allGather(mine))
+        for (std::size_t r = 0; r + size <= theirs.size(); r += size)
+            records.emplace_back(theirs.begin() + std::ptrdiff_t(r),
+                                 theirs.begin() + std::ptrdiff_t(r + size));
+    std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) {
+        return std::tie(a[0], a[1]) < std::tie(b[0], b[1]);
+    });
+    mine.clear();
+    for (const auto& r : records) mine.insert(mine.end(), r.begin(), r.end());
+    return mine;
+}
 
 }  // namespace num::sph

@@ -26,11 +26,9 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <tuple>
 #include <vector>
 
 #include "sph/bodies/moving_bodies.hpp"
@@ -225,31 +223,22 @@ template <int Dim>
 std::vector<double> RigidBodyCoupling<Dim>::loadRecords(const Storage<Dim>& s) const {
     const auto x = s.template getValue<Vec>(QuantityId::POSITION);
     const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
+    // One process: the storage's order is the order, no keys needed.
+    const auto key =
+        decomposition_ ? s.template getValue<int>(QuantityId::ORDER_KEY) : ArrayView<const int>();
+    const auto id =
+        decomposition_ ? s.template getValue<int>(QuantityId::PARTICLE_ID) : ArrayView<const int>();
     std::vector<double> records;
     records.reserve(movingParticles_.size() * kRecord);
     for (const Size j : movingParticles_) {
-        const bool keyed = decomposition_ != nullptr;  // one process: the storage's order
-        records.push_back(keyed ? s.template getValue<int>(QuantityId::ORDER_KEY)[j] : 0);
-        records.push_back(keyed ? s.template getValue<int>(QuantityId::PARTICLE_ID)[j] : 0);
+        records.push_back(decomposition_ ? key[j] : 0);
+        records.push_back(decomposition_ ? id[j] : 0);
         records.push_back(body[j]);
         for (const Vec& v : {x[j] - bodies_->bodies[body[j]].state.position, particleForce_[j],
                              particleContact_[j]})
             for (int k = 0; k < Dim; ++k) records.push_back(v[k]);
     }
-    if (!decomposition_) return records;
-    // Each process's records come in its storage's order; merged by (key, id) they are in a
-    // single process's.
-    std::vector<std::array<double, kRecord>> all;
-    for (const std::vector<double>& mine : decomposition_->allGather(records))
-        for (std::size_t r = 0; r + kRecord <= mine.size(); r += kRecord)
-            all.emplace_back(),
-                std::copy_n(mine.begin() + std::ptrdiff_t(r), kRecord, all.back().begin());
-    std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) {
-        return std::tie(a[0], a[1]) < std::tie(b[0], b[1]);
-    });
-    records.clear();
-    for (const auto& r : all) records.insert(records.end(), r.begin(), r.end());
-    return records;
+    return inSingleProcessOrder<Dim>(std::move(records), kRecord, decomposition_);
 }
 
 template <int Dim>

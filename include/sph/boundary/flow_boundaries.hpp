@@ -26,14 +26,12 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
-#include <tuple>
 #include <vector>
 
 #include "sph/boundary/thermal_condition.hpp"
@@ -128,7 +126,6 @@ class FlowBoundaries {
     bool exchange(Storage<Dim>& s, Float t, std::int64_t nextId,
                   const IDecomposition<Dim>* decomposition = nullptr) {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
-        const auto x = s.template getValue<Vec>(QuantityId::POSITION);
         const auto heat = heatContent(s);
         std::vector<Size> keep, replaced;
         std::vector<double> entries;  // the books' additions (BookEntry)
@@ -139,32 +136,13 @@ class FlowBoundaries {
             const int before = kind[i];
             const bool owned = !decomposition || decomposition->owned()[i];
             BookEntry e{};
-            if (before == int(ParticleKind::INLET)) {
-                const FlowSide<Dim>& side = sides[sideOf(x[i], ParticleKind::INLET)];
-                if (side.beyond(x[i]) <= 0) {
-                    becomeFluid(s, i);
-                    e.massIn = massOf(s, i), e.heatIn = heat(i);
-                    if (owned) replaced.push_back(i);  // the owner makes its successor
-                } else {
-                    setBuffer(s, i, t);  // the profile at the new time and place
-                }
-            } else if (before == int(ParticleKind::OUTLET)) {
-                const FlowSide<Dim>& side = sides[sideOf(x[i], ParticleKind::OUTLET)];
-                if (side.beyond(x[i]) <= 0) {
-                    becomeFluid(s, i);
-                    e.massOut = -massOf(s, i), e.heatOut = -heat(i);
-                } else if (side.beyond(x[i]) > side.depth) {
-                    dropped += owned, changed = true;
-                    continue;  // not kept
-                }
-            } else if (isFluid(before)) {
-                const int o = sideOf(x[i], ParticleKind::OUTLET);
-                if (o >= 0 && sides[o].beyond(x[i]) > 0) {
-                    e.massOut = massOf(s, i), e.heatOut = heat(i);
-                    kind[i] = int(ParticleKind::OUTLET);
-                    setBuffer(s, i, t);
-                }
+            const Fate fate = update(s, i, t, heat, e);
+            if (fate == Fate::REMOVED) {
+                dropped += owned, changed = true;
+                continue;
             }
+            if (fate == Fate::CROSSED_INLET && owned)
+                replaced.push_back(i);  // the owner replaces it
             if (kind[i] != before) {
                 if (owned) e.append(s, i, entries);
                 changed = true;
@@ -200,22 +178,40 @@ class FlowBoundaries {
         }
     };
 
-    /// Every process's records of `size` doubles, each beginning with (key, id), in a single
-    /// process's order; on one process (no decomposition) `mine` itself.
-    static std::vector<double> inSingleProcessOrder(std::vector<double> mine, std::size_t size,
-                                                    const IDecomposition<Dim>* decomposition) {
-        if (!decomposition) return mine;
-        std::vector<std::vector<double>> records;
-        for (const std::vector<double>& theirs : decomposition->allGather(mine))
-            for (std::size_t r = 0; r + size <= theirs.size(); r += size)
-                records.emplace_back(theirs.begin() + std::ptrdiff_t(r),
-                                     theirs.begin() + std::ptrdiff_t(r + size));
-        std::sort(records.begin(), records.end(), [](const auto& a, const auto& b) {
-            return std::tie(a[0], a[1]) < std::tie(b[0], b[1]);
-        });
-        mine.clear();
-        for (const auto& r : records) mine.insert(mine.end(), r.begin(), r.end());
-        return mine;
+    enum class Fate { KEPT, CROSSED_INLET, REMOVED };
+
+    /// One particle after the step (exchange): its new kind and imposed values, and what it
+    /// adds to the books (e).
+    template <class Heat>
+    Fate update(Storage<Dim>& s, Size i, Float t, const Heat& heat, BookEntry& e) {
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const auto x = s.template getValue<Vec>(QuantityId::POSITION);
+        if (kind[i] == int(ParticleKind::INLET)) {
+            if (sides[sideOf(x[i], ParticleKind::INLET)].beyond(x[i]) <= 0) {
+                becomeFluid(s, i);
+                e.massIn = massOf(s, i), e.heatIn = heat(i);
+                return Fate::CROSSED_INLET;
+            }
+            setBuffer(s, i, t);  // the profile at the new time and place
+            return Fate::KEPT;
+        }
+        if (kind[i] == int(ParticleKind::OUTLET)) {
+            const FlowSide<Dim>& side = sides[sideOf(x[i], ParticleKind::OUTLET)];
+            if (side.beyond(x[i]) > side.depth) return Fate::REMOVED;
+            if (side.beyond(x[i]) <= 0) {
+                becomeFluid(s, i);
+                e.massOut = -massOf(s, i), e.heatOut = -heat(i);
+            }
+            return Fate::KEPT;
+        }
+        if (!isFluid(kind[i])) return Fate::KEPT;
+        const int o = sideOf(x[i], ParticleKind::OUTLET);
+        if (o >= 0 && sides[o].beyond(x[i]) > 0) {
+            e.massOut = massOf(s, i), e.heatOut = heat(i);
+            kind[i] = int(ParticleKind::OUTLET);
+            setBuffer(s, i, t);
+        }
+        return Fate::KEPT;
     }
 
     /// Adds the entries (BookEntry records) of every process to the books, in a single
@@ -223,7 +219,7 @@ class FlowBoundaries {
     void addToBooks(std::vector<double> entries, std::int64_t dropped,
                     const IDecomposition<Dim>* decomposition) {
         constexpr std::size_t n = BookEntry::kSize;
-        entries = inSingleProcessOrder(std::move(entries), n, decomposition);
+        entries = inSingleProcessOrder<Dim>(std::move(entries), n, decomposition);
         for (std::size_t r = 0; r < entries.size(); r += n) {
             books.massIn += entries[r + 2], books.heatIn += entries[r + 3];
             books.massOut += entries[r + 4], books.heatOut += entries[r + 5];
@@ -240,7 +236,7 @@ class FlowBoundaries {
         const auto id = s.template getValue<int>(QuantityId::PARTICLE_ID);
         std::vector<double> mine;
         for (Size i : replaced) mine.insert(mine.end(), {double(key[i]), double(id[i])});
-        const std::vector<double> all = inSingleProcessOrder(mine, 2, decomposition);
+        const std::vector<double> all = inSingleProcessOrder<Dim>(mine, 2, decomposition);
         std::vector<std::int64_t> ids;
         std::size_t r = 0;  // this process's records come in the same order as in `all`
         for (std::size_t k = 0; k < mine.size(); k += 2) {

@@ -50,14 +50,6 @@ std::vector<double> bodyHeat(const sph::Storage<Dim>& s, std::size_t bodies) {
     return heat;
 }
 
-/// A CSV field, quoted where needed (RFC 4180).
-std::string field(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-    std::string q = "\"";
-    for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-}
-
 }  // namespace
 
 template <int Dim>
@@ -79,7 +71,7 @@ void BodiesWriter<Dim>::write(const sph::Storage<Dim>& storage, const std::vecto
         const sph::MovingBody<Dim>& b = bodies_->bodies[i];
         if (!b.motion.moves()) continue;
         const sph::BodyState<Dim>& s = b.state;
-        rows += formatted("%.10g", t) + "," + field(b.name) + numbers(s.position) +
+        rows += formatted("%.10g", t) + "," + csvField(b.name) + numbers(s.position) +
                 numbers(s.velocity) + attitude(s.attitude) + numbers(s.spin) +
                 numbers(b.fluidForce) + numbers(b.fluidTorque) + formatted(",%.10g", heat[i]) +
                 "\n";

@@ -1,5 +1,5 @@
-// Rows of a CSV file whose first column is the time (probes.csv, bodies.csv). Internal to
-// numerics_io.
+// Fields and rows of a CSV file whose first column is the time (probes.csv, bodies.csv).
+// Internal to numerics_io.
 #pragma once
 
 #include <cstdlib>
@@ -9,6 +9,14 @@
 #include "io/file.hpp"
 
 namespace num::io {
+
+/// A CSV field, quoted where needed (RFC 4180): a name with a comma, quote or line break.
+inline std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string q = "\"";
+    for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
 
 /// Keeps the header and the rows up to time t (to round-off) of the CSV file at `path`, for a
 /// restart from t; false when there is no such file.

@@ -12,23 +12,16 @@ namespace num::io {
 
 template <int Dim>
 void ProbesWriter<Dim>::start() {
-    // Quoted where needed (RFC 4180), although probe names are plain words.
-    auto field = [](const std::string& name) {
-        if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
-        std::string q = "\"";
-        for (char c : name) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-        return q + "\"";
-    };
     std::string header = "time";
     const char* axes = "xyz";
     for (const auto& p : probes_)
         for (const auto& f : p.fields) {
             if (f == "velocity" || f == "force")
                 for (int k = 0; k < Dim; ++k)
-                    header += "," + field(p.name + (f == "force" ? ".force_" : ".v") +
-                                          std::string(1, axes[k]));
+                    header += "," + csvField(p.name + (f == "force" ? ".force_" : ".v") +
+                                             std::string(1, axes[k]));
             else
-                header += "," + field(p.name + "." + f);
+                header += "," + csvField(p.name + "." + f);
         }
     writeFileAtomically(c_.path("probes.csv"), header + "\n");
 }

@@ -126,6 +126,7 @@ class FlowBoundaries {
     bool exchange(Storage<Dim>& s, Float t, std::int64_t nextId,
                   const IDecomposition<Dim>* decomposition = nullptr) {
         const auto kind = s.template getValue<int>(QuantityId::KIND);
+        const auto x = s.template getValue<Vec>(QuantityId::POSITION);
         const auto heat = heatContent(s);
         std::vector<Size> keep, replaced;
         std::vector<double> entries;  // the books' additions (BookEntry)
@@ -136,7 +137,7 @@ class FlowBoundaries {
             const int before = kind[i];
             const bool owned = !decomposition || decomposition->owned()[i];
             BookEntry e{};
-            const Fate fate = update(s, i, t, heat, e);
+            const Fate fate = update(s, kind, x, i, t, heat, e);
             if (fate == Fate::REMOVED) {
                 dropped += owned, changed = true;
                 continue;
@@ -181,11 +182,10 @@ class FlowBoundaries {
     enum class Fate { KEPT, CROSSED_INLET, REMOVED };
 
     /// One particle after the step (exchange): its new kind and imposed values, and what it
-    /// adds to the books (e).
+    /// adds to the books (e). kind and x: the storage's.
     template <class Heat>
-    Fate update(Storage<Dim>& s, Size i, Float t, const Heat& heat, BookEntry& e) {
-        const auto kind = s.template getValue<int>(QuantityId::KIND);
-        const auto x = s.template getValue<Vec>(QuantityId::POSITION);
+    Fate update(Storage<Dim>& s, ArrayView<int> kind, ArrayView<const Vec> x, Size i, Float t,
+                const Heat& heat, BookEntry& e) {
         if (kind[i] == int(ParticleKind::INLET)) {
             if (sides[sideOf(x[i], ParticleKind::INLET)].beyond(x[i]) <= 0) {
                 becomeFluid(s, i);

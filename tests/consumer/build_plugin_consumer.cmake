@@ -4,7 +4,8 @@
 # are built with numerics_add_plugin against that prefix alone and run with the built fluid_sim.
 # Run with
 #   cmake -DNUMERICS_SOURCE_DIR=<src> -DWORK_DIR=<scratch> -DFLUID_SIM=<fluid_sim>
-#         [-DGENERATOR=<gen>] [-DCXX_COMPILER=<c++>] -P build_plugin_consumer.cmake
+#         [-DBUILD_DIR=<built numerics tree>] [-DGENERATOR=<gen>] [-DCXX_COMPILER=<c++>]
+#         -P build_plugin_consumer.cmake
 # Everything comes from the local machine; nothing is downloaded.
 cmake_minimum_required(VERSION 3.25)
 
@@ -41,16 +42,21 @@ endfunction()
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
 
-# 1. Install numerics into an empty prefix (no apps, tests, benchmarks or examples; no CUDA back
-#    end, which a plugin does not need and the build tree's tests cover).
+# 1. Install numerics into an empty prefix: the build tree's libraries, headers and CMake
+#    package when BUILD_DIR names a built tree (as `cmake --install` does after a user's build),
+#    else numerics::io built here (no apps, tests, benchmarks, examples or CUDA back end).
 set(prefix ${WORK_DIR}/prefix)
-run_step("configure numerics" ${CMAKE_COMMAND} -S ${NUMERICS_SOURCE_DIR} -B ${WORK_DIR}/numerics
-         ${common_args} -DCMAKE_INSTALL_PREFIX=${prefix} -DNUMERICS_BUILD_IO=ON
-         -DNUMERICS_BUILD_APPS=OFF -DNUMERICS_BUILD_TESTS=OFF -DNUMERICS_BUILD_BENCH=OFF
-         -DNUMERICS_BUILD_EXAMPLES=OFF -DNUMERICS_BUILD_PYTHON=OFF -DNUMERICS_WITH_CUDA=OFF)
-run_step("build numerics" ${CMAKE_COMMAND} --build ${WORK_DIR}/numerics -j 2)
-run_step("install numerics" ${CMAKE_COMMAND} --install ${WORK_DIR}/numerics)
-file(REMOVE_RECURSE ${WORK_DIR}/numerics)
+if(BUILD_DIR)
+  run_step("install numerics" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+else()
+  run_step("configure numerics" ${CMAKE_COMMAND} -S ${NUMERICS_SOURCE_DIR} -B ${WORK_DIR}/numerics
+           ${common_args} -DCMAKE_INSTALL_PREFIX=${prefix} -DNUMERICS_BUILD_IO=ON
+           -DNUMERICS_BUILD_APPS=OFF -DNUMERICS_BUILD_TESTS=OFF -DNUMERICS_BUILD_BENCH=OFF
+           -DNUMERICS_BUILD_EXAMPLES=OFF -DNUMERICS_BUILD_PYTHON=OFF -DNUMERICS_WITH_CUDA=OFF)
+  run_step("build numerics" ${CMAKE_COMMAND} --build ${WORK_DIR}/numerics -j 2)
+  run_step("install numerics" ${CMAKE_COMMAND} --install ${WORK_DIR}/numerics)
+  file(REMOVE_RECURSE ${WORK_DIR}/numerics)
+endif()
 
 # 2. The walkthrough's files, from docs/extending.md.
 run_step("extract the walkthrough" /usr/bin/python3

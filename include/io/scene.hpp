@@ -78,11 +78,12 @@ struct FluidBlock : SceneShape<Dim> {
     VectorField<Dim> velocity{};
 };
 
-/// A spring or mooring line from a fixed anchor to a point of a moving body (bodies[i].motion
-/// .springs).
+/// A spring or mooring line from an anchor, fixed or on another body, to a point of a moving
+/// body (bodies[i].motion.springs).
 template <int Dim>
 struct SpringSpec {
-    SceneVec<Dim> anchor{};
+    SceneVec<Dim> anchor{};  ///< at t = 0
+    int anchorBody = -1;     ///< the index of the body that holds the anchor; -1: none (fixed)
     std::optional<SceneVec<Dim>> point;  ///< on the body at t = 0; empty: its reference point
     double stiffness = 0, damping = 0;
     std::optional<double> length;  ///< rest length; empty: the distance at t = 0

@@ -45,10 +45,11 @@ VectorField<Dim> readMotionVelocity(const At& a, const char* vars) {
 
 template <int Dim>
 SpringSpec<Dim> readSpring(const At& a) {
-    a.object({"anchor", "point", "stiffness", "damping", "length", "mooring"},
+    a.object({"anchor", "anchor_body", "point", "stiffness", "damping", "length", "mooring"},
              {"anchor", "stiffness"});
     SpringSpec<Dim> k;
     k.anchor = readVec<Dim>(a["anchor"], "m");
+    if (a.has("anchor_body")) k.anchorBody = int(a["anchor_body"].integer(0, 1 << 30));
     if (a.has("point")) k.point = readVec<Dim>(a["point"], "m");
     k.stiffness = a["stiffness"].number(0, 1e15, true, "N/m");
     k.damping = a.number("damping", 0, 0, 1e15, false, "N s/m");

@@ -187,11 +187,15 @@ sph::MovingBody<Dim> prescribedBody(const Body<Dim>& b, double dx) {
     return body;
 }
 
+/// Body b's springs; an anchor on another body is kept as its offset from that body's reference
+/// point at t = 0.
 template <int Dim>
-void addSprings(const BodyMotionSpec<Dim>& spec, sph::MovingBody<Dim>& body) {
+void addSprings(const BodyMotionSpec<Dim>& spec, std::size_t b, sph::MovingBodies<Dim>& all) {
+    sph::MovingBody<Dim>& body = all.bodies[b];
     for (const SpringSpec<Dim>& s : spec.springs) {
         sph::BodySpring<Dim> k;
-        k.anchor = s.anchor;
+        k.anchor = s.anchor, k.anchorBody = s.anchorBody;
+        if (s.anchorBody >= 0) k.anchor = s.anchor - all.bodies[std::size_t(s.anchorBody)].initialPosition;
         const SceneVec<Dim> point = s.point.value_or(body.initialPosition);
         k.point = point - body.initialPosition;
         k.stiffness = s.stiffness, k.damping = s.damping, k.slack = s.mooring;
@@ -223,12 +227,12 @@ std::shared_ptr<sph::MovingBodies<Dim>> makeMovingBodies(const Scene<Dim>& scene
         sph::MovingBody<Dim> body;
         if (b.motion.type == sph::MotionType::FREE) body = freeBody(b, scene.spacing);
         if (b.motion.type == sph::MotionType::PRESCRIBED) body = prescribedBody(b, scene.spacing);
-        addSprings(b.motion, body);
         body.name = bodyName(scene, i);
         body.state.position = body.initialPosition;
         body.reach = reachFrom(b, body.initialPosition);
         out->bodies.push_back(std::move(body));
     }
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i) addSprings(scene.bodies[i].motion, i, *out);
     if (!out->anyMoves()) return nullptr;
     return out;
 }

@@ -338,6 +338,24 @@ void checkProbeIndex(const Scene<Dim>& s, std::size_t i, const char* key, int in
             std::to_string(index));
 }
 
+/// A spring's anchor_body names another of the scene's bodies.
+template <int Dim>
+void checkSpringAnchors(const Scene<Dim>& s) {
+    for (std::size_t b = 0; b < s.bodies.size(); ++b) {
+        const std::vector<SpringSpec<Dim>>& springs = s.bodies[b].motion.springs;
+        for (std::size_t k = 0; k < springs.size(); ++k) {
+            const int holder = springs[k].anchorBody;
+            if (holder < int(s.bodies.size()) && holder != int(b)) continue;
+            throw sceneError(s.file,
+                             "bodies[" + std::to_string(b) + "].motion.springs[" +
+                                 std::to_string(k) + "].anchor_body",
+                             "the index of another of the scene's " +
+                                 std::to_string(s.bodies.size()) + " bodies (from 0)",
+                             std::to_string(holder));
+        }
+    }
+}
+
 template <int Dim>
 void checkProbes(const Scene<Dim>& s) {
     for (std::size_t i = 0; i < s.probes.size(); ++i) {
@@ -399,6 +417,7 @@ void checkSceneGeometry(const Scene<Dim>& s) {
     const double estimate = checkFluidBlocks(s);
     checkEmitters(s);
     checkProbes(s);
+    checkSpringAnchors(s);
     checkFluidAmount(s, estimate);
     checkPeriodicAxes(s);
     checkFlowSides(s);

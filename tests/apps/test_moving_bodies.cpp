@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -183,4 +184,40 @@ TEST(MovingBodies, AHeavyBodyComesToRestOnTheFloor) {
     const double y = std::stod(last[3]), speed = std::hypot(std::stod(last[4]), std::stod(last[5]));
     EXPECT_NEAR(y, 0.04, 0.5 * 0.02) << "the centre half its height above the floor";
     EXPECT_LT(speed, 0.02);
+}
+
+// Two boxes in air (no gravity) joined by a stretched spring: the separation swings as
+// L0 + A cos(omega t), omega = sqrt(k / mu), mu = m1 m2 / (m1 + m2) (rigid_body.hpp), within
+// 5 % of A (the symplectic Euler's phase lag, omega dt / 2 ~ 0.01 rad, and the sampling);
+// the pulls are equal and opposite, so the centre stays where it is (to 1e-12 m).
+TEST(MovingBodies, ASpringBetweenTwoBodiesPullsBoth) {
+    json j = sceneJson(2);
+    j["gravity"] = {0, 0};
+    j["physics"] = {{"max_speed", 1}};
+    j["fluids"][0]["max"] = {0.6, 0.1};
+    j["time"]["end"] = 0.25;
+    j["output"]["every"] = 0.025;
+    const json spring = {
+        {"anchor", {0.14, 0.3}}, {"anchor_body", 0}, {"stiffness", 1000}, {"length", 0.2}};
+    j["bodies"] = json::array(
+        {{{"shape", "box"}, {"min", {0.1, 0.26}}, {"max", {0.18, 0.34}},
+          {"motion", {{"type", "free"}, {"density", 500}}}},
+         {{"shape", "box"}, {"min", {0.38, 0.26}}, {"max", {0.46, 0.34}},
+          {"motion", {{"type", "free"}, {"density", 500}, {"springs", {spring}}}}}});
+    ASSERT_EQ(runText("two_body_spring", j).code, 0);
+    const auto rows = csvRows(readFile(outFile("two_body_spring", "bodies.csv")));
+    ASSERT_EQ(rows.size(), 1u + 2 * 11);
+    const double mu = 0.08 * 0.08 * 500 / 2, omega = std::sqrt(1000 / mu), A = 0.28 - 0.2;
+    for (std::size_t r = 1; r + 1 < rows.size(); r += 2) {
+        const double t = std::stod(rows[r][0]), xa = std::stod(rows[r][2]),
+                     xb = std::stod(rows[r + 1][2]);
+        EXPECT_NEAR(xb - xa, 0.2 + A * std::cos(omega * t), 0.05 * A) << "t = " << t;
+        EXPECT_NEAR((xa + xb) / 2, 0.28, 1e-12) << "t = " << t;
+    }
+    j["bodies"][1]["motion"]["springs"][0]["anchor_body"] = 1;
+    expectOneLine(runText("spring_to_itself", j), kScene,
+                  {"bodies[1].motion.springs[0].anchor_body", "another"});
+    j["bodies"][1]["motion"]["springs"][0]["anchor_body"] = 7;
+    expectOneLine(runText("spring_to_nothing", j), kScene,
+                  {"bodies[1].motion.springs[0].anchor_body", "2 bodies"});
 }

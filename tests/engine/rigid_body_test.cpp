@@ -99,32 +99,72 @@ TEST(RigidBody, PrescribedMotionTravelsItsIntegral) {
     EXPECT_EQ(s.velocity[0], 0.3);
 }
 
+namespace {
+
+/// Adds a body with motion m at `position`, as the coupling holds it.
+void addBody(MovingBodies<2>& bodies, const BodyMotion<2>& m, const Vector<2>& position) {
+    MovingBody<2> body;
+    body.motion = m;
+    body.state.position = position;
+    bodies.bodies.push_back(body);
+}
+
+/// One step dt of every free body under its springs alone.
+void stepSprings(MovingBodies<2>& bodies, double dt) {
+    const auto pulls = bodies.springPulls();
+    for (std::size_t b = 0; b < bodies.bodies.size(); ++b)
+        advanceFree(bodies.bodies[b].motion, bodies.bodies[b].state, Vector<2>{}, Spin<2>{},
+                    Vector<2>{}, dt, std::span(pulls[b]));
+}
+
+}  // namespace
+
 // A mass on a spring: T = 2 pi sqrt(M / k) (within 0.1 %).
 TEST(RigidBody, SpringOscillatesAtItsPeriod) {
     BodyMotion<2> m = freeDisc(2, 0.05);
     m.springs.push_back({.anchor = Vector<2>{{-1, 0}}, .stiffness = 50, .restLength = 1});
-    BodyState<2> s;
-    s.position = Vector<2>{{0.1, 0}};
+    MovingBodies<2> bodies;
+    addBody(bodies, m, Vector<2>{{0.1, 0}});
     const double dt = 1e-4;
-    const double T = period([&] { advanceFree(m, s, Vector<2>{}, Spin<2>{}, Vector<2>{}, dt); },
-                            [&] { return s.position[0]; }, dt, 100000);
+    const double T = period([&] { stepSprings(bodies, dt); },
+                            [&] { return bodies.bodies[0].state.position[0]; }, dt, 100000);
     EXPECT_NEAR(T, 2 * pi * std::sqrt(2.0 / 50), 1e-3 * T);
+}
+
+// Two bodies joined by a spring: the relative motion has T = 2 pi sqrt(mu / k),
+// mu = m1 m2 / (m1 + m2) (within 0.1 %); the pulls are equal and opposite, so the centre of mass
+// stays where it is (to round-off).
+TEST(RigidBody, SpringBetweenTwoBodiesKeepsTheirCentreOfMass) {
+    MovingBodies<2> bodies;
+    addBody(bodies, freeDisc(2, 0.05), Vector<2>{{0, 0}});
+    BodyMotion<2> second = freeDisc(3, 0.05);
+    second.springs.push_back(
+        {.anchor = Vector<2>{}, .anchorBody = 0, .stiffness = 50, .restLength = 1});
+    addBody(bodies, second, Vector<2>{{1.1, 0}});
+    const auto centre = [&] {
+        return (2 * bodies.bodies[0].state.position[0] + 3 * bodies.bodies[1].state.position[0]) / 5;
+    };
+    const double start = centre(), dt = 1e-4;
+    const double T = period(
+        [&] { stepSprings(bodies, dt); },
+        [&] { return bodies.bodies[1].state.position[0] - bodies.bodies[0].state.position[0] - 1; },
+        dt, 100000);
+    EXPECT_NEAR(T, 2 * pi * std::sqrt(2.0 * 3 / 5 / 50), 1e-3 * T);
+    EXPECT_NEAR(centre(), start, 1e-12);
 }
 
 // A mooring line is slack when shorter than its rest length.
 TEST(RigidBody, MooringLinePullsOnlyWhenTaut) {
     BodyMotion<2> m = freeDisc(1, 0.1);
-    m.springs.push_back(
-        {.anchor = Vector<2>{{0, -1}}, .stiffness = 100, .restLength = 1, .slack = true});
+    const BodySpring<2> line{
+        .anchor = Vector<2>{{0, -1}}, .stiffness = 100, .restLength = 1, .slack = true};
     BodyState<2> s;
     s.position = Vector<2>{{0, -0.5}};
-    Vector<2> f{};
-    Spin<2> tau{};
-    addSpringLoads(m, s, f, tau);
-    EXPECT_EQ(f[1], 0);
+    EXPECT_FALSE(springPull(line, s, line.anchor, Vector<2>{}).has_value());
     s.position = Vector<2>{{0, 0.1}};
-    addSpringLoads(m, s, f, tau);
-    EXPECT_NEAR(f[1], -10, 1e-12);
+    const std::optional<Pull<2>> pull = springPull(line, s, line.anchor, Vector<2>{});
+    ASSERT_TRUE(pull.has_value());
+    EXPECT_NEAR(pull->force[1], -10, 1e-12);
 }
 
 // A rod hinged at one end, a compound pendulum: T = 2 pi sqrt(I_P / (M g d)) for small angles,

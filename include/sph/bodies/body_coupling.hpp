@@ -73,10 +73,12 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
     }
     void postStep(IScheduler& scheduler, Storage<Dim>& s, Float t, Float dt) override {
         const Vec g = gravity_ ? gravity_(t) : Vec{};
-        for (MovingBody<Dim>& b : bodies_->bodies) {
+        const std::vector<std::vector<Pull<Dim>>> pulls = bodies_->springPulls();
+        for (std::size_t i = 0; i < bodies_->bodies.size(); ++i) {
+            MovingBody<Dim>& b = bodies_->bodies[i];
             if (b.motion.type == MotionType::FREE)
                 advanceFree(b.motion, b.state, b.fluidForce + b.contactForce,
-                            b.fluidTorque + b.contactTorque, g, dt);
+                            b.fluidTorque + b.contactTorque, g, dt, std::span(pulls[i]));
             else if (b.motion.type == MotionType::PRESCRIBED)
                 advancePrescribed(b.motion, b.state, t, dt);
         }

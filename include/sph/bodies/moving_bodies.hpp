@@ -81,6 +81,30 @@ class MovingBodies {
         }
     }
 
+    /// The springs' pulls on every body at the bodies' present states: a spring of body b pulls
+    /// b at its point and, when its anchor is on body a, pulls a back at the anchor
+    /// (rigid_body.hpp).
+    std::vector<std::vector<Pull<Dim>>> springPulls() const {
+        std::vector<std::vector<Pull<Dim>>> pulls(bodies.size());
+        for (std::size_t b = 0; b < bodies.size(); ++b)
+            for (const BodySpring<Dim>& k : bodies[b].motion.springs) {
+                Vector<Dim> anchor = k.anchor, anchorVelocity{}, anchorArm{};
+                if (k.anchorBody >= 0) {
+                    const BodyState<Dim>& holder = bodies[std::size_t(k.anchorBody)].state;
+                    anchorArm = holder.offset(k.anchor);
+                    anchor = holder.position + anchorArm;
+                    anchorVelocity = holder.velocityAt(anchorArm);
+                }
+                const std::optional<Pull<Dim>> pull =
+                    springPull(k, bodies[b].state, anchor, anchorVelocity);
+                if (!pull) continue;
+                pulls[b].push_back(*pull);
+                if (k.anchorBody >= 0)
+                    pulls[std::size_t(k.anchorBody)].push_back({anchorArm, -pull->force});
+            }
+        return pulls;
+    }
+
   private:
     template <int N>
     static void append(std::vector<double>& out, const Vec<Float, N>& v) {

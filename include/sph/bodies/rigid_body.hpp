@@ -7,15 +7,18 @@
 //   d(I_w omega)/dt = tau  (world frame: I_w domega/dt = tau - omega x I_w omega),
 //   tau = sum (x_k - X) x F_k about the reference point X (the centre of mass unless hinged);
 //   a hinge about the unit axis a: I_a domega_a/dt = tau . a, I_a = a^T I_w a (2D: a = z).
-// Spring or mooring line from the anchor A to the body point P (Hooke's law with damping):
-//   F = -[k (l - L0) + c (v_P . e)] e,  e = (P - A) / l; a mooring line (slack) pulls only
-//   when l > L0.
+// Spring or mooring line from the anchor A (a world point, or a point of another body) to the
+// body point P (Hooke's law with damping):
+//   F = -[k (l - L0) + c ((v_P - v_A) . e)] e,  e = (P - A) / l; a mooring line (slack) pulls
+//   only when l > L0; a body that holds the anchor is pulled by -F at A.
 // Prescribed body: V(t) and omega(t) given; X and the attitude advance with the mid-step
 // velocities, so that a constant velocity travels exactly V t.
 #pragma once
 
 #include <array>
 #include <functional>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "sph/bodies/inertia.hpp"
@@ -26,8 +29,9 @@ enum class MotionType { FIXED, FREE, PRESCRIBED };
 
 template <int Dim>
 struct BodySpring {
-    Vector<Dim> anchor{};  ///< world point
+    Vector<Dim> anchor{};  ///< world point; with anchorBody, its body-frame offset on that body
     Vector<Dim> point{};   ///< body-frame offset of the attachment from the reference point
+    int anchorBody = -1;   ///< the body that holds the anchor; -1: the world
     Float stiffness = 0, restLength = 0, damping = 0;
     bool slack = false;  ///< a mooring line: no force while shorter than restLength
 };
@@ -75,20 +79,24 @@ struct BodyState {
 inline Spin<2> crossSpin(const Spin<2>&, const Spin<2>&) { return Spin<2>{}; }
 inline Spin<3> crossSpin(const Spin<3>& a, const Spin<3>& b) { return cross(a, b); }
 
-/// The force and torque (about X) of the body's springs.
+/// A force on a body and the offset from its reference point X of the point where it acts.
 template <int Dim>
-void addSpringLoads(const BodyMotion<Dim>& m, const BodyState<Dim>& s, Vector<Dim>& force,
-                    Spin<Dim>& torque) {
-    for (const BodySpring<Dim>& k : m.springs) {
-        const Vector<Dim> d = s.offset(k.point), stretch = s.position + d - k.anchor;
-        const Float length = norm(stretch);
-        if (length == 0 || (k.slack && length <= k.restLength)) continue;
-        const Vector<Dim> e = stretch / length;
-        const Float tension =
-            k.stiffness * (length - k.restLength) + k.damping * dot(s.velocityAt(d), e);
-        force -= e * tension;
-        torque -= cross(d, e * tension);
-    }
+struct Pull {
+    Vector<Dim> arm{}, force{};
+};
+
+/// The pull of spring k on its body (state s) from the anchor at A moving at vA (the file
+/// comment); none while a mooring line is slack.
+template <int Dim>
+std::optional<Pull<Dim>> springPull(const BodySpring<Dim>& k, const BodyState<Dim>& s,
+                                    const Vector<Dim>& A, const Vector<Dim>& vA) {
+    const Vector<Dim> d = s.offset(k.point), stretch = s.position + d - A;
+    const Float length = norm(stretch);
+    if (length == 0 || (k.slack && length <= k.restLength)) return std::nullopt;
+    const Vector<Dim> e = stretch / length;
+    const Float tension =
+        k.stiffness * (length - k.restLength) + k.damping * dot(s.velocityAt(d) - vA, e);
+    return Pull<Dim>{d, -(e * tension)};
 }
 
 /// omega after dt under torque tau, for a free body (held components zero) or a hinged one.
@@ -107,13 +115,14 @@ Spin<Dim> nextSpin(const BodyMotion<Dim>& m, const BodyState<Dim>& s, const Spin
     return w;
 }
 
-/// One step dt of a free body under the fluid's force and torque (about X) and gravity g.
+/// One step dt of a free body under the fluid's force and torque (about X), gravity g and the
+/// springs' pulls.
 template <int Dim>
 void advanceFree(const BodyMotion<Dim>& m, BodyState<Dim>& s, Vector<Dim> force, Spin<Dim> torque,
-                 const Vector<Dim>& g, Float dt) {
+                 const Vector<Dim>& g, Float dt, std::span<const Pull<Dim>> pulls = {}) {
     force += g * m.mass;
     torque += cross(s.offset(m.centerOfMass), g * m.mass);
-    addSpringLoads(m, s, force, torque);
+    for (const Pull<Dim>& p : pulls) force += p.force, torque += cross(p.arm, p.force);
     if (m.hinged) {
         s.velocity = Vector<Dim>{};
     } else {

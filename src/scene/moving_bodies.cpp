@@ -195,7 +195,8 @@ void addSprings(const BodyMotionSpec<Dim>& spec, std::size_t b, sph::MovingBodie
     for (const SpringSpec<Dim>& s : spec.springs) {
         sph::BodySpring<Dim> k;
         k.anchor = s.anchor, k.anchorBody = s.anchorBody;
-        if (s.anchorBody >= 0) k.anchor = s.anchor - all.bodies[std::size_t(s.anchorBody)].initialPosition;
+        if (s.anchorBody >= 0)
+            k.anchor = s.anchor - all.bodies[std::size_t(s.anchorBody)].initialPosition;
         const SceneVec<Dim> point = s.point.value_or(body.initialPosition);
         k.point = point - body.initialPosition;
         k.stiffness = s.stiffness, k.damping = s.damping, k.slack = s.mooring;
@@ -232,7 +233,8 @@ std::shared_ptr<sph::MovingBodies<Dim>> makeMovingBodies(const Scene<Dim>& scene
         body.reach = reachFrom(b, body.initialPosition);
         out->bodies.push_back(std::move(body));
     }
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i) addSprings(scene.bodies[i].motion, i, *out);
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+        addSprings(scene.bodies[i].motion, i, *out);
     if (!out->anyMoves()) return nullptr;
     return out;
 }

@@ -199,11 +199,15 @@ TEST(MovingBodies, ASpringBetweenTwoBodiesPullsBoth) {
     j["output"]["every"] = 0.025;
     const json spring = {
         {"anchor", {0.14, 0.3}}, {"anchor_body", 0}, {"stiffness", 1000}, {"length", 0.2}};
-    j["bodies"] = json::array(
-        {{{"shape", "box"}, {"min", {0.1, 0.26}}, {"max", {0.18, 0.34}},
-          {"motion", {{"type", "free"}, {"density", 500}}}},
-         {{"shape", "box"}, {"min", {0.38, 0.26}}, {"max", {0.46, 0.34}},
-          {"motion", {{"type", "free"}, {"density", 500}, {"springs", {spring}}}}}});
+    j["bodies"] =
+        json::array({{{"shape", "box"},
+                      {"min", {0.1, 0.26}},
+                      {"max", {0.18, 0.34}},
+                      {"motion", {{"type", "free"}, {"density", 500}}}},
+                     {{"shape", "box"},
+                      {"min", {0.38, 0.26}},
+                      {"max", {0.46, 0.34}},
+                      {"motion", {{"type", "free"}, {"density", 500}, {"springs", {spring}}}}}});
     ASSERT_EQ(runText("two_body_spring", j).code, 0);
     const auto rows = csvRows(readFile(outFile("two_body_spring", "bodies.csv")));
     ASSERT_EQ(rows.size(), 1u + 2 * 11);

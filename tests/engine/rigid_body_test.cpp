@@ -142,7 +142,8 @@ TEST(RigidBody, SpringBetweenTwoBodiesKeepsTheirCentreOfMass) {
         {.anchor = Vector<2>{}, .anchorBody = 0, .stiffness = 50, .restLength = 1});
     addBody(bodies, second, Vector<2>{{1.1, 0}});
     const auto centre = [&] {
-        return (2 * bodies.bodies[0].state.position[0] + 3 * bodies.bodies[1].state.position[0]) / 5;
+        return (2 * bodies.bodies[0].state.position[0] + 3 * bodies.bodies[1].state.position[0]) /
+               5;
     };
     const double start = centre(), dt = 1e-4;
     const double T = period(

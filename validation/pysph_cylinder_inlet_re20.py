@@ -31,7 +31,6 @@ validation/cases.py reads the app's); a run stopped early by --max-wall is avera
 40 % of the time it reached, and says so."""
 import argparse
 import os
-import tempfile
 import time
 
 # OpenMP threads that spin while they wait make a step ten times slower on a loaded machine; set
@@ -39,6 +38,7 @@ import time
 os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 import numpy as np  # noqa: E402
+import pysph_run  # noqa: E402
 from pysph.base.kernels import QuinticSpline  # noqa: E402
 from pysph.base.utils import get_particle_array  # noqa: E402
 from pysph.examples import flow_past_cylinder_2d as example  # noqa: E402
@@ -255,10 +255,7 @@ def main():
     start = time.time()
     app = Benchmark(args.dx, args.end, args.io_method, args.cylinder, args.max_wall,
                     fname="cylinder_inlet_re20")
-    with tempfile.TemporaryDirectory() as out:  # PySPH writes its log there
-        app.setup(["-d", out, "--disable-output", "-q"] + (["--openmp"] if args.openmp else []))
-        app.start = time.time()
-        app.solver.solve(show_progress=False)
+    pysph_run.solve_quietly(app, args.openmp, prepare=lambda a: setattr(a, "start", time.time()))
     report(app, time.time() - start, args)
 
 

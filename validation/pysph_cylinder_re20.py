@@ -23,7 +23,6 @@ import json
 import math
 import os
 import sys
-import tempfile
 import time
 
 # OpenMP threads that spin while they wait make a step ten times slower on a loaded machine; set
@@ -31,6 +30,7 @@ import time
 os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 import numpy as np  # noqa: E402
+import pysph_run  # noqa: E402
 from pysph.base.kernels import QuinticSpline
 from pysph.base.nnps import DomainManager
 from pysph.base.utils import get_particle_array
@@ -186,10 +186,8 @@ def main():
     args = ap.parse_args()
     start = time.time()
     app = CylinderChannel(args.dx, args.end, fname="cylinder_re20")
-    with tempfile.TemporaryDirectory() as out:  # PySPH writes its log there
-        app.setup(["-d", out, "--disable-output", "-q"] + (["--openmp"] if args.openmp else []))
-        app.force = CylinderForce(app.particles[0], app.particles[2], app.h)
-        app.solver.solve(show_progress=False)
+    pysph_run.solve_quietly(app, args.openmp, prepare=lambda a: setattr(
+        a, "force", CylinderForce(a.particles[0], a.particles[2], a.h)))
     report(app, time.time() - start)
 
 

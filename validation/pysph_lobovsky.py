@@ -13,9 +13,9 @@ at the default H / 40 instead of 1.61."""
 import argparse
 import os
 import sys
-import tempfile
 
 import numpy as np
+import pysph_run
 from pysph.base.kernels import WendlandQuintic
 from pysph.solver.application import Application
 from pysph.sph.scheme import WCSPHScheme
@@ -67,9 +67,7 @@ def main():
     ap.add_argument("--openmp", action="store_true")
     args = ap.parse_args()
     app = WallPressure(args.dx, 5.7 / np.sqrt(G / H), fname="lobovsky")
-    with tempfile.TemporaryDirectory() as out:  # PySPH writes its log there
-        app.setup(["-d", out, "--disable-output", "-q"] + (["--openmp"] if args.openmp else []))
-        app.solver.solve(show_progress=False)
+    pysph_run.solve_quietly(app, args.openmp)
     t, p = np.array(app.samples).T
     checks, notes, _ = cases.sensor2_figures(t * np.sqrt(G / H), p / (RHO0 * G * H))
     print(f"PySPH WCSPH, dx = {args.dx:g} m (H / {H / args.dx:g}), "

@@ -34,7 +34,6 @@ import json
 import math
 import os
 import sys
-import tempfile
 import time
 
 # OpenMP threads that spin while they wait make a step ten times slower on a loaded machine; set
@@ -42,6 +41,7 @@ import time
 os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
 
 import numpy as np  # noqa: E402
+import pysph_run  # noqa: E402
 from pysph.base.utils import get_particle_array_rigid_body, get_particle_array_wcsph  # noqa: E402
 from pysph.examples.rigid_body.sphere_in_vessel_akinci import RigidFluidCoupling  # noqa: E402
 
@@ -166,9 +166,7 @@ def main():
     args = ap.parse_args()
     start = time.time()
     app = WaterEntry(args.dx, args.end, fname="water_entry")
-    with tempfile.TemporaryDirectory() as out:  # PySPH writes its log there
-        app.setup(["-d", out, "--disable-output", "-q"] + (["--openmp"] if args.openmp else []))
-        app.solver.solve(show_progress=False)
+    pysph_run.solve_quietly(app, args.openmp)
     report(app, time.time() - start)
 
 

@@ -29,7 +29,6 @@ example's SolidWallNoSlipBCReverse from the fluid. c_D = 2 F_x / (rho0 U^2 D), c
 (rho0 U^2 D) with U = 0.2 m/s, reported as means over the last 3 s of the 5 s (as
 validation/cases.py reads the app's); a run stopped early by --max-wall is averaged over the last
 40 % of the time it reached, and says so."""
-import argparse
 import os
 import time
 
@@ -241,8 +240,7 @@ def report(app, seconds, args):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--dx", type=float, default=0.01, help="spacing [m] (D / 10 by default)")
+    ap = pysph_run.arguments(__doc__, 0.01, "spacing [m] (D / 10 by default)")
     ap.add_argument("--end", type=float, default=5.0, help="end time [s] (the scene's 5)")
     ap.add_argument("--io-method", default="donothing",
                     choices=["donothing", "mirror", "hybrid", "mod_donothing", "characteristic"],
@@ -250,7 +248,6 @@ def main():
     ap.add_argument("--cylinder", default="lattice", choices=["lattice", "rings"])
     ap.add_argument("--max-wall", type=float, default=0.0,
                     help="stop after this many seconds of wall time (0: never)")
-    ap.add_argument("--openmp", action="store_true")
     args = ap.parse_args()
     start = time.time()
     app = Benchmark(args.dx, args.end, args.io_method, args.cylinder, args.max_wall,

@@ -18,7 +18,6 @@ the pressure and viscous accelerations due to the cylinder alone. U is the mean 
 flux over the height, as the app's case reads it: here Q / H = sum_i V_i u_i / (L H) over all the
 fluid (V_i = m_i / rho_i; the flux is the same through every section). The body force g_x is the
 scene's."""
-import argparse
 import json
 import math
 import os
@@ -179,10 +178,8 @@ def report(app, seconds):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--dx", type=float, default=0.005, help="spacing [m] (D / 20 by default)")
+    ap = pysph_run.arguments(__doc__, 0.005, "spacing [m] (D / 20 by default)")
     ap.add_argument("--end", type=float, default=10.0, help="end time [s] (the scene's 10)")
-    ap.add_argument("--openmp", action="store_true")
     args = ap.parse_args()
     start = time.time()
     app = CylinderChannel(args.dx, args.end, fname="cylinder_re20")

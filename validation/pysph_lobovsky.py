@@ -10,7 +10,6 @@ particles within the kernel support) and measured as validation/cases.py measure
 Needs Debian's python3-pysph. The particles stand on the app's lattice (cell centres), with three
 layers of wall particles around the tank; the tank is a whole number of spacings long, 1.6125 m
 at the default H / 40 instead of 1.61."""
-import argparse
 import os
 import sys
 
@@ -62,9 +61,7 @@ class WallPressure(Application):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--dx", type=float, default=H / 40, help="spacing [m] (H / 40 by default)")
-    ap.add_argument("--openmp", action="store_true")
+    ap = pysph_run.arguments(__doc__, H / 40, "spacing [m] (H / 40 by default)")
     args = ap.parse_args()
     app = WallPressure(args.dx, 5.7 / np.sqrt(G / H), fname="lobovsky")
     pysph_run.solve_quietly(app, args.openmp)

@@ -8,7 +8,6 @@ compared with the tabulated times at which it has not reached the far wall.
     /usr/bin/python3 validation/pysph_martin_moyce.py [--dx 0.025] [--openmp]
 
 Needs Debian's python3-pysph. Prints the relative error at each of those times."""
-import argparse
 import glob
 import math
 import os
@@ -16,6 +15,7 @@ import sys
 import tempfile
 
 import numpy as np
+import pysph_run
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -29,9 +29,7 @@ TANK = 4.0  # the tank's length [m]
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("--dx", type=float, default=0.025, help="spacing [m] (a / 40 by default)")
-    p.add_argument("--openmp", action="store_true")
+    p = pysph_run.arguments(__doc__, 0.025, "spacing [m] (a / 40 by default)")
     args = p.parse_args()
     ref = cases.read_table("martin_moyce1952.csv")
     scale = math.sqrt(2 * bench.G / A)  # T = t sqrt(2 g / a)

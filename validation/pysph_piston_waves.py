@@ -26,7 +26,6 @@ weighted by the 1D Wendland C2 kernel of support 3 dx around the probe, minus th
 every 0.02 s, the app's output interval; the areas are m / rho0 = dx^2, since the EDAC scheme's
 density is a kernel sum, short of rho0 near the surface (it is not the particle's volume there).
 As a cross-check the height of the highest fluid particle within dx of the probe is read too."""
-import argparse
 import json
 import math
 import os
@@ -200,11 +199,9 @@ def report(app, seconds):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--dx", type=float, default=0.02, help="spacing [m] (the app's CI spacing)")
+    ap = pysph_run.arguments(__doc__, 0.02, "spacing [m] (the app's CI spacing)")
     ap.add_argument("--alpha", type=float, default=ALPHA,
                     help="artificial viscosity (the app's 0.02 for this scene)")
-    ap.add_argument("--openmp", action="store_true")
     args = ap.parse_args()
     start = time.time()
     app = PistonWaves(args.dx, args.alpha, fname="piston_waves")

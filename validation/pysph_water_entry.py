@@ -29,7 +29,6 @@ threads and the serial one agreed to 1e-5 m in the centre's y (2026-12-06).
 At dx = 0.0055 (12384 particles, 10000 steps, 2 threads, 821 s on a loaded 2-core machine):
 Z - Z_exp relative +0.088, -0.123, -0.084, -0.084, -0.009 at T = 0.1004, 0.2773, 0.3777, 0.7969,
 1.131, max 0.123; at dx = 0.011: +0.118, -0.156, -0.123, -0.112, -0.046, max 0.156."""
-import argparse
 import json
 import math
 import os
@@ -157,12 +156,10 @@ def report(app, seconds):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--dx", type=float, default=SCENE["particles"]["spacing"],
-                    help="spacing [m] (the scene's 0.0055, D / 20, by default)")
+    ap = pysph_run.arguments(__doc__, SCENE["particles"]["spacing"],
+                             "spacing [m] (the scene's 0.0055, D / 20, by default)")
     ap.add_argument("--end", type=float, default=SCENE["time"]["end"],
                     help="end time [s] (the scene's 0.125)")
-    ap.add_argument("--openmp", action="store_true")
     args = ap.parse_args()
     start = time.time()
     app = WaterEntry(args.dx, args.end, fname="water_entry")

@@ -795,12 +795,10 @@ def biesel_height_over_stroke(period, depth, g=9.81):
 # (2026-12-06) -> regression bound 0.28 (times 1.5); at 0.01 it meets the gate (4.4 %).
 FLOATING_SPHERE_CI_BOUND = 0.28
 PISTON_MISS = (
-    "H is 8.4 % low at spacing 0.01 and 9.3 % at 0.02: the error hardly falls with the spacing. The waves "
-    "lose height as they travel (0.059 m 0.5 m from the paddle, 0.055 m at 2 m) to the default artificial "
-    "viscosity, alpha = 0.02 (with alpha = 0.002, materials.water.artificial_viscosity, H is 5.8 % low at "
-    "0.02). PySPH's EDAC scheme on the same set-up (validation/pysph_piston_waves.py, the piston's acceleration "
-    "in its wall pressure, alpha = 0.02) misses as much: 12.2 % low at 0.02 and 7.0 % at 0.01 (7.9 % at 0.02 "
-    "with alpha = 0).")
+    "H is 8.4 % low at spacing 0.01 and 9.3 % at 0.02: the waves lose height as they travel (0.059 m 0.5 m "
+    "from the paddle, 0.055 m at 2 m) to the default artificial viscosity, alpha = 0.02 (5.8 % low at 0.02 with "
+    "alpha = 0.002). PySPH's EDAC scheme on this set-up (validation/pysph_piston_waves.py) misses as much: "
+    "12.2 % low at 0.02, 7.0 % at 0.01.")
 # H at the CI spacing 0.02 is 9.3 % low (2026-12-06) -> regression bound 0.14 (times 1.5).
 PISTON_CI_BOUND = 0.14
 PISTON = {"stroke": 0.04, "period": 1.0, "depth": 0.4, "probes_x": (1.0, 1.5), "window": (3.0, 5.0)}
@@ -1395,14 +1393,10 @@ case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.0
 # outlet; 872ef69) -> regression bound 0.30 (times 1.5).
 CYLINDER_CI_BOUND = 0.30
 CYLINDER_MISS = (
-    "c_D is 6.1 % low at D / dx = 20 and 19.4 % at 10; D / dx = 40 is not run. The cause is not established: "
-    "the kernel's width is not the whole error, and the pressure difference across the cylinder, extrapolated "
-    "to its surface, is as low as c_D (17 % at D / dx = 10). PySPH's own inlet and outlet on this set-up "
-    "(validation/pysph_cylinder_inlet_re20.py: EDAC with transport velocity, its 'donothing' outlet, no p = 0 "
-    "imposed) meets the gate: c_D +5.0 % at D / dx = 10 and +2.8 % at 20 (run to t = 4.18 s, mean over its "
-    "last 40 %), so the miss is this app's. On a periodic channel driven by a body force "
-    "(validation/pysph_cylinder_re20.py) PySPH's transport-velocity scheme gave c_D 5.8 % low at D / dx = 10, "
-    "this app 19 %.")
+    "c_D is 6.1 % low at D / dx = 20 and 19.4 % at 10, and the pressure difference across the cylinder is as "
+    "low; D / dx = 40 is not run. PySPH's own inlet and outlet on this set-up "
+    "(validation/pysph_cylinder_inlet_re20.py, EDAC) meets the gate, +5.0 % at D / dx = 10 and +2.8 % at 20: "
+    "the miss is this app's, its cause not known.")
 case("cylinder_re20", "cylinder_re20.json", cylinder_benchmark, 0.005, [0.01, 0.005],
      (0.01, [CYLINDER_CI_BOUND]), issue=48, miss_note=CYLINDER_MISS,
      shared_cores=True)
@@ -1419,16 +1413,11 @@ case("piston_waves_2d", "piston_waves_2d.json", piston_waves, 0.01, [0.02, 0.01]
 # bound 0.17 (times 1.5).
 WATER_ENTRY_CI_BOUND = 0.17
 WATER_ENTRY_MISS = (
-    "The first tabulated point, T = 0.10 (11 ms after contact), is 20 % deep at D / dx = 40 (Z 0.20 against "
-    "0.168; +11 %, +7 % at D / dx = 10, 20); from T = 0.28 on the depth is within 8.4 % at D / dx = 40 "
-    "(-4.0 %, +0.3 %, +0.2 %, +8.4 %) and within 10.4 % at 10 and 20. The early depth hangs on the instant of "
-    "first contact: 1 ms is 0.027 D, 16 % of the first point. The experiment is read second-hand off a "
-    "figure (validation/data/greenhow_lin1983.csv), and its first point lies below a von Karman added-mass "
-    "estimate (0.21 D at T = 0.10). With the body's acceleration in the wall condition's pressure (Adami et "
-    "al. 2012, eq. 27) the first point moved from +6.8 % to +7.0 % at D / dx = 20, so that is not the cause. "
-    "PySPH's weakly-compressible rigid-body scheme on the same set-up (validation/pysph_water_entry.py, "
-    "Akinci coupling) misses too: max 0.123 at D / dx = 20 (+8.8 %, -12.3 %, -8.4 %, -8.4 %, -0.9 %) and 0.156 "
-    "at D / dx = 10; this app 0.101 and 0.113 there.")
+    "Only the first point, T = 0.10, misses: +20 % at D / dx = 40 (+11 %, +7 % at 10, 20); from T = 0.28 on "
+    "the depth is within 8.4 %. That point hangs on the instant of first contact (1 ms is 16 % of it) and lies "
+    "below a von Karman added-mass estimate (0.21 D); the data are read second-hand off a figure. PySPH's "
+    "rigid-body scheme on this set-up (validation/pysph_water_entry.py) misses too: 0.123 at D / dx = 20 and "
+    "0.156 at 10, this app 0.101 and 0.113.")
 case("water_entry_2d", "water_entry_2d.json", water_entry, 0.00275, [0.011, 0.0055, 0.00275],
      (0.011, [WATER_ENTRY_CI_BOUND]), issue=59, gates="10 % of the experiment's depth (as Martin & Moyce's front)",
      miss_note=WATER_ENTRY_MISS)

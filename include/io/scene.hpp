@@ -102,9 +102,10 @@ struct BodyMotionSpec {
     VectorField<Dim> velocity{};  ///< free: initial (numbers); prescribed: of t
     std::array<Expression, spinDim> angularVelocity{};  ///< [rad/s], as velocity
     std::optional<SceneVec<Dim>> center;  ///< prescribed: the centre of rotation at t = 0
-    std::optional<SceneVec<Dim>> hinge;   ///< free: the hinge's point
-    SceneVec<spinDim> hingeAxis{};        ///< free, 3D: the hinge's axis (default z)
-    std::vector<std::string> locked;      ///< free: x, y, (z), rotation (2D) or rx, ry, rz
+    std::optional<SceneVec<Dim>> hinge;   ///< free: the hinge's point at t = 0
+    int hingeBody = -1;             ///< free: the index of the body it is hinged on; -1: the world
+    SceneVec<spinDim> hingeAxis{};  ///< free, 3D: the hinge's axis (default z)
+    std::vector<std::string> locked;  ///< free: x, y, (z), rotation (2D) or rx, ry, rz
     std::vector<SpringSpec<Dim>> springs;
     double friction = 0.3;  ///< free: Coulomb coefficient of its contacts
 };

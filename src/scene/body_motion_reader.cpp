@@ -90,7 +90,7 @@ void readLocked(const At& a, BodyMotionSpec<Dim>& m) {
 template <int Dim>
 void readFree(const At& a, BodyMotionSpec<Dim>& m) {
     a.object({"type", "density", "mass", "velocity", "angular_velocity", "center_of_mass",
-              "inertia", "locked", "hinge", "hinge_axis", "springs", "friction"});
+              "inertia", "locked", "hinge", "hinge_body", "hinge_axis", "springs", "friction"});
     if (a.has("density") == a.has("mass"))
         a.fail("an object with one of \"density\" or \"mass\"",
                "a free body's mass: give its density [kg/m^3] or its mass [kg]");
@@ -106,6 +106,10 @@ void readFree(const At& a, BodyMotionSpec<Dim>& m) {
     if (a.has("inertia")) m.inertia = readInertia<Dim>(a["inertia"]);
     if (a.has("locked")) readLocked(a["locked"], m);
     if (a.has("hinge")) m.hinge = readVec<Dim>(a["hinge"], "m");
+    if (a.has("hinge_body")) {
+        if (!m.hinge) a["hinge_body"].fail("a \"hinge\" point beside it (where the bodies turn)");
+        m.hingeBody = int(a["hinge_body"].integer(0, 1 << 30));
+    }
     m.hingeAxis[BodyMotionSpec<Dim>::spinDim - 1] = 1;
     if (a.has("hinge_axis")) {
         if (Dim == 2) a["hinge_axis"].fail("no hinge_axis in 2D (a hinge turns about z)");

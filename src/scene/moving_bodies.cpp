@@ -152,8 +152,9 @@ sph::MovingBody<Dim> freeBody(const Body<Dim>& b, double dx) {
                              : givenInertia<Dim>(spec.inertia);
     holdDegrees(spec, m);
     m.friction = spec.friction;
-    body.initialPosition = spec.hinge.value_or(com);
-    if (spec.hinge) {
+    const bool onTheWorld = spec.hinge && spec.hingeBody < 0;
+    body.initialPosition = onTheWorld ? *spec.hinge : com;
+    if (onTheWorld) {
         m.hinged = true, m.hingeAxis = spec.hingeAxis;
         m.centerOfMass = com - *spec.hinge;
         aboutCom = aboutCom.shifted(m.mass, m.centerOfMass);
@@ -205,6 +206,18 @@ void addSprings(const BodyMotionSpec<Dim>& spec, std::size_t b, sph::MovingBodie
     }
 }
 
+/// Body b's hinge on another body: the pin and (3D) the axis in both bodies' frames at t = 0.
+template <int Dim>
+void addHinge(const BodyMotionSpec<Dim>& spec, std::size_t b, sph::MovingBodies<Dim>& all) {
+    if (spec.hingeBody < 0) return;
+    const SceneVec<Dim>& pin = *spec.hinge;
+    sph::BodyHinge<Dim> h{.body = int(b), .holder = spec.hingeBody};
+    h.point = pin - all.bodies[b].initialPosition;
+    h.holderPoint = pin - all.bodies[std::size_t(spec.hingeBody)].initialPosition;
+    h.axis = h.holderAxis = spec.hingeAxis;
+    all.hinges.push_back(h);
+}
+
 /// The farthest corner of the shape's bounding box from p.
 template <int Dim>
 double reachFrom(const Body<Dim>& b, const SceneVec<Dim>& p) {
@@ -234,7 +247,7 @@ std::shared_ptr<sph::MovingBodies<Dim>> makeMovingBodies(const Scene<Dim>& scene
         out->bodies.push_back(std::move(body));
     }
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-        addSprings(scene.bodies[i].motion, i, *out);
+        addSprings(scene.bodies[i].motion, i, *out), addHinge(scene.bodies[i].motion, i, *out);
     if (!out->anyMoves()) return nullptr;
     return out;
 }

@@ -338,21 +338,26 @@ void checkProbeIndex(const Scene<Dim>& s, std::size_t i, const char* key, int in
             std::to_string(index));
 }
 
-/// A spring's anchor_body names another of the scene's bodies.
+/// The key at path names another of the scene's bodies than body b (-1: none, the world).
 template <int Dim>
-void checkSpringAnchors(const Scene<Dim>& s) {
+void checkOtherBody(const Scene<Dim>& s, std::size_t b, int other, const std::string& path) {
+    if (other < int(s.bodies.size()) && other != int(b)) return;
+    throw sceneError(s.file, path,
+                     "the index of another of the scene's " + std::to_string(s.bodies.size()) +
+                         " bodies (from 0)",
+                     std::to_string(other));
+}
+
+/// A spring's anchor_body and a hinge's hinge_body name another of the scene's bodies.
+template <int Dim>
+void checkBodyLinks(const Scene<Dim>& s) {
     for (std::size_t b = 0; b < s.bodies.size(); ++b) {
-        const std::vector<SpringSpec<Dim>>& springs = s.bodies[b].motion.springs;
-        for (std::size_t k = 0; k < springs.size(); ++k) {
-            const int holder = springs[k].anchorBody;
-            if (holder < int(s.bodies.size()) && holder != int(b)) continue;
-            throw sceneError(s.file,
-                             "bodies[" + std::to_string(b) + "].motion.springs[" +
-                                 std::to_string(k) + "].anchor_body",
-                             "the index of another of the scene's " +
-                                 std::to_string(s.bodies.size()) + " bodies (from 0)",
-                             std::to_string(holder));
-        }
+        const BodyMotionSpec<Dim>& m = s.bodies[b].motion;
+        const std::string motion = "bodies[" + std::to_string(b) + "].motion.";
+        for (std::size_t k = 0; k < m.springs.size(); ++k)
+            checkOtherBody(s, b, m.springs[k].anchorBody,
+                           motion + "springs[" + std::to_string(k) + "].anchor_body");
+        checkOtherBody(s, b, m.hingeBody, motion + "hinge_body");
     }
 }
 
@@ -417,7 +422,7 @@ void checkSceneGeometry(const Scene<Dim>& s) {
     const double estimate = checkFluidBlocks(s);
     checkEmitters(s);
     checkProbes(s);
-    checkSpringAnchors(s);
+    checkBodyLinks(s);
     checkFluidAmount(s, estimate);
     checkPeriodicAxes(s);
     checkFlowSides(s);

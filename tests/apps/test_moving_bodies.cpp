@@ -225,3 +225,50 @@ TEST(MovingBodies, ASpringBetweenTwoBodiesPullsBoth) {
     expectOneLine(runText("spring_to_nothing", j), kScene,
                   {"bodies[1].motion.springs[0].anchor_body", "2 bodies"});
 }
+
+// A rod (0.04 x 0.2 m) hinged at its top on a box carried at 0.2 m/s swings as a compound
+// pendulum in the box's frame: theta = (omega0 / W) sin(W t), W^2 = M g d / I_P,
+// I_P = M ((L^2 + w^2) / 12 + d^2), d = L / 2 (within 1 % of the amplitude: symplectic Euler's
+// phase lag and the sampling), and the pin's two points stay together (1e-6 m). The two bodies
+// touch at the pin: their contacts must not push them apart.
+TEST(MovingBodies, AHingeOnAMovingBodyCarriesAPendulum) {
+    json j = sceneJson(2);
+    j["physics"] = {{"max_speed", 1}};
+    j["fluids"][0]["max"] = {0.6, 0.06};
+    j["time"]["end"] = 0.75;
+    j["output"]["every"] = 0.05;
+    const double omega0 = 0.5, L = 0.2, w = 0.04, d = L / 2;
+    j["bodies"] =
+        json::array({{{"shape", "box"},
+                      {"min", {0.1, 0.32}},
+                      {"max", {0.2, 0.36}},
+                      {"motion", {{"type", "prescribed"}, {"velocity", {"0.2", "0"}}}}},
+                     {{"shape", "box"},
+                      {"min", {0.13, 0.12}},
+                      {"max", {0.17, 0.32}},
+                      {"motion",
+                       {{"type", "free"},
+                        {"density", 500},
+                        {"hinge", {0.15, 0.32}},
+                        {"hinge_body", 0},
+                        {"velocity", {0.2 + omega0 * d, 0}},  // the pin moves with the box
+                        {"angular_velocity", omega0}}}}});
+    ASSERT_EQ(runText("hinge_on_body", j).code, 0);
+    const auto rows = csvRows(readFile(outFile("hinge_on_body", "bodies.csv")));
+    ASSERT_EQ(rows.size(), 1u + 2 * 16);
+    const double W = std::sqrt(9.81 * d / ((L * L + w * w) / 12 + d * d));
+    for (std::size_t r = 1; r + 1 < rows.size(); r += 2) {
+        const double t = std::stod(rows[r][0]), boxX = std::stod(rows[r][2]),
+                     boxY = std::stod(rows[r][3]), rodX = std::stod(rows[r + 1][2]),
+                     rodY = std::stod(rows[r + 1][3]), theta = std::stod(rows[r + 1][6]);
+        EXPECT_NEAR(theta, omega0 / W * std::sin(W * t), 0.01 * omega0 / W) << "t = " << t;
+        const double pinX = rodX - d * std::sin(theta), pinY = rodY + d * std::cos(theta);
+        EXPECT_NEAR(std::hypot(pinX - boxX, pinY - (boxY - 0.02)), 0, 1e-6) << "t = " << t;
+    }
+    j["bodies"][1]["motion"]["hinge_body"] = 1;
+    expectOneLine(runText("hinge_on_itself", j), kScene,
+                  {"bodies[1].motion.hinge_body", "another"});
+    j["bodies"][1]["motion"].erase("hinge");
+    expectOneLine(runText("hinge_body_alone", j), kScene,
+                  {"bodies[1].motion.hinge_body", "\"hinge\""});
+}

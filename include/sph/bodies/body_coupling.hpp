@@ -15,8 +15,8 @@
 // the body by one step (a staggered, explicit coupling, as in DualSPHysics' floating bodies,
 // Dominguez et al. 2022, sec. 3.4).
 // Contacts: a particle j of a free body closer than the spacing dx to a particle k of another
-// solid (a wall, the box's walls, another body) is pushed back by a damped spring and held by
-// Coulomb friction (a linear spring-dashpot, Cundall & Strack 1979):
+// solid (a wall, the box's walls, another body not hinged to it) is pushed back by a damped spring
+// and held by Coulomb friction (a linear spring-dashpot, Cundall & Strack 1979):
 //   F_n = max(0, k_n (dx - r) - c_n (v_jk . n)),  n = (x_j - x_k) / r,  v_jk = v_j - v_k,
 //   F_jk = F_n n - min(mu F_n, c_n |v_t|) v_t / |v_t|,  v_t = v_jk - (v_jk . n) n,
 //   k_n = m (c0 / dx)^2, c_n = sqrt(k_n m) (damping ratio 1/2), m = M / N the body's mass over
@@ -72,16 +72,7 @@ class RigidBodyCoupling : public IEquationTerm<Dim> {
         sumBodyLoads(s);
     }
     void postStep(IScheduler& scheduler, Storage<Dim>& s, Float t, Float dt) override {
-        const Vec g = gravity_ ? gravity_(t) : Vec{};
-        const std::vector<std::vector<Pull<Dim>>> pulls = bodies_->springPulls();
-        for (std::size_t i = 0; i < bodies_->bodies.size(); ++i) {
-            MovingBody<Dim>& b = bodies_->bodies[i];
-            if (b.motion.type == MotionType::FREE)
-                advanceFree(b.motion, b.state, b.fluidForce + b.contactForce,
-                            b.fluidTorque + b.contactTorque, g, dt, std::span(pulls[i]));
-            else if (b.motion.type == MotionType::PRESCRIBED)
-                advancePrescribed(b.motion, b.state, t, dt);
-        }
+        bodies_->advance(gravity_ ? gravity_(t) : Vec{}, t, dt);
         placeParticles(scheduler, s);
     }
     void create(Storage<Dim>& s, IMaterial&) const override;
@@ -196,7 +187,8 @@ void RigidBodyCoupling<Dim>::sumParticleForces(IScheduler& scheduler, const Stor
                 const ContactLaw<Dim> law = contactLaw(body[j]);
                 const bool contacts = law.kn > 0;
                 const auto keep = [&](Size k) {
-                    return isFluid(kind[k]) || (contacts && body[k] != body[j]);
+                    return isFluid(kind[k]) || (contacts && body[k] != body[j] &&
+                                                !bodies_->hingedTogether(body[j], body[k]));
                 };
                 lists_->forEachNeighbourOf(j, keep, [&](Size k, const Vec& dx, Float r2) {
                     if (!(r2 > 0)) return;

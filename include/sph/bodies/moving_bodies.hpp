@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sph/bodies/rigid_body.hpp"
+#include "sph/bodies/body_hinges.hpp"
 
 namespace num::sph {
 
@@ -28,6 +28,7 @@ template <int Dim>
 class MovingBodies {
   public:
     std::vector<MovingBody<Dim>> bodies;
+    std::vector<BodyHinge<Dim>> hinges;  ///< between two bodies (body_hinges.hpp)
 
     bool moves(int b) const { return b >= 0 && bodies[b].motion.moves(); }
     bool anyMoves() const {
@@ -105,7 +106,48 @@ class MovingBodies {
         return pulls;
     }
 
+    /// Whether bodies a and b are hinged together (their particles do not push each other).
+    bool hingedTogether(int a, int b) const {
+        for (const BodyHinge<Dim>& h : hinges)
+            if ((h.body == a && h.holder == b) || (h.body == b && h.holder == a)) return true;
+        return false;
+    }
+
+    /// One step from t - dt to t of every body under the last evaluation's loads, gravity g, the
+    /// springs (from the states before the step) and the hinges.
+    void advance(const Vector<Dim>& g, Float t, Float dt) {
+        const std::vector<std::vector<Pull<Dim>>> pulls = springPulls();
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            MovingBody<Dim>& b = bodies[i];
+            if (b.motion.type == MotionType::FREE)
+                accelerateFree(b.motion, b.state, b.fluidForce + b.contactForce,
+                               b.fluidTorque + b.contactTorque, g, dt, std::span(pulls[i]));
+        }
+        if (!hinges.empty()) holdAllHinges(t, dt);
+        for (MovingBody<Dim>& b : bodies) {
+            if (b.motion.type == MotionType::FREE) moveFree(b.state, dt);
+            if (b.motion.type == MotionType::PRESCRIBED)
+                advancePrescribed(b.motion, b.state, t, dt);
+        }
+    }
+
   private:
+    /// The hinges' impulses on the free bodies' new velocities; a prescribed body moves with
+    /// its mid-step velocity (advancePrescribed).
+    void holdAllHinges(Float t, Float dt) {
+        std::vector<StepMotion<Dim>> step(bodies.size());
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            const MovingBody<Dim>& b = bodies[i];
+            if (b.motion.type == MotionType::FREE) step[i] = {b.state.velocity, b.state.spin};
+            if (b.motion.type == MotionType::PRESCRIBED)
+                step[i] = {b.motion.velocity(t - dt / 2), b.motion.spin(t - dt / 2)};
+        }
+        holdHinges(hinges, bodies, step, dt);
+        for (std::size_t i = 0; i < bodies.size(); ++i)
+            if (bodies[i].motion.type == MotionType::FREE)
+                bodies[i].state.velocity = step[i].velocity, bodies[i].state.spin = step[i].spin;
+    }
+
     template <int N>
     static void append(std::vector<double>& out, const Vec<Float, N>& v) {
         out.insert(out.end(), v.c.begin(), v.c.end());

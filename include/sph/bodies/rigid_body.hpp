@@ -1,5 +1,6 @@
 // A rigid body's motion: how it moves (fixed, free, prescribed), its mass properties, held
-// degrees of freedom, hinge and springs; its state; and one step of its equations of motion.
+// degrees of freedom, hinge and springs; its state; and one step of its equations of motion
+// (hinges between two bodies: body_hinges.hpp).
 //
 // Free body (Newton-Euler, integrated by symplectic Euler with the fluid's force of the step's
 // last evaluation; a hinged body turns about the hinge, whose point is its reference point):
@@ -115,11 +116,12 @@ Spin<Dim> nextSpin(const BodyMotion<Dim>& m, const BodyState<Dim>& s, const Spin
     return w;
 }
 
-/// One step dt of a free body under the fluid's force and torque (about X), gravity g and the
-/// springs' pulls.
+/// The velocity and spin of a free body after dt under the fluid's force and torque (about X),
+/// gravity g and the springs' pulls (the first half of a symplectic Euler step).
 template <int Dim>
-void advanceFree(const BodyMotion<Dim>& m, BodyState<Dim>& s, Vector<Dim> force, Spin<Dim> torque,
-                 const Vector<Dim>& g, Float dt, std::span<const Pull<Dim>> pulls = {}) {
+void accelerateFree(const BodyMotion<Dim>& m, BodyState<Dim>& s, Vector<Dim> force,
+                    Spin<Dim> torque, const Vector<Dim>& g, Float dt,
+                    std::span<const Pull<Dim>> pulls = {}) {
     force += g * m.mass;
     torque += cross(s.offset(m.centerOfMass), g * m.mass);
     for (const Pull<Dim>& p : pulls) force += p.force, torque += cross(p.arm, p.force);
@@ -131,8 +133,22 @@ void advanceFree(const BodyMotion<Dim>& m, BodyState<Dim>& s, Vector<Dim> force,
             if (m.heldAxes[k]) s.velocity[k] = 0;
     }
     s.spin = nextSpin(m, s, torque, dt);
+}
+
+/// Moves a free body by its (new) velocity and spin over dt (the second half).
+template <int Dim>
+void moveFree(BodyState<Dim>& s, Float dt) {
     s.position += s.velocity * dt;
     s.attitude.turn(s.spin, dt);
+}
+
+/// One step dt of a free body on its own: accelerateFree, then moveFree.
+template <int Dim>
+void advanceFree(const BodyMotion<Dim>& m, BodyState<Dim>& s, const Vector<Dim>& force,
+                 const Spin<Dim>& torque, const Vector<Dim>& g, Float dt,
+                 std::span<const Pull<Dim>> pulls = {}) {
+    accelerateFree(m, s, force, torque, g, dt, pulls);
+    moveFree(s, dt);
 }
 
 /// One step from t - dt to t of a prescribed body.

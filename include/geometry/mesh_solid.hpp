@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "geometry/triangle_mesh.hpp"
@@ -24,6 +25,8 @@ class MeshSolid final : public Solid<3> {
     Bounds<3> bounds() const override;
     /// The direction from the nearest surface point (the pseudonormal on the surface).
     Point<3> outwardNormal(const Point<3>& x, double h = 1e-6) const override;
+    /// Exact, from the triangles by the divergence theorem (mesh_solid.cpp).
+    std::optional<MassProperties<3>> massProperties() const override;
     const TriangleMesh& mesh() const;
 
   private:

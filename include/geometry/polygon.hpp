@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "geometry/geometry_error.hpp"
@@ -28,11 +29,14 @@ class PolygonSet final : public Solid<2> {
     explicit PolygonSet(const std::vector<Loop>& loops);
     double signedDistance(const Point<2>& x) const override;
     Bounds<2> bounds() const override { return bounds_; }
+    /// Exact for one loop (Green's theorem, polygon.cpp); empty for several.
+    std::optional<MassProperties<2>> massProperties() const override { return mass_; }
 
   private:
     friend SolidPtr<2> polygon(const Loop& points);  ///< checks the outline with tree_
     std::shared_ptr<const detail::EdgeTree> tree_;
     Bounds<2> bounds_;
+    std::optional<MassProperties<2>> mass_;  ///< of the one loop, found on construction
 };
 
 /// One simple polygon of at least 3 vertices, either orientation. Throws GeometryError when two

@@ -1,5 +1,6 @@
 // The simple solids of any dimension: ball (a circle in 2D), axis-aligned box, half-space, and a
-// box turned by a rotation. Their signed distances are exact.
+// box turned by a rotation. Their signed distances are exact, and so are the mass properties of
+// the ball and the box (mass_properties.hpp).
 #pragma once
 
 #include <algorithm>
@@ -29,6 +30,9 @@ class Ball final : public Solid<Dim> {
         const double len = norm(d);
         return len > 0 ? d / len : Solid<Dim>::outwardNormal(x, h);
     }
+    std::optional<MassProperties<Dim>> massProperties() const override {
+        return ballMassProperties(center_, radius_);
+    }
 
   private:
     Point<Dim> center_;
@@ -54,6 +58,9 @@ class Box final : public Solid<Dim> {
         return std::sqrt(outside) + std::min(inside, 0.0);
     }
     Bounds<Dim> bounds() const override { return {min_, max_}; }
+    std::optional<MassProperties<Dim>> massProperties() const override {
+        return boxMassProperties(min_, max_);
+    }
 
   private:
     Point<Dim> min_, max_;

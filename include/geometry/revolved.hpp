@@ -1,11 +1,14 @@
 // Solids of revolution about a segment (3D): the truncated cone, and the cylinder as the cone of
 // equal radii. Exact signed distance: a point's distance to the solid is its distance, in the
 // meridian half-plane (rho from the axis, h along it), to the outline of the cross-section.
+// Exact mass properties: discs stacked along the axis.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "geometry/segment.hpp"
@@ -45,11 +48,40 @@ class Cone final : public Solid<3> {
         }
         return b;
     }
+    std::optional<MassProperties<3>> massProperties() const override;
 
   private:
     Point<3> base_, top_, axis_;
     double length_, rBase_, rTop_;
 };
+
+/// Discs of radius r(h) = r0 + (r1 - r0) h / L stacked along the axis u: V = int pi r^2 dh,
+/// axial moment I_a = int pi r^4 / 2 dh, transverse (about the centroid h_c) I_t = int (pi r^4 /
+/// 4 + pi r^2 (h - h_c)^2) dh, and I = I_t 1 + (I_a - I_t) u u^T. The integrands are
+/// polynomials of degree 4 in h, which 3-point Gauss-Legendre integrates exactly.
+inline std::optional<MassProperties<3>> Cone::massProperties() const {
+    const double g = std::sqrt(0.6), pi = std::numbers::pi;
+    const double nodes[3] = {(1 - g) / 2, 0.5, (1 + g) / 2},
+                 weights[3] = {5. / 18, 8. / 18, 5. / 18};
+    auto integral = [&](auto f) {
+        double sum = 0;
+        for (int k = 0; k < 3; ++k) sum += weights[k] * f(nodes[k] * length_);
+        return sum * length_;
+    };
+    auto r = [&](double h) { return rBase_ + (rTop_ - rBase_) * h / length_; };
+    MassProperties<3> m;
+    m.volume = integral([&](double h) { return pi * r(h) * r(h); });
+    const double hc = integral([&](double h) { return pi * r(h) * r(h) * h; }) / m.volume;
+    const double axial = integral([&](double h) { return pi * std::pow(r(h), 4) / 2; });
+    const double transverse = integral([&](double h) {
+        return pi * std::pow(r(h), 4) / 4 + pi * r(h) * r(h) * (h - hc) * (h - hc);
+    });
+    m.centroid = base_ + axis_ * hc;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            m.inertia[i][j] = (i == j) * transverse + (axial - transverse) * (axis_[i] * axis_[j]);
+    return m;
+}
 
 /// A cylinder of `radius` from `base` to `top`.
 inline SolidPtr<3> cylinder(const Point<3>& base, const Point<3>& top, double radius) {

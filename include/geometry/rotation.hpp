@@ -35,11 +35,13 @@ class Rotation {
         for (int i = 0; i < Dim; ++i) r += rows_[i] * x[i];
         return r;
     }
+    /// The matrix R by rows.
+    const Rows<Dim>& rows() const { return rows_; }
     bool isIdentity() const { return *this == Rotation(); }
     friend bool operator==(const Rotation&, const Rotation&) = default;
 
   private:
-    std::array<Point<Dim>, Dim> rows_{};
+    Rows<Dim> rows_{};
 };
 
 namespace detail {

@@ -6,7 +6,9 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 
+#include "geometry/mass_properties.hpp"
 #include "spatial/vec.hpp"
 
 namespace num::geometry {
@@ -44,6 +46,9 @@ class Solid {
         return len > 0 ? n / len : n;
     }
     bool contains(const Point<Dim>& x) const { return signedDistance(x) < 0; }
+    /// Exact volume, centroid and inertia per unit density where this solid knows them; empty:
+    /// not known (callers integrate numerically).
+    virtual std::optional<MassProperties<Dim>> massProperties() const { return std::nullopt; }
 };
 
 template <int Dim>

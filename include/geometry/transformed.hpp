@@ -27,6 +27,12 @@ class Transformed final : public Solid<Dim> {
         return rotation_.apply(inner_->outwardNormal(toInner(x), h / scale_));
     }
     Bounds<Dim> bounds() const override;
+    /// The inner solid's, transformed (mass_properties.hpp).
+    std::optional<MassProperties<Dim>> massProperties() const override {
+        const auto inner = inner_->massProperties();
+        if (!inner) return std::nullopt;
+        return transformed(*inner, scale_, rotation_.rows(), translate_);
+    }
 
   private:
     Point<Dim> toInner(const Point<Dim>& x) const {

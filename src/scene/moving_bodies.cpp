@@ -1,13 +1,15 @@
 // The motions of a scene's bodies (bodies[i].motion) as the engine runs them: mass, centre of
-// mass and inertia from the shape and density (exact for boxes, circles and spheres; by a
-// lattice quadrature of spacing dx/4 in 2D and dx/2 in 3D for other shapes), the reference
-// point (centre of mass, hinge or centre of rotation), held degrees of freedom and springs.
+// mass and inertia from the shape and density (exact where the solid knows them: boxes,
+// circles, spheres, cylinders and cones, one-loop polygons, meshes, and these scaled, rotated
+// and moved, geometry/mass_properties.hpp; else by a lattice quadrature of spacing dx/4 in 2D
+// and dx/2 in 3D), the reference point (centre of mass, hinge or centre of rotation), held
+// degrees of freedom and springs.
 #include "scene/moving_bodies.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "geometry/mass_properties.hpp"
 #include "sph/setup/particle_generation.hpp"
 
 namespace num::io {
@@ -54,35 +56,15 @@ ShapeMass<Dim> latticeMass(const sph::PlacedShape<Dim>& shape, double dx) {
     return m;
 }
 
-/// Exact for a box: I = V (b^2 + c^2) / 12 about each axis (2D: V (a^2 + b^2) / 12).
+/// The solid's exact properties (geometry/mass_properties.hpp) as the bodies use them.
 template <int Dim>
-ShapeMass<Dim> boxMass(const SceneVec<Dim>& lo, const SceneVec<Dim>& hi) {
+ShapeMass<Dim> fromGeometry(const geometry::MassProperties<Dim>& p) {
     ShapeMass<Dim> m;
-    const SceneVec<Dim> e = hi - lo;
-    m.volume = 1;
-    for (int k = 0; k < Dim; ++k) m.volume *= e[k];
-    m.centroid = (lo + hi) * 0.5;
-    if constexpr (Dim == 2) {
-        m.inertia.zz = m.volume * normSqr(e) / 12;
-    } else {
-        for (int k = 0; k < 3; ++k)
-            m.inertia.rows[k][k] = m.volume * (normSqr(e) - e[k] * e[k]) / 12;
-    }
-    return m;
-}
-
-/// Exact for a disc (V r^2 / 2) and a sphere (2/5 V r^2).
-template <int Dim>
-ShapeMass<Dim> ballMass(const SceneVec<Dim>& center, double r) {
-    ShapeMass<Dim> m;
-    m.centroid = center;
-    if constexpr (Dim == 2) {
-        m.volume = std::numbers::pi * r * r;
-        m.inertia.zz = m.volume * r * r / 2;
-    } else {
-        m.volume = 4 * std::numbers::pi * r * r * r / 3;
-        m.inertia = sph::Inertia<3>::diagonal(SceneVec<3>::filled(0.4 * m.volume * r * r));
-    }
+    m.volume = p.volume, m.centroid = p.centroid;
+    if constexpr (Dim == 2)
+        m.inertia.zz = p.inertia;
+    else
+        m.inertia.rows = p.inertia;
     return m;
 }
 
@@ -90,11 +72,12 @@ template <int Dim>
 ShapeMass<Dim> shapeMass(const Body<Dim>& b, double dx) {
     switch (b.shape) {
         case ShapeKind::BOX:
-            return boxMass<Dim>(b.min, b.max);
+            return fromGeometry(geometry::boxMassProperties<Dim>(b.min, b.max));
         case ShapeKind::CIRCLE:
         case ShapeKind::SPHERE:
-            return ballMass<Dim>(b.center, b.radius);
+            return fromGeometry(geometry::ballMassProperties<Dim>(b.center, b.radius));
         default:
+            if (const auto exact = b.solid->massProperties()) return fromGeometry(*exact);
             return latticeMass<Dim>(b.placed(), dx);
     }
 }

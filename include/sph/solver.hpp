@@ -198,7 +198,9 @@ class Solver {
         bool needsW = false;
     };
 
-    struct Scratch {
+    /// A block's buffers, written for every particle: on cache lines of their own, so that
+    /// threads on neighbouring blocks do not invalidate each other's (false sharing).
+    struct alignas(64) Scratch {
         typename VerletList<Dim>::Neighbours found;
         std::vector<Vec> grads;
         std::vector<Float> r, gradientFactor, w, laplacian, inverseR2;

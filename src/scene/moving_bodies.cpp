@@ -198,7 +198,7 @@ void addHinge(const BodyMotionSpec<Dim>& spec, std::size_t b, sph::MovingBodies<
     h.point = pin - all.bodies[b].initialPosition;
     h.holderPoint = pin - all.bodies[std::size_t(spec.hingeBody)].initialPosition;
     h.axis = h.holderAxis = spec.hingeAxis;
-    all.hinges.push_back(h);
+    all.addHinge(h);
 }
 
 /// The farthest corner of the shape's bounding box from p.

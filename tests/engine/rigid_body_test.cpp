@@ -274,7 +274,7 @@ TEST(RigidBody, RodHingedOnAMovingBodySwingsAsAPendulum) {
     bodies.bodies[1].state.velocity[0] -= 0.05 * L / 2;  // the pin moves with the cart
     const BodyHinge<2> h{
         .body = 1, .holder = 0, .point = Vector<2>{{0, L / 2}}, .holderPoint = Vector<2>{}};
-    bodies.hinges.push_back(h);
+    bodies.addHinge(h);
     double t = 0, widest = 0;
     const double T = period(
         [&] {
@@ -302,7 +302,7 @@ TEST(RigidBody, TwoHingedFreeRodsKeepTheirMomentum) {
                          .holder = 0,
                          .point = Vector<2>{{-L / 2, 0}},
                          .holderPoint = Vector<2>{{L / 2, 0}}};
-    bodies.hinges.push_back(h);
+    bodies.addHinge(h);
     const auto momentum = [&] {
         return bodies.bodies[0].state.velocity * 1.0 + bodies.bodies[1].state.velocity * 2.0;
     };
@@ -340,7 +340,7 @@ TEST(RigidBody, HingeAxisHoldsIn3D) {
                          .holderPoint = Vector<3>{},
                          .axis = Spin<3>{{1, 0, 0}},
                          .holderAxis = Spin<3>{{1, 0, 0}}};
-    bodies.hinges.push_back(h);
+    bodies.addHinge(h);
     double t = 0, offAxis = 0;
     const double T = period(
         [&] {

@@ -3,6 +3,7 @@
 // Indexed as the geometry's bodies (FluidGeometry::bodies); fixed bodies keep their place.
 #pragma once
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,7 +29,6 @@ template <int Dim>
 class MovingBodies {
   public:
     std::vector<MovingBody<Dim>> bodies;
-    std::vector<BodyHinge<Dim>> hinges;  ///< between two bodies (body_hinges.hpp)
 
     bool moves(int b) const { return b >= 0 && bodies[b].motion.moves(); }
     bool anyMoves() const {
@@ -106,11 +106,18 @@ class MovingBodies {
         return pulls;
     }
 
+    /// Hinges body h.body on body h.holder (body_hinges.hpp).
+    void addHinge(const BodyHinge<Dim>& h) {
+        hinges_.push_back(h);
+        partners_.resize(bodies.size());
+        partners_[std::size_t(h.body)].push_back(h.holder);
+        partners_[std::size_t(h.holder)].push_back(h.body);
+    }
     /// Whether bodies a and b are hinged together (their particles do not push each other).
     bool hingedTogether(int a, int b) const {
-        for (const BodyHinge<Dim>& h : hinges)
-            if ((h.body == a && h.holder == b) || (h.body == b && h.holder == a)) return true;
-        return false;
+        if (a < 0 || b < 0 || std::size_t(a) >= partners_.size()) return false;
+        const std::vector<int>& p = partners_[std::size_t(a)];
+        return std::find(p.begin(), p.end(), b) != p.end();
     }
 
     /// One step from t - dt to t of every body under the last evaluation's loads, gravity g, the
@@ -123,7 +130,7 @@ class MovingBodies {
                 accelerateFree(b.motion, b.state, b.fluidForce + b.contactForce,
                                b.fluidTorque + b.contactTorque, g, dt, std::span(pulls[i]));
         }
-        if (!hinges.empty()) holdAllHinges(t, dt);
+        if (!hinges_.empty()) holdAllHinges(t, dt);
         for (MovingBody<Dim>& b : bodies) {
             if (b.motion.type == MotionType::FREE) moveFree(b.state, dt);
             if (b.motion.type == MotionType::PRESCRIBED)
@@ -142,11 +149,14 @@ class MovingBodies {
             if (b.motion.type == MotionType::PRESCRIBED)
                 step[i] = {b.motion.velocity(t - dt / 2), b.motion.spin(t - dt / 2)};
         }
-        holdHinges(hinges, bodies, step, dt);
+        holdHinges(hinges_, bodies, step, dt);
         for (std::size_t i = 0; i < bodies.size(); ++i)
             if (bodies[i].motion.type == MotionType::FREE)
                 bodies[i].state.velocity = step[i].velocity, bodies[i].state.spin = step[i].spin;
     }
+
+    std::vector<BodyHinge<Dim>> hinges_;      ///< between two bodies (body_hinges.hpp)
+    std::vector<std::vector<int>> partners_;  ///< per body, the bodies hinged to it
 
     template <int N>
     static void append(std::vector<double>& out, const Vec<Float, N>& v) {

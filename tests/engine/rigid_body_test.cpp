@@ -13,12 +13,17 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-BodyMotion<2> freeDisc(double mass, double radius) {
+/// A free 2D body of this mass and moment of inertia about its centre of mass.
+BodyMotion<2> freeBody(double mass, double inertia) {
     BodyMotion<2> m;
     m.type = MotionType::FREE;
     m.mass = mass;
-    m.inertia.zz = mass * radius * radius / 2;
+    m.inertia.zz = inertia;
     return m;
+}
+
+BodyMotion<2> freeDisc(double mass, double radius) {
+    return freeBody(mass, mass * radius * radius / 2);
 }
 
 /// The time of the first upward crossing of zero of f after `from` steps (linear interpolation).
@@ -240,13 +245,7 @@ TEST(RigidBody, StatesSaveAndRestore) {
 namespace {
 
 /// A rod of mass M and length L, free about its centre of mass (2D).
-BodyMotion<2> freeRod(double M, double L) {
-    BodyMotion<2> m;
-    m.type = MotionType::FREE;
-    m.mass = M;
-    m.inertia.zz = M * L * L / 12;
-    return m;
-}
+BodyMotion<2> freeRod(double M, double L) { return freeBody(M, M * L * L / 12); }
 
 /// The distance between the two material points of hinge h.
 template <int Dim>

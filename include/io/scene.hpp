@@ -178,21 +178,34 @@ struct PhysicsSpec {
     std::string eos = sph::defaults::eos;           ///< tait or linear
     double backgroundPressure = 0;                  ///< [Pa]
     double maxTension = sph::defaults::maxTension;  ///< [Pa], before the liquid cavitates
+    double maxSpeed = 0;  ///< velocity scale for "auto" sound speeds [m/s] (0: estimated)
 };
 
+/// The scene's `particles` section.
+struct ParticleSpec {
+    double spacing = sph::defaults::spacing, hOverSpacing = sph::defaults::hOverSpacing;
+    std::string kernel = sph::defaults::kernel;
+    std::string evaluation = sph::defaults::evaluation;  ///< the pair loop: asymmetric or symmetric
+};
+
+/// The scene's `time` section.
+struct TimeSpec {
+    double endTime = sph::defaults::endTime, cfl = sph::defaults::cfl, dtMax = 0;
+    std::string integrator = sph::defaults::integrator;
+};
+
+/// The scene's `numerics` section.
+struct NumericsSpec {
+    std::string backend = sph::defaults::backend;  ///< cpu or cuda (--backend overrides it)
+};
+
+/// A scene as read (docs/scenes.md); the sections of plain values are its bases.
 template <int Dim>
-struct Scene {
+struct Scene : ParticleSpec, TimeSpec, NumericsSpec {
     std::string file;  ///< where it was read from (for messages)
     std::string name;
     SceneVec<Dim> domainMin{}, domainMax{};
     std::array<std::array<SideBoundary<Dim>, 2>, Dim> sides{};  ///< [axis][0 = low, 1 = high]
-    double spacing = sph::defaults::spacing, hOverSpacing = sph::defaults::hOverSpacing;
-    std::string kernel = sph::defaults::kernel;
-    std::string evaluation = sph::defaults::evaluation;  ///< the pair loop: asymmetric or symmetric
-    double endTime = sph::defaults::endTime, cfl = sph::defaults::cfl, dtMax = 0;
-    std::string integrator = sph::defaults::integrator;
-    std::string backend =
-        sph::defaults::backend;  ///< numerics.backend: cpu or cuda (--backend overrides it)
     VectorField<Dim> gravity{};
     std::map<std::string, MaterialSpec> materials;
     std::vector<FluidBlock<Dim>> fluids;
@@ -202,7 +215,6 @@ struct Scene {
     OutputSpec output;
     std::vector<Probe<Dim>> probes;
     PhysicsSpec physics;
-    double maxSpeed = 0;  ///< velocity scale for "auto" sound speeds [m/s] (0: estimated)
     std::vector<std::string> warnings;  ///< likely mistakes that are still valid scenes
 };
 

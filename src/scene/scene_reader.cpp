@@ -6,19 +6,14 @@
 #include <set>
 
 #include "geometry/scale_check.hpp"
-#include "io/density_choice.hpp"
 #include "io/formatted.hpp"
 #include "io/nozzle.hpp"
 #include "io/scene_loader.hpp"
 #include "scene/body_motion_reader.hpp"
 #include "scene/boundary_types.hpp"
 #include "scene/json_check.hpp"
+#include "scene/scene_keys.hpp"
 #include "scene/shape_reader.hpp"
-#include "sph/defaults.hpp"
-#include "sph/equation_of_state_choice.hpp"
-#include "sph/evaluation_mode.hpp"
-#include "sph/integrator_choice.hpp"
-#include "sph/kernel_table.hpp"
 
 namespace num::io {
 
@@ -59,28 +54,9 @@ std::string materialName(const At& a, const std::map<std::string, MaterialSpec>&
 }
 
 MaterialSpec readMaterial(const At& a, const std::string& name) {
-    a.object({"density", "sound_speed", "viscosity", "artificial_viscosity", "conductivity",
-              "heat_capacity", "thermal_expansion", "reference_temperature"});
     MaterialSpec m;
     m.name = name;
-    // Below 1e-6 kg/m^3 no continuum fluid exists, and rho^2 (in p / rho^2) underflows near 1e-154.
-    m.density = a.number("density", m.density, 1e-6, 1e7, false, "kg/m^3");
-    if (a.has("sound_speed") &&
-        !(a["sound_speed"].v.is_string() && a["sound_speed"].v.get<std::string>() == "auto")) {
-        if (!a["sound_speed"].v.is_number())
-            a["sound_speed"].fail("a positive number [m/s] or \"auto\"");
-        m.soundSpeed = a["sound_speed"].number(0, kMaxSoundSpeed, true, "m/s");
-    }
-    m.viscosity = a.number("viscosity", m.viscosity, 0, 1e3, false, "m^2/s");
-    if (a.has("artificial_viscosity") && !a["artificial_viscosity"].v.is_string())
-        m.artificialViscosity = a.number("artificial_viscosity", 0, 0, 10);
-    else if (a.has("artificial_viscosity"))
-        a["artificial_viscosity"].choice({"auto"});
-    m.conductivity = a.number("conductivity", m.conductivity, 0, 1e6, false, "W/(m K)");
-    m.heatCapacity = a.number("heat_capacity", m.heatCapacity, 0, 1e7, true, "J/(kg K)");
-    m.thermalExpansion = a.number("thermal_expansion", m.thermalExpansion, 0, 0.01, false, "1/K");
-    m.referenceTemperature =
-        a.number("reference_temperature", m.referenceTemperature, -273.15, 1e4, false, "degC");
+    readKeys(a, materialKeys(), m);
     return m;
 }
 
@@ -306,22 +282,12 @@ void readDomain(const At& domain, Scene<Dim>& s) {
 
 template <int Dim>
 void readParticles(const At& p, Scene<Dim>& s) {
-    p.object({"spacing", "h_over_spacing", "kernel", "evaluation"}, {"spacing"});
-    s.spacing = p["spacing"].number(0, 1e300, true, "m");
-    s.hOverSpacing = p.number("h_over_spacing", s.hOverSpacing, 0.8, 3.0);
-    if (p.has("kernel")) s.kernel = p["kernel"].choice(sph::choiceNames(sph::kernelTable));
-    if (p.has("evaluation"))
-        s.evaluation = p["evaluation"].choice(sph::choiceNames(sph::evaluationTable));
+    readKeys<ParticleSpec>(p, particleKeys(), s);
 }
 
 template <int Dim>
 void readTime(const At& t, Scene<Dim>& s) {
-    t.object({"end", "cfl", "integrator", "dt_max"}, {"end"});
-    s.endTime = t["end"].number(0, 1e300, true, "s");
-    s.cfl = t.number("cfl", s.cfl, 1e-6, 1);  // the engine's range (sph/settings.hpp)
-    s.dtMax = t.number("dt_max", 0, 0, 1e300, false, "s");
-    if (t.has("integrator"))
-        s.integrator = t["integrator"].choice(sph::choiceNames(sph::integratorTable));
+    readKeys<TimeSpec>(t, timeKeys(), s);
 }
 
 template <int Dim>
@@ -334,8 +300,7 @@ void readGravity(const At& g, Scene<Dim>& s) {
 
 template <int Dim>
 void readNumerics(const At& nu, Scene<Dim>& s) {
-    nu.object({"backend"});
-    if (nu.has("backend")) s.backend = nu["backend"].choice({"cpu", "cuda"});
+    readKeys<NumericsSpec>(nu, numericsKeys(), s);
 }
 
 template <int Dim>
@@ -437,53 +402,6 @@ void readEmitters(const At& f, Scene<Dim>& s) {
 
 /// Names only: they are checked against the writers once the plugins have added theirs
 /// (checkOutputFormats). A repeated name is kept once.
-void readOutputFormats(const At& f, OutputSpec& out) {
-    if (!f.v.is_array()) f.fail("an array of output format names, e.g. [\"vtu\", \"csv\"]");
-    out.formats.clear();
-    for (std::size_t i = 0; i < f.v.size(); ++i) {
-        const std::string name = At{f.v.at(i), f.file, f.join(std::to_string(i))}.string();
-        if (std::find(out.formats.begin(), out.formats.end(), name) == out.formats.end())
-            out.formats.push_back(name);
-    }
-}
-
-/// The formats of the plots drawn after the run: "png" and "svg", each once; [] for none.
-void readPlots(const At& f, OutputSpec& out) {
-    if (!f.v.is_array()) f.fail("an array of plot formats, e.g. [\"png\", \"svg\"], or []");
-    out.plots.clear();
-    for (std::size_t i = 0; i < f.v.size(); ++i) {
-        const std::string format = f[i].choice({"png", "svg"});
-        if (std::find(out.plots.begin(), out.plots.end(), format) == out.plots.end())
-            out.plots.push_back(format);
-    }
-}
-
-void readColorRange(const At& c, OutputSpec& out) {
-    c.array(2, "temperatures [degC] (low, high)");
-    out.colorMin = c[0].number(-273.15, 1e4, false, "degC");
-    out.colorMax = c[1].number(-273.15, 1e4, false, "degC");
-    if (!(*out.colorMax > *out.colorMin)) c.fail("low < high");
-}
-
-void readOutput(const At& o, OutputSpec& out) {
-    o.object({"directory", "prefix", "every", "probes_every", "formats", "images", "video",
-              "image_width", "color_range", "plots"});
-    if (o.has("directory")) out.directory = o["directory"].string();
-    if (o.has("prefix")) {
-        out.prefix = o["prefix"].string();
-        if (out.prefix.empty() || out.prefix.find_first_of("/\\ ") != std::string::npos)
-            o["prefix"].fail("a non-empty file-name prefix without '/', '\\' or spaces");
-    }
-    out.every = o.number("every", out.every, 0, 1e300, true, "s");
-    if (o.has("probes_every")) out.probesEvery = o.number("probes_every", 0, 0, 1e300, true, "s");
-    if (o.has("plots")) readPlots(o["plots"], out);
-    if (o.has("formats")) readOutputFormats(o["formats"], out);
-    out.images = o.boolean("images", out.images);
-    out.video = o.boolean("video", out.video);
-    if (o.has("image_width")) out.imageWidth = int(o["image_width"].integer(64, 8192));
-    if (o.has("color_range")) readColorRange(o["color_range"], out);
-}
-
 /// A side's name ("x_min", ...) as 2 axis + high.
 template <int Dim>
 int sideIndex(const At& a) {
@@ -545,26 +463,7 @@ void readProbes(const At& f, Scene<Dim>& s) {
 
 template <int Dim>
 void readPhysics(const At& ph, Scene<Dim>& s) {
-    ph.object({"heat", "buoyancy", "density", "density_diffusion", "shifting",
-               "shifting_normal_to_walls", "free_surface_clamp", "free_surface_density_floor",
-               "gravity_ramp", "max_speed", "eos", "background_pressure", "max_tension"});
-    s.physics.heat = ph.boolean("heat", s.physics.heat);
-    s.physics.buoyancy = ph.boolean("buoyancy", s.physics.buoyancy);
-    if (ph.has("density")) s.physics.density = ph["density"].choice(sph::choiceNames(densityTable));
-    s.physics.densityDiffusion = ph.number("density_diffusion", s.physics.densityDiffusion, 0, 1);
-    s.physics.shifting = ph.boolean("shifting", s.physics.shifting);
-    s.physics.shiftingNormalToWalls =
-        ph.boolean("shifting_normal_to_walls", s.physics.shiftingNormalToWalls);
-    s.physics.freeSurfaceTensionLimit =
-        ph.boolean("free_surface_clamp", s.physics.freeSurfaceTensionLimit);
-    s.physics.freeSurfaceDensityFloor =
-        ph.number("free_surface_density_floor", s.physics.freeSurfaceDensityFloor, 0, 1, true);
-    s.physics.gravityRamp = ph.number("gravity_ramp", 0, 0, 1e300, false, "s");
-    s.maxSpeed = ph.number("max_speed", 0, 0, kMaxSoundSpeed / sph::defaults::soundSpeedFactor,
-                           false, "m/s");
-    if (ph.has("eos")) s.physics.eos = ph["eos"].choice(sph::choiceNames(sph::eosTable));
-    s.physics.backgroundPressure = ph.number("background_pressure", 0, 0, 1e12, false, "Pa");
-    s.physics.maxTension = ph.number("max_tension", s.physics.maxTension, 0, 1e12, true, "Pa");
+    readKeys(ph, physicsKeys(), s.physics);
 }
 
 }  // namespace
@@ -592,7 +491,7 @@ Scene<Dim> readScene(const SceneDocument& doc) {
     if (root.has("bodies")) readBodies(root["bodies"], s);
     if (root.has("walls")) readWalls(root["walls"], s);
     if (root.has("emitters")) readEmitters(root["emitters"], s);
-    if (root.has("output")) readOutput(root["output"], s.output);
+    if (root.has("output")) readKeys(root["output"], outputKeys(), s.output);
     if (root.has("probes")) readProbes(root["probes"], s);
     if (root.has("physics")) readPhysics(root["physics"], s);
     warnShapeScales(s);

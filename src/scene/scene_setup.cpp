@@ -160,7 +160,7 @@ void seeGravity(const Scene<Dim>& scene, const sph::Vector<Dim>& g, bool open, S
 template <int Dim>
 SpeedScale velocityScale(const Scene<Dim>& scene, const sph::Vector<Dim>& g) {
     SpeedScale s;
-    if (scene.maxSpeed > 0) return {scene.maxSpeed, "physics.max_speed"};
+    if (scene.physics.maxSpeed > 0) return {scene.physics.maxSpeed, "physics.max_speed"};
     for (std::size_t i = 0; i < scene.fluids.size(); ++i)
         s.see(largestBlockSpeed(scene, scene.fluids[i]),
               "fluids[" + std::to_string(i) + "].velocity");

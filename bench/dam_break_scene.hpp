@@ -76,7 +76,7 @@ std::unique_ptr<Scene<Dim>> makeDamBreak(const SceneOptions& o) {
     geo.domain.min = lo;
     geo.domain.max = hi;
     geo.walls[1][1].present = false;  // open top
-    geo.fluid.push_back(FluidRegion<Dim>::filling(Shape<Dim>::box(lo, columnHi)));
+    geo.fluid.push_back(FluidRegion<Dim>::filling(BoxOrBall<Dim>::box(lo, columnHi)));
 
     s->settings.set("smoothing_length", 1.3 * o.dx)
         .set("kernel", std::string("wendland_c2"))

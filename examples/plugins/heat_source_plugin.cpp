@@ -7,7 +7,7 @@
 // particle, q V_i [W], is the field "heat_source_power" a scene may write out.
 #include <tuple>
 
-#include "io/plugin.hpp"
+#include "app/plugin.hpp"
 #include "numerics.hpp"
 
 namespace {
@@ -86,7 +86,7 @@ class HeatSource : public IEquationTerm<Dim> {
 
 /// Reads {"power_density": q, "min": [...], "max": [...]} for Dim.
 template <int Dim>
-auto readHeatSource(const num::io::plugin::Parameters& p) {
+auto readHeatSource(const num::app::plugin::Parameters& p) {
     p.allow({"power_density", "min", "max"});
     const auto lo = p.vector<Dim>("min", "m"), hi = p.vector<Dim>("max", "m");
     for (int k = 0; k < Dim; ++k)

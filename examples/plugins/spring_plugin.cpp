@@ -3,11 +3,11 @@
 // feels a = -k r / m towards the origin, in fluid_sim (2D) and fluid_sim_3d (3D).
 #include <tuple>
 
-#include "io/plugin.hpp"
+#include "app/plugin.hpp"
 #include "spring_force.hpp"
 
 NUMERICS_PLUGIN(registry) {
-    registry.add<examples::SpringForce>("spring", [](const num::io::plugin::Parameters& p) {
+    registry.add<examples::SpringForce>("spring", [](const num::app::plugin::Parameters& p) {
         p.allow({"stiffness", "steps_per_radian"});
         return std::tuple{p.positive("stiffness", "N/m"),
                           p.number("steps_per_radian", 20.0, 1, 1e6)};

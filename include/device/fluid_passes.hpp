@@ -176,7 +176,7 @@ struct InputsPass {
 
 /// Every pair sum of a fluid particle, in one gather over its neighbours.
 template <int Dim, class Kernel>
-struct PairPass {
+struct FluidGather {
     using Vec = Vector<Dim>;
     Arrays<Dim> d;
     GridShape<Dim> grid;
@@ -327,7 +327,7 @@ struct PostStep {
     Float diffusion, cap, w0;  // A h c0 dt, 0.1 h, W(0)
     Vector<Dim> lo, hi;
     bool wallLow[Dim], wallHigh[Dim];
-    const sph::Shape<Dim>* bodies;
+    const sph::BoxOrBall<Dim>* bodies;
     int bodyCount;
     NUMERICS_HD void operator()(Index i) const {
         if (d.kind[i] != fluid) return;

@@ -51,7 +51,7 @@ struct FluidStepConfig {
     bool shiftingNormalToWalls = false;
     bool contain = false;                         ///< containment in the box's walls
     bool wallLow[Dim] = {}, wallHigh[Dim] = {};   ///< which box sides are walls
-    std::vector<sph::Shape<Dim>> bodies;          ///< the solid bodies' shapes (containment)
+    std::vector<sph::BoxOrBall<Dim>> bodies;      ///< the solid bodies' shapes (containment)
     std::function<Vector<Dim>(Float)> bodyForce;  ///< empty: none
     // Heat (terms/heat_model.hpp).
     bool conduction = false;  ///< conduction with the thermal conditions of walls and bodies

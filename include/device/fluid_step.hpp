@@ -172,10 +172,10 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
                                                  c_.eos, g, heat_ && c_.conduction});
             exec_.forEach(n_, passes::InputsPass<Dim, K>{d, value, c_.w0});
             exec_.forEach(
-                n_, passes::PairPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(),
-                                             sph::GradientFactor<K>(c_.h), value, c_.laplacianEta2,
-                                             c_.inverseR2Eta2, c_.deltaCoefficient, c_.alphaC0h,
-                                             c_.laminar, gravityTerm, g, heat_ && c_.buoyancy});
+                n_, passes::FluidGather<Dim, K>{
+                        d, grid_.grid(), grid_.start(), grid_.end(), sph::GradientFactor<K>(c_.h),
+                        value, c_.laplacianEta2, c_.inverseR2Eta2, c_.deltaCoefficient, c_.alphaC0h,
+                        c_.laminar, gravityTerm, g, heat_ && c_.buoyancy});
             if (heat_ && c_.conduction)
                 exec_.forEach(
                     n_, passes::HeatPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(),
@@ -334,7 +334,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     Buffer<Float, Exec> tempFloat_;
     Buffer<int, Exec> tempInt_;
     Buffer<Index, Exec> tempIndex_;
-    Buffer<sph::Shape<Dim>, Exec> bodies_;
+    Buffer<sph::BoxOrBall<Dim>, Exec> bodies_;
     bool heat_ = false;  // temperature on the device (the config's heat and the particles')
     Buffer<Float, Exec> T_, dT_, dTOld_, Tb_, heatSource_;
     Buffer<int, Exec> material_, condition_;

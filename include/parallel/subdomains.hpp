@@ -41,7 +41,7 @@ class Subdomains {
 
     /// The distance from x to box r, through the periodic images.
     double distance(const Point& x, int r) const {
-        const Box& b = boxes_[std::size_t(r)];
+        const Bounds& b = boxes_[std::size_t(r)];
         double d2 = 0;
         for (int k = 0; k < Dim; ++k) {
             auto gap = [&](double c) {
@@ -56,13 +56,13 @@ class Subdomains {
     }
 
   private:
-    struct Box {
+    struct Bounds {
         Point lo, hi;
     };
 
     /// The bounds a box starts from: the domain on periodic axes, unbounded on the others.
-    Box wholeSpace() const {
-        Box b;
+    Bounds wholeSpace() const {
+        Bounds b;
         for (int k = 0; k < Dim; ++k) {
             const double inf = std::numeric_limits<double>::infinity();
             b.lo[k] = domain_.periodic[k] ? domain_.min[k] : -inf;
@@ -74,7 +74,7 @@ class Subdomains {
     /// Splits box `box`, holding the points [begin, end), among the processes [first, first +
     /// parts): points below the cut go to the first parts / 2.
     template <class It>
-    void bisect(It begin, It end, int first, int parts, Box box) {
+    void bisect(It begin, It end, int first, int parts, Bounds box) {
         if (parts == 1) {
             boxes_[std::size_t(first)] = box;
             return;
@@ -106,14 +106,14 @@ class Subdomains {
                                                          : 0.0;
         }
         const It middle = std::partition(begin, end, [&](const Point& p) { return p[axis] < cut; });
-        Box left = box, right = box;
+        Bounds left = box, right = box;
         left.hi[axis] = cut, right.lo[axis] = cut;
         bisect(begin, middle, first, below, left);
         bisect(middle, end, first + below, parts - below, right);
     }
 
     Domain<Dim> domain_;
-    std::vector<Box> boxes_;
+    std::vector<Bounds> boxes_;
 };
 
 }  // namespace num::parallel

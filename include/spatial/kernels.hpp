@@ -22,12 +22,12 @@ namespace num::kernels {
 
 /// Shared machinery: a kernel derives from this and provides the shape f(q), its
 /// derivative df/dq, the constant `support` and the normalisations sigma(Dim).
-template <class Shape, int Dim, class T>
+template <class Profile, int Dim, class T>
 struct RadialKernel {
     static_assert(Dim >= 1 && Dim <= 3, "kernels are defined for Dim = 1, 2, 3");
     static constexpr int dim = Dim;
-    static constexpr T support = Shape::template supportIn<T>();
-    static constexpr T sigma = Shape::template sigma<T>(Dim);
+    static constexpr T support = Profile::template supportIn<T>();
+    static constexpr T sigma = Profile::template sigma<T>(Dim);
 
     /// Support radius H = support * h.
     NUMERICS_HD static constexpr T supportRadius(T h) { return support * h; }
@@ -42,17 +42,17 @@ struct RadialKernel {
 
     NUMERICS_HD static T W(T r, T h) {
         const T q = r / h;
-        return q >= support ? T(0) : sigma / hPowDim(h) * Shape::f(q);
+        return q >= support ? T(0) : sigma / hPowDim(h) * Profile::f(q);
     }
     NUMERICS_HD static T dW_dr(T r, T h) {
         const T q = r / h;
-        return q >= support ? T(0) : sigma / (hPowDim(h) * h) * Shape::df(q);
+        return q >= support ? T(0) : sigma / (hPowDim(h) * h) * Profile::df(q);
     }
     /// dW/dh at fixed r: -(sigma / h^(Dim+1)) (Dim f(q) + q f'(q)).
     NUMERICS_HD static T dW_dh(T r, T h) {
         const T q = r / h;
         if (q >= support) return T(0);
-        return -sigma / (hPowDim(h) * h) * (T(Dim) * Shape::f(q) + q * Shape::df(q));
+        return -sigma / (hPowDim(h) * h) * (T(Dim) * Profile::f(q) + q * Profile::df(q));
     }
     /// grad_i W(|r_ij|, h) for r_ij = x_i - x_j; zero at r = 0 where the direction is undefined.
     NUMERICS_HD static Vec<T, Dim> gradW(const Vec<T, Dim>& rij, T h) {
@@ -65,7 +65,7 @@ struct RadialKernel {
 };
 
 /// Cubic B-spline M4 (Monaghan 1992, eq. 2.6; Monaghan & Lattanzio 1985). Support 2h.
-struct CubicSplineShape {
+struct CubicSplineProfile {
     template <class T>
     static constexpr T supportIn() {
         return T(2);
@@ -94,7 +94,7 @@ struct CubicSplineShape {
 /// Quintic B-spline M6 (Morris, Fox & Zhu 1997, eq. 12). Support 3h.
 /// sigma = 1/120, 7/(478 pi), 1/(120 pi) in 1D, 2D, 3D: the exact values of 1 / int f.
 /// (The 3D constant 3/(359 pi) found in some texts is 0.28 % too large.)
-struct QuinticSplineShape {
+struct QuinticSplineProfile {
     template <class T>
     static constexpr T supportIn() {
         return T(3);
@@ -133,7 +133,7 @@ struct QuinticSplineShape {
 
 /// Wendland C2 (Wendland 1995; Dehnen & Aly 2012, table 1). Support 2h.
 /// 2D/3D: f = (1 - q/2)^4 (2q + 1);  1D: f = (1 - q/2)^3 (1.5q + 1).
-struct WendlandC2Shape {
+struct WendlandC2Profile {
     template <class T>
     static constexpr T supportIn() {
         return T(2);
@@ -149,7 +149,7 @@ struct WendlandC2Shape {
 
 /// Wendland C4 (Dehnen & Aly 2012, table 1). Support 2h.
 /// 2D/3D: f = (1 - q/2)^6 (35/12 q^2 + 3q + 1);  1D: f = (1 - q/2)^5 (2q^2 + 2.5q + 1).
-struct WendlandC4Shape {
+struct WendlandC4Profile {
     template <class T>
     static constexpr T supportIn() {
         return T(2);
@@ -166,7 +166,7 @@ struct WendlandC4Shape {
 /// Spiky kernel (Desbrun & Gascuel 1996; Mueller et al. 2003): W = C (H - r)^3 with H = 2h,
 /// whose slope stays non-zero at r = 0 so that the pressure gradient keeps particles apart.
 /// In the h form f = (2 - q)^3, sigma = 1/8, 5/(16 pi), 15/(64 pi) in 1D, 2D, 3D.
-struct SpikyShape {
+struct SpikyProfile {
     template <class T>
     static constexpr T supportIn() {
         return T(2);
@@ -193,7 +193,7 @@ struct SpikyShape {
 
 /// Wendland shapes differ between 1D and 2D/3D; this adapter picks the right one for Dim.
 template <int Dim>
-struct WendlandC2DimShape : WendlandC2Shape {
+struct WendlandC2DimProfile : WendlandC2Profile {
     template <class T>
     NUMERICS_HD static constexpr T f(T q) {
         const T s = T(1) - T(0.5) * q;
@@ -216,7 +216,7 @@ struct WendlandC2DimShape : WendlandC2Shape {
 };
 
 template <int Dim>
-struct WendlandC4DimShape : WendlandC4Shape {
+struct WendlandC4DimProfile : WendlandC4Profile {
     template <class T>
     NUMERICS_HD static constexpr T f(T q) {
         const T s = T(1) - T(0.5) * q;
@@ -243,14 +243,14 @@ struct WendlandC4DimShape : WendlandC4Shape {
 };
 
 template <int Dim, class T = double>
-using CubicSpline = RadialKernel<CubicSplineShape, Dim, T>;
+using CubicSpline = RadialKernel<CubicSplineProfile, Dim, T>;
 template <int Dim, class T = double>
-using QuinticSpline = RadialKernel<QuinticSplineShape, Dim, T>;
+using QuinticSpline = RadialKernel<QuinticSplineProfile, Dim, T>;
 template <int Dim, class T = double>
-using WendlandC2 = RadialKernel<WendlandC2DimShape<Dim>, Dim, T>;
+using WendlandC2 = RadialKernel<WendlandC2DimProfile<Dim>, Dim, T>;
 template <int Dim, class T = double>
-using WendlandC4 = RadialKernel<WendlandC4DimShape<Dim>, Dim, T>;
+using WendlandC4 = RadialKernel<WendlandC4DimProfile<Dim>, Dim, T>;
 template <int Dim, class T = double>
-using Spiky = RadialKernel<SpikyShape, Dim, T>;
+using Spiky = RadialKernel<SpikyProfile, Dim, T>;
 
 }  // namespace num::kernels

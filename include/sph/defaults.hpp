@@ -1,5 +1,5 @@
 // The numerical defaults of the fluid solver, in one place: the library (FluidModel,
-// RunSettings, Material), the scene reader (io/scene.hpp) and the documentation
+// RunSettings, Material), the scene reader (app/scene.hpp) and the documentation
 // (docs/scenes.md, checked by a test) all take them from here. They are the configuration the
 // validation report (docs/validation.md) measures: a scene that states only geometry,
 // materials and resolution runs the validated scheme.
@@ -138,7 +138,7 @@ inline constexpr double neighbourSkin = 0.1;
 inline constexpr double neighbourSkinMax = 0.3;
 
 // Choices of a scene (the tables: sph/kernel_table.hpp, sph/integrator_choice.hpp,
-// sph/evaluation_mode.hpp, sph/equation_of_state_choice.hpp, io/density_choice.hpp).
+// sph/evaluation_mode.hpp, sph/equation_of_state_choice.hpp, app/density_choice.hpp).
 // Leapfrog (kick-drift-kick): second order and symplectic, one evaluation per step.
 inline constexpr const char* integrator = "leapfrog";
 // Density by summation in a full box closed by walls under gravity, else by continuity

@@ -140,7 +140,7 @@ class Accumulated {
                         ForRanges&& forRanges) {
         if (blocks.empty() || blocks[0].inStorage_) return;  // summed there already
         for (std::size_t k = 0; k < blocks[0].buffers_.size(); ++k) {
-            const Buffer& b0 = blocks[0].buffers_[k];
+            const SumBuffer& b0 = blocks[0].buffers_[k];
             std::visit(
                 [&](const auto& v0) {
                     using T = typename std::decay_t<decltype(v0)>::value_type;
@@ -165,7 +165,7 @@ class Accumulated {
     }
 
   private:
-    struct Buffer {
+    struct SumBuffer {
         QuantityId id;
         OrderEnum target;
         std::variant<std::vector<Float>, std::vector<Vector<Dim>>> data;  ///< empty in storage
@@ -173,12 +173,12 @@ class Accumulated {
     };
     /// The storage's array of a target summed in the storage (MissingQuantity if it has none).
     template <class T>
-    ArrayView<T> bind(const Buffer& b) {
+    ArrayView<T> bind(const SumBuffer& b) {
         if (!storage_) throw std::logic_error("Accumulated: reset(storage) before the sums");
         return target<T>(*storage_, b);
     }
     template <class T>
-    static ArrayView<T> target(Storage<Dim>& s, const Buffer& b) {
+    static ArrayView<T> target(Storage<Dim>& s, const SumBuffer& b) {
         switch (b.target) {
             case OrderEnum::ZERO:
                 return s.template getValue<T>(b.id);
@@ -188,7 +188,7 @@ class Accumulated {
                 return s.template getD2t<T>(b.id);
         }
     }
-    std::vector<Buffer> buffers_;
+    std::vector<SumBuffer> buffers_;
     Size size_ = 0;
     bool inStorage_ = false;
     Storage<Dim>* storage_ = nullptr;  ///< of the last reset(storage)

@@ -22,7 +22,7 @@
 //     geo.domain.max = {{4 * dx, L}};
 //     geo.domain.periodic = {true, false};
 //     geo.spacing = dx;
-//     geo.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(geo.domain.min, geo.domain.max)));
+//     geo.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box(geo.domain.min, geo.domain.max)));
 //     Storage<2> storage = makeFluidStorage(model, geo, settings);
 //     Solver<2> solver(scheduler, settings, makeFluidEquations(model, geo), geo.domain);
 //     LeapfrogKDK<2> integrator;

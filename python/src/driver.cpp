@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-#include "io/formatted.hpp"
+#include "app/formatted.hpp"
 
 namespace num::python {
 
@@ -13,12 +13,12 @@ namespace {
 
 /// The Driver's part in each step: callbacks land on their times, views detach before a step.
 template <int Dim>
-class FrontEndObserver final : public io::IStepObserver<Dim> {
+class FrontEndObserver final : public app::IStepObserver<Dim> {
   public:
     explicit FrontEndObserver(Driver<Dim>& d) : d_(d) {}
     double landingTime() const override { return d_.landingTime(); }
-    void beforeStep(io::Simulation<Dim>&, bool) override { d_.beforeStep(); }
-    void afterStep(io::Simulation<Dim>&) override { d_.afterStep(); }
+    void beforeStep(app::Simulation<Dim>&, bool) override { d_.beforeStep(); }
+    void afterStep(app::Simulation<Dim>&) override { d_.afterStep(); }
 
   private:
     Driver<Dim>& d_;
@@ -37,7 +37,7 @@ struct Disarm {
 }  // namespace
 
 template <int Dim>
-Driver<Dim>::Driver(const io::SceneDocument& doc, const io::RunOptions& options)
+Driver<Dim>::Driver(const app::SceneDocument& doc, const app::RunOptions& options)
     : sim_(doc, options) {
     sim_.addObserver(std::make_unique<FrontEndObserver<Dim>>(*this));
 }
@@ -45,28 +45,28 @@ Driver<Dim>::Driver(const io::SceneDocument& doc, const io::RunOptions& options)
 template <int Dim>
 void Driver<Dim>::checkSameThread(const char* what) const {
     if (runner_ && *runner_ != std::this_thread::get_id())
-        throw io::AppError(io::ExitCode::USAGE,
-                           std::string(what) +
-                               " cannot be called while another thread runs this Simulation "
-                               "(its step() or run()): drive one Simulation from one thread at "
-                               "a time, or wait for that call to return");
+        throw app::AppError(app::ExitCode::USAGE,
+                            std::string(what) +
+                                " cannot be called while another thread runs this Simulation "
+                                "(its step() or run()): drive one Simulation from one thread at "
+                                "a time, or wait for that call to return");
 }
 
 template <int Dim>
 void Driver<Dim>::checkCanStep() const {
     checkSameThread("step() and run()");
     if (armed_)
-        throw io::AppError(io::ExitCode::USAGE,
-                           "step() and run() cannot be called from a callback of run(): return "
-                           "from it, and the run goes on");
+        throw app::AppError(app::ExitCode::USAGE,
+                            "step() and run() cannot be called from a callback of run(): return "
+                            "from it, and the run goes on");
     if (finished_)
-        throw io::AppError(io::ExitCode::USAGE,
-                           "the run has ended (summary.json written): make a new Simulation to "
-                           "run again");
+        throw app::AppError(app::ExitCode::USAGE,
+                            "the run has ended (summary.json written): make a new Simulation to "
+                            "run again");
     if (reached(sim_.time(), sim_.endTime()))
-        throw io::AppError(io::ExitCode::USAGE,
-                           "the run is at its end time (t = " + io::formatted("%g", sim_.time()) +
-                               " s): call run() to write its end, or give a later end_time");
+        throw app::AppError(app::ExitCode::USAGE,
+                            "the run is at its end time (t = " + app::formatted("%g", sim_.time()) +
+                                " s): call run() to write its end, or give a later end_time");
 }
 
 template <int Dim>
@@ -81,10 +81,10 @@ template <int Dim>
 int Driver<Dim>::advance(double until, double every, py::object callback, py::object progress) {
     if (finished_ || armed_ || runner_) checkCanStep();
     if (!std::isfinite(until) || !std::isfinite(every) || every < 0)
-        throw io::AppError(io::ExitCode::USAGE,
-                           "run: until and every must be finite (every >= 0), found until = " +
-                               io::formatted("%g", until) +
-                               ", every = " + io::formatted("%g", every));
+        throw app::AppError(app::ExitCode::USAGE,
+                            "run: until and every must be finite (every >= 0), found until = " +
+                                app::formatted("%g", until) +
+                                ", every = " + app::formatted("%g", every));
     const Running running(runner_);
     armed_ = true, every_ = every, callback_ = std::move(callback), progress_ = std::move(progress);
     nextCall_ = every_ > 0 ? (std::floor(sim_.time() / every_ + 1e-9) + 1) * every_ : 0;

@@ -13,8 +13,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/simulation.hpp"
 #include "bindings.hpp"
-#include "io/simulation.hpp"
 #include "particle_views.hpp"
 
 namespace num::python {
@@ -30,7 +30,7 @@ struct PythonErrorPending {};
 template <int Dim>
 class Driver {
   public:
-    Driver(const io::SceneDocument& doc, const io::RunOptions& options);
+    Driver(const app::SceneDocument& doc, const app::RunOptions& options);
 
     /// One step (GIL released); returns its dt.
     double step();
@@ -39,7 +39,7 @@ class Driver {
     /// and `progress()` a few times a second. Returns the exit code of an ended run, else 0.
     int advance(double until, double every, py::object callback, py::object progress);
 
-    io::Simulation<Dim>& simulation() { return sim_; }
+    app::Simulation<Dim>& simulation() { return sim_; }
     /// Whether the run has ended (summary.json written): no more steps.
     bool finished() const { return finished_; }
     /// Counts the steps started: a Particles object of an earlier count is stale.
@@ -70,7 +70,7 @@ class Driver {
     /// Throws the error a callback or Ctrl-C left, if any.
     void throwPending();
 
-    io::Simulation<Dim> sim_;
+    app::Simulation<Dim> sim_;
     bool finished_ = false;
     std::uint64_t generation_ = 0;
     std::weak_ptr<ViewKeeper> views_;        ///< of the particles as they are now

@@ -4,9 +4,9 @@
 #include <new>
 #include <string>
 
+#include "app/errors.hpp"
+#include "app/expression.hpp"
 #include "bindings.hpp"
-#include "io/errors.hpp"
-#include "io/expression.hpp"
 #include "set_up_interrupt.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/settings_error.hpp"
@@ -16,7 +16,7 @@ namespace num::python {
 
 namespace {
 
-using io::ExitCode;
+using app::ExitCode;
 
 bool isSceneCode(ExitCode code) {
     return code == ExitCode::SCENE_FILE || code == ExitCode::JSON_SYNTAX ||
@@ -41,9 +41,9 @@ void translate(std::exception_ptr thrown) {
     } catch (const sph::SetUpInterrupted&) {
         // Ctrl-C in a set-up: the signal handler's exception (KeyboardInterrupt) is set.
         if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
-    } catch (const io::AppError& e) {
+    } catch (const app::AppError& e) {
         raise(e.code(), e.what());
-    } catch (const io::ExpressionError& e) {
+    } catch (const app::ExpressionError& e) {
         raise(ExitCode::EXPRESSION, std::string("expression: ") + e.what());
     } catch (const sph::SettingsError& e) {
         raise(ExitCode::SCENE, std::string("scene setting: ") + e.what());

@@ -8,7 +8,7 @@ namespace num::python {
 
 namespace {
 
-using io::OutputField;
+using app::OutputField;
 using sph::QuantityId;
 
 /// Where a field lives in the storage.
@@ -19,11 +19,11 @@ struct FieldRef {
 };
 
 template <int Dim>
-std::optional<FieldRef> findField(const sph::Storage<Dim>& s, const io::FieldNames& names,
+std::optional<FieldRef> findField(const sph::Storage<Dim>& s, const app::FieldNames& names,
                                   const std::string& name) {
     if (name == "position" && s.has(QuantityId::POSITION))
         return FieldRef{QuantityId::POSITION, 0, OutputField::Type::VECTOR};
-    for (const OutputField& f : io::outputFields(s, names))
+    for (const OutputField& f : app::outputFields(s, names))
         if (f.name == name) return FieldRef{f.id, f.derivative ? 1 : 0, f.type};
     return std::nullopt;
 }
@@ -64,15 +64,15 @@ void ViewKeeper::detach(sph::Storage<Dim>& s) {
 
 template <int Dim>
 std::vector<std::string> particleFieldNames(const sph::Storage<Dim>& s,
-                                            const io::FieldNames& names) {
+                                            const app::FieldNames& names) {
     std::vector<std::string> out;
     if (s.has(QuantityId::POSITION)) out.push_back("position");
-    for (const OutputField& f : io::outputFields(s, names)) out.push_back(f.name);
+    for (const OutputField& f : app::outputFields(s, names)) out.push_back(f.name);
     return out;
 }
 
 template <int Dim>
-py::array particleView(sph::Storage<Dim>& s, const io::FieldNames& names, const std::string& name,
+py::array particleView(sph::Storage<Dim>& s, const app::FieldNames& names, const std::string& name,
                        bool writable, const std::shared_ptr<ViewKeeper>& keeper) {
     const std::optional<FieldRef> f = findField(s, names, name);
     if (!f) {
@@ -99,11 +99,13 @@ void bindViewKeeper(py::module_& m) {
 
 template void ViewKeeper::detach(sph::Storage<2>&);
 template void ViewKeeper::detach(sph::Storage<3>&);
-template std::vector<std::string> particleFieldNames(const sph::Storage<2>&, const io::FieldNames&);
-template std::vector<std::string> particleFieldNames(const sph::Storage<3>&, const io::FieldNames&);
-template py::array particleView(sph::Storage<2>&, const io::FieldNames&, const std::string&, bool,
+template std::vector<std::string> particleFieldNames(const sph::Storage<2>&,
+                                                     const app::FieldNames&);
+template std::vector<std::string> particleFieldNames(const sph::Storage<3>&,
+                                                     const app::FieldNames&);
+template py::array particleView(sph::Storage<2>&, const app::FieldNames&, const std::string&, bool,
                                 const std::shared_ptr<ViewKeeper>&);
-template py::array particleView(sph::Storage<3>&, const io::FieldNames&, const std::string&, bool,
+template py::array particleView(sph::Storage<3>&, const app::FieldNames&, const std::string&, bool,
                                 const std::shared_ptr<ViewKeeper>&);
 
 }  // namespace num::python

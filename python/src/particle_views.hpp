@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "app/fields.hpp"
 #include "bindings.hpp"
-#include "io/fields.hpp"
 #include "sph/storage.hpp"
 
 namespace num::python {
@@ -39,11 +39,11 @@ class ViewKeeper {
 /// density, ..., id and every user or plugin quantity).
 template <int Dim>
 std::vector<std::string> particleFieldNames(const sph::Storage<Dim>& s,
-                                            const io::FieldNames& names);
+                                            const app::FieldNames& names);
 
 /// A view of field `name` (ValueError when the run has no such field); `keeper` is its base.
 template <int Dim>
-py::array particleView(sph::Storage<Dim>& s, const io::FieldNames& names, const std::string& name,
+py::array particleView(sph::Storage<Dim>& s, const app::FieldNames& names, const std::string& name,
                        bool writable, const std::shared_ptr<ViewKeeper>& keeper);
 
 void bindViewKeeper(py::module_& m);

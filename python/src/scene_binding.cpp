@@ -1,14 +1,14 @@
-// _numerics.SceneDocument over io::SceneDocument: the scene as the apps read it, with --set.
+// _numerics.SceneDocument over app::SceneDocument: the scene as the apps read it, with --set.
 #include <pybind11/stl.h>
 
+#include "app/scene_loader.hpp"
 #include "bindings.hpp"
-#include "io/scene_loader.hpp"
 #include "set_up_interrupt.hpp"
 
 namespace num::python {
 
 void bindScene(py::module_& m) {
-    using io::SceneDocument;
+    using app::SceneDocument;
     py::class_<SceneDocument>(m, "SceneDocument")
         .def_static("from_file", &SceneDocument::fromFile, py::arg("path"),
                     "Reads and parses a scene file.")
@@ -25,9 +25,9 @@ void bindScene(py::module_& m) {
                 const StopSetUpOnCtrlC ctrlC;
                 py::gil_scoped_release released;  // other Python threads run meanwhile
                 if (d.dimension() == 3)
-                    io::readScene<3>(d);
+                    app::readScene<3>(d);
                 else
-                    io::readScene<2>(d);
+                    app::readScene<2>(d);
             },
             "Reads and checks every key as a run does (its errors).")
         .def("copy", [](const SceneDocument& d) { return SceneDocument(d); });

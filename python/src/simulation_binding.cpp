@@ -12,10 +12,10 @@ namespace num::python {
 
 namespace {
 
-io::RunOptions runOptions(int threads, const std::optional<std::string>& out, bool quiet,
-                          const std::optional<double>& endTime,
-                          const std::optional<std::string>& backend) {
-    io::RunOptions o;
+app::RunOptions runOptions(int threads, const std::optional<std::string>& out, bool quiet,
+                           const std::optional<double>& endTime,
+                           const std::optional<std::string>& backend) {
+    app::RunOptions o;
     o.program = "numerics";
     o.threads = threads, o.outDir = out, o.quiet = quiet, o.endTime = endTime;
     if (backend) o.backend = *backend, o.backendGiven = true;
@@ -71,13 +71,14 @@ void setBodyVelocity(Driver<Dim>& d, const std::string& body, const std::vector<
     for (std::size_t i = 0; bodies && i < bodies->bodies.size(); ++i)
         if (bodies->bodies[i].name == body) found = &bodies->bodies[i];
     if (!found || found->motion.type != sph::MotionType::PRESCRIBED)
-        throw io::AppError(io::ExitCode::USAGE,
-                           "body: \"" + body +
-                               "\" is not a prescribed body of this scene (bodies.csv names them)");
+        throw app::AppError(
+            app::ExitCode::USAGE,
+            "body: \"" + body +
+                "\" is not a prescribed body of this scene (bodies.csv names them)");
     if (velocity.size() != std::size_t(Dim) || angularVelocity.size() != S)
-        throw io::AppError(io::ExitCode::USAGE, "velocity: " + std::to_string(Dim) +
-                                                    " numbers, angular_velocity: " +
-                                                    std::to_string(S) + " (m/s, rad/s)");
+        throw app::AppError(app::ExitCode::USAGE, "velocity: " + std::to_string(Dim) +
+                                                      " numbers, angular_velocity: " +
+                                                      std::to_string(S) + " (m/s, rad/s)");
     sph::Vector<Dim> v;
     sph::Spin<Dim> w;
     for (int k = 0; k < Dim; ++k) v[k] = velocity[std::size_t(k)];
@@ -90,11 +91,11 @@ template <int Dim>
 void bindDriver(py::module_& m, const char* name) {
     using D = Driver<Dim>;
     py::class_<D>(m, name)
-        .def(py::init([](const io::SceneDocument& doc, int threads,
+        .def(py::init([](const app::SceneDocument& doc, int threads,
                          const std::optional<std::string>& out, bool quiet,
                          const std::optional<double>& endTime,
                          const std::optional<std::string>& backend) {
-                 const io::RunOptions o = runOptions(threads, out, quiet, endTime, backend);
+                 const app::RunOptions o = runOptions(threads, out, quiet, endTime, backend);
                  const StopSetUpOnCtrlC ctrlC;
                  py::gil_scoped_release released;
                  return std::make_unique<D>(doc, o);

@@ -1,4 +1,4 @@
-#include "io/app.hpp"
+#include "app/app.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -12,15 +12,15 @@
 #include <iostream>
 #include <memory>
 
+#include "app/errors.hpp"
+#include "app/expression.hpp"
+#include "app/simulation.hpp"
 #include "device/backend.hpp"
-#include "io/errors.hpp"
-#include "io/expression.hpp"
-#include "io/simulation.hpp"
 #include "run/agreed_errors.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/settings.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -307,4 +307,4 @@ int runApp(int argc, char** argv, const AppInfo& info) {
 template int runApp<2>(int, char**, const AppInfo&);
 template int runApp<3>(int, char**, const AppInfo&);
 
-}  // namespace num::io
+}  // namespace num::app

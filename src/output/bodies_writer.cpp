@@ -1,11 +1,11 @@
 #include "output/bodies_writer.hpp"
 
-#include "io/file.hpp"
-#include "io/formatted.hpp"
+#include "app/file.hpp"
+#include "app/formatted.hpp"
 #include "output/csv_rows.hpp"
 #include "output/series_plot.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -91,4 +91,4 @@ void BodiesWriter<Dim>::finish(bool, EndOfRun&) {
 template class BodiesWriter<2>;
 template class BodiesWriter<3>;
 
-}  // namespace num::io
+}  // namespace num::app

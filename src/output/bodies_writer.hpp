@@ -1,16 +1,16 @@
 // bodies.csv: a row per moving body per output time, its pose, velocities and the fluid's load
 // (docs/scenes.md, "Outputs"), and its plot bodies.png (and .svg: output.plots), drawn by
-// scripts/plot_series.py at the end of the run. Internal to numerics_io.
+// scripts/plot_series.py at the end of the run. Internal to numerics_app.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "io/output_writer.hpp"
+#include "app/output_writer.hpp"
 #include "sph/bodies/moving_bodies.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class BodiesWriter final : public IWriter<Dim> {
@@ -40,4 +40,4 @@ class BodiesWriter final : public IWriter<Dim> {
     std::vector<std::string> plots_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

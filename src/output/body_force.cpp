@@ -2,7 +2,7 @@
 
 #include "sph/formulas/boundary_force.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 std::vector<typename BodyForces<Dim>::Vec> BodyForces<Dim>::operator()(
@@ -29,4 +29,4 @@ std::vector<typename BodyForces<Dim>::Vec> BodyForces<Dim>::operator()(
 template class BodyForces<2>;
 template class BodyForces<3>;
 
-}  // namespace num::io
+}  // namespace num::app

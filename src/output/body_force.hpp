@@ -4,7 +4,7 @@
 // a_ij the acceleration boundary particle j of b gives fluid particle i
 // (sph/formulas/boundary_force.hpp). In 2D a force per unit depth [N/m].
 // Read from the storage of an output time: the pressures, densities and velocities of the last
-// evaluation. Internal to numerics_io.
+// evaluation. Internal to numerics_app.
 #pragma once
 
 #include <functional>
@@ -14,7 +14,7 @@
 #include "sph/kernel_choice.hpp"
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class BodyForces {
@@ -43,4 +43,4 @@ class BodyForces {
     double alpha_, c0_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-#include "io/checkpoint.hpp"
+#include "app/checkpoint.hpp"
 
 #include <zlib.h>
 
@@ -8,10 +8,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/file.hpp"
-#include "io/formatted.hpp"
+#include "app/file.hpp"
+#include "app/formatted.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::QuantityId;
 
@@ -291,4 +291,4 @@ template void writeStorage<3>(ByteWriter&, const sph::Storage<3>&);
 template sph::Storage<2> readStorage<2>(ByteReader&, const sph::Storage<2>&);
 template sph::Storage<3> readStorage<3>(ByteReader&, const sph::Storage<3>&);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,14 +1,14 @@
 // Fields and rows of a CSV file whose first column is the time (probes.csv, bodies.csv).
-// Internal to numerics_io.
+// Internal to numerics_app.
 #pragma once
 
 #include <cstdlib>
 #include <fstream>
 #include <string>
 
-#include "io/file.hpp"
+#include "app/file.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// A CSV field, quoted where needed (RFC 4180): a name with a comma, quote or line break.
 inline std::string csvField(const std::string& text) {
@@ -34,4 +34,4 @@ inline bool keepCsvRowsUpTo(const std::string& path, double t) {
     return true;
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-#include "io/file.hpp"
+#include "app/file.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 std::string explain(int error) {
@@ -120,4 +120,4 @@ OutputLock::~OutputLock() {
     if (fd_ >= 0) ::close(fd_);  // releases the lock
 }
 
-}  // namespace num::io
+}  // namespace num::app

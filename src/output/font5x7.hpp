@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 
-namespace num::io::detail {
+namespace num::app::detail {
 
 struct Glyph {
     char c;
@@ -78,4 +78,4 @@ inline const Glyph* glyphOf(char c) {
     return nullptr;
 }
 
-}  // namespace num::io::detail
+}  // namespace num::app::detail

@@ -1,6 +1,6 @@
-#include "io/image.hpp"
+#include "app/image.hpp"
 
-#include "io/file.hpp"
+#include "app/file.hpp"
 
 #include <png.h>
 
@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "io/errors.hpp"
+#include "app/errors.hpp"
 #include "output/font5x7.hpp"
 
 #ifdef NUMERICS_HAVE_FREETYPE
@@ -19,7 +19,7 @@
 #include FT_FREETYPE_H
 #endif
 
-namespace num::io {
+namespace num::app {
 
 Rgb coolWarm(double u) {
     // Control points of a diverging map: deep blue, light blue, near white, orange, deep red.
@@ -265,4 +265,4 @@ void writePng(const std::string& path, const Image& image) {
     writeFileAtomically(path, bytes, false);
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-#include "io/outputs.hpp"
+#include "app/outputs.hpp"
 
 #include <unistd.h>
 
@@ -9,12 +9,12 @@
 #include <filesystem>
 #include <sstream>
 
-#include "io/file.hpp"
+#include "app/file.hpp"
 #include "output/bodies_writer.hpp"
 #include "output/pictures_writer.hpp"
 #include "output/probes_writer.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::QuantityId;
 
@@ -250,4 +250,4 @@ int Outputs<Dim>::pictures() const {
 template class Outputs<2>;
 template class Outputs<3>;
 
-}  // namespace num::io
+}  // namespace num::app

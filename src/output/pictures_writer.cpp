@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "io/outputs.hpp"
+#include "app/outputs.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 void PicturesWriter<Dim>::write(const sph::Storage<Dim>& s, const std::vector<OutputField>&,
@@ -75,4 +75,4 @@ std::vector<WrittenFile> PicturesWriter<Dim>::files() const {
 template class PicturesWriter<2>;
 template class PicturesWriter<3>;
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,11 +1,11 @@
 // The pictures of a run (output.images): a PNG per output time, and at the end of a completed
-// run an MP4 of them made by ffmpeg (output.video). Internal to numerics_io.
+// run an MP4 of them made by ffmpeg (output.video). Internal to numerics_app.
 #pragma once
 
-#include "io/output_writer.hpp"
-#include "io/render.hpp"
+#include "app/output_writer.hpp"
+#include "app/render.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class PicturesWriter final : public IWriter<Dim> {
@@ -35,4 +35,4 @@ class PicturesWriter final : public IWriter<Dim> {
     bool madeVideo_ = false;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -3,12 +3,12 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "io/diagnostics.hpp"
-#include "io/file.hpp"
+#include "app/diagnostics.hpp"
+#include "app/file.hpp"
 #include "output/csv_rows.hpp"
 #include "output/series_plot.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 void ProbesWriter<Dim>::start() {
@@ -78,4 +78,4 @@ std::vector<WrittenFile> ProbesWriter<Dim>::files() const {
 template class ProbesWriter<2>;
 template class ProbesWriter<3>;
 
-}  // namespace num::io
+}  // namespace num::app

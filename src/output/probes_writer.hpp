@@ -1,8 +1,8 @@
 // The probes of a run: a row of probes.csv per probe time (output.probes_every: the fields
 // interpolated at each probe's point, the force on a probe's body or wall, or the flow rate
-// through a probe's side: io/diagnostics.hpp, sideFlowRate), and at the end
+// through a probe's side: app/diagnostics.hpp, sideFlowRate), and at the end
 // their plot, probes.png (and .svg: output.plots), drawn by scripts/plot_series.py.
-// Internal to numerics_io.
+// Internal to numerics_app.
 #pragma once
 
 #include <array>
@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "io/output_writer.hpp"
-#include "io/scene.hpp"
+#include "app/output_writer.hpp"
+#include "app/scene.hpp"
 #include "output/body_force.hpp"
 #include "sph/kernel_choice.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class ProbesWriter final : public IWriter<Dim> {
@@ -57,4 +57,4 @@ class ProbesWriter final : public IWriter<Dim> {
     int bodies_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

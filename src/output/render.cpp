@@ -1,12 +1,12 @@
-#include "io/render.hpp"
+#include "app/render.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-#include "io/formatted.hpp"
+#include "app/formatted.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::QuantityId;
 using sph::Size;
@@ -169,4 +169,4 @@ Image renderParticles(const sph::Storage<Dim>& s, const RenderSettings<Dim>& r, 
 template Image renderParticles<2>(const sph::Storage<2>&, const RenderSettings<2>&, double);
 template Image renderParticles<3>(const sph::Storage<3>&, const RenderSettings<3>&, double);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/outputs.hpp"
+#include "app/outputs.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -78,4 +78,4 @@ std::string plotSeries(const std::string& csv, const std::vector<std::string>& p
                            : message;
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,12 +1,12 @@
 // The plots of a run's time series (probes.csv, ...): drawn after the run by
 // scripts/plot_series.py with matplotlib, which the apps run through Python. Internal to
-// numerics_io.
+// numerics_app.
 #pragma once
 
 #include <string>
 #include <vector>
 
-namespace num::io {
+namespace num::app {
 
 /// The plotting script: $NUMERICS_PLOT_SCRIPT, else plot_series.py beside the running program
 /// (the build tree copies it there), else in ../share/numerics/ from it (an installed app), else
@@ -23,4 +23,4 @@ std::string plotPython();
 std::string plotSeries(const std::string& csv, const std::vector<std::string>& pictures,
                        const std::string& title, const std::string& log);
 
-}  // namespace num::io
+}  // namespace num::app

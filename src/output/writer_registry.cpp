@@ -1,9 +1,9 @@
-#include "io/writer_registry.hpp"
+#include "app/writer_registry.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "io/errors.hpp"
+#include "app/errors.hpp"
 #include "scene/json_check.hpp"
 
 // The built-in formats of output.formats, in this order: one line each. FORMAT(name) is the
@@ -14,7 +14,7 @@
     FORMAT(csv)                           \
     /* the end of the table */
 
-namespace num::io {
+namespace num::app {
 
 #define NUMERICS_DECLARE_FORMAT(name) void name##Format(WriterRegistry& registry);
 NUMERICS_BUILT_IN_FORMATS(NUMERICS_DECLARE_FORMAT)
@@ -106,4 +106,4 @@ template void checkOutputFormats<2>(const std::string&, const std::vector<std::s
 template void checkOutputFormats<3>(const std::string&, const std::vector<std::string>&,
                                     const WriterRegistry&);
 
-}  // namespace num::io
+}  // namespace num::app

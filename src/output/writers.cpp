@@ -1,4 +1,4 @@
-#include "io/writers.hpp"
+#include "app/writers.hpp"
 
 #include <cstdint>
 #include <cstring>
@@ -7,10 +7,10 @@
 #include <stdexcept>
 #include <utility>
 
-#include "io/file.hpp"
-#include "io/formatted.hpp"
+#include "app/file.hpp"
+#include "app/formatted.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::Float;
 using sph::Size;
@@ -193,9 +193,9 @@ template void writeCsv<2>(const std::string&, const sph::Storage<2>&,
 template void writeCsv<3>(const std::string&, const sph::Storage<3>&,
                           const std::vector<OutputField>&);
 
-}  // namespace num::io
+}  // namespace num::app
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -299,4 +299,4 @@ void writeParaviewScript(const std::string& path, const ParaviewView& v) {
     writeFileAtomically(path, paraviewHeader(path, v) + kParaviewColouring + paraviewCamera(v));
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// A plugin library checked before dlopen (internal to numerics_io): dlopen maps the segments its
+// A plugin library checked before dlopen (internal to numerics_app): dlopen maps the segments its
 // headers name, so a truncated copy (an interrupted cp or download) ends the program with SIGBUS
 // when they reach past the end of the file, and a library for another machine is reported by
 // dlopen as a file it cannot open. These are found from the ELF headers and reported here.
@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-namespace num::io::detail {
+namespace num::app::detail {
 
 inline std::string machineName(unsigned machine) {
     switch (machine) {
@@ -85,4 +85,4 @@ inline std::string elfProblem(const std::string& path) {
     return "";
 }
 
-}  // namespace num::io::detail
+}  // namespace num::app::detail

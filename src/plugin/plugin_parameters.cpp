@@ -1,10 +1,10 @@
 // The parameters of a plugin's term, read with the scene reader's checks (json_check.hpp).
 #include <vector>
 
-#include "io/plugin.hpp"
+#include "app/plugin.hpp"
 #include "scene/json_check.hpp"
 
-namespace num::io::plugin {
+namespace num::app::plugin {
 
 using detail::At;
 
@@ -94,4 +94,4 @@ void Parameters::fail(const std::string& key, const std::string& expected) const
 template sph::Vector<2> Parameters::vector<2>(const std::string&, const std::string&) const;
 template sph::Vector<3> Parameters::vector<3>(const std::string&, const std::string&) const;
 
-}  // namespace num::io::plugin
+}  // namespace num::app::plugin

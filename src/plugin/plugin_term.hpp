@@ -1,4 +1,4 @@
-// A plugin's term as the run sees it (internal to numerics_io): every hook of the term runs
+// A plugin's term as the run sees it (internal to numerics_app): every hook of the term runs
 // guarded, so an exception from plugin code becomes an AppError (exit code PLUGIN) that names
 // the term, the hook and the time, and the run stops with its last good output.
 #pragma once
@@ -9,11 +9,11 @@
 #include <string>
 #include <utility>
 
-#include "io/errors.hpp"
-#include "io/formatted.hpp"
+#include "app/errors.hpp"
+#include "app/formatted.hpp"
 #include "sph/equation_term.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// The first failure of a plugin's term in a step. On several processes it is kept until the
 /// step ends (a process that left mid-step would leave the others waiting in an exchange): the
@@ -105,4 +105,4 @@ class PluginTerm final : public sph::IEquationTerm<Dim> {
     std::shared_ptr<PluginFailure> failure_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// A plugin's writer as the run sees it (internal to numerics_io): every hook runs guarded, so an
+// A plugin's writer as the run sees it (internal to numerics_app): every hook runs guarded, so an
 // exception from plugin code becomes an AppError (exit code PLUGIN) that names the writer, the
 // hook and the time; AppErrors (e.g. a full disk, exit code OUTPUT) pass unchanged.
 #pragma once
@@ -8,11 +8,11 @@
 #include <string>
 #include <utility>
 
-#include "io/errors.hpp"
-#include "io/formatted.hpp"
-#include "io/writer_registry.hpp"
+#include "app/errors.hpp"
+#include "app/formatted.hpp"
+#include "app/writer_registry.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class PluginWriter final : public IWriter<Dim> {
@@ -81,4 +81,4 @@ WriterFactory<Dim> guardedWriterFactory(WriterFactory<Dim> factory, std::string 
     };
 }
 
-}  // namespace num::io
+}  // namespace num::app

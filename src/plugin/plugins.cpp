@@ -12,15 +12,15 @@
 #include <fstream>
 #include <map>
 
-#include "io/formatted.hpp"
-#include "io/plugin.hpp"
+#include "app/formatted.hpp"
+#include "app/plugin.hpp"
 #include "plugin/elf_check.hpp"
 #include "plugin/plugin_term.hpp"
 #include "plugin/plugin_writer.hpp"
 #include "scene/file_hash.hpp"
 #include "scene/json_check.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using detail::At;
 namespace fs = std::filesystem;
@@ -154,7 +154,7 @@ Library openLibrary(const At& at, const std::string& path, const std::string& pr
                        at.file + ": " + at.path + ": " + path +
                            " is not a numerics plugin: it does not export " +
                            NUMERICS_PLUGIN_ENTRY_NAME +
-                           " (define it with NUMERICS_PLUGIN from io/plugin.hpp and build the "
+                           " (define it with NUMERICS_PLUGIN from app/plugin.hpp and build the "
                            "library with numerics_add_plugin)");
     HostRegistry registry(lib, writers);
     int version = 0;
@@ -362,4 +362,4 @@ template FieldNames pluginFieldNames<2>(const ScenePlugins<2>&, const sph::Stora
 template FieldNames pluginFieldNames<3>(const ScenePlugins<3>&, const sph::Storage<3>&, FieldNames,
                                         const std::string&);
 
-}  // namespace num::io
+}  // namespace num::app

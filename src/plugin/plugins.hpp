@@ -1,4 +1,4 @@
-// The "plugins" of a scene (internal to numerics_io): shared libraries loaded with dlopen, in the
+// The "plugins" of a scene (internal to numerics_app): shared libraries loaded with dlopen, in the
 // order listed, before the run is set up; their terms join the fluid model (extraTerms), their
 // writers the formats that output.formats may name.
 #pragma once
@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "io/fields.hpp"
-#include "io/scene_loader.hpp"
-#include "io/writer_registry.hpp"
+#include "app/fields.hpp"
+#include "app/scene_loader.hpp"
+#include "app/writer_registry.hpp"
 #include "plugin/plugin_term.hpp"
 #include "sph/equation_term.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 struct ScenePlugins {
@@ -59,4 +59,4 @@ template <int Dim>
 FieldNames pluginFieldNames(const ScenePlugins<Dim>& plugins, const sph::Storage<Dim>& initial,
                             FieldNames names, const std::string& file);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -7,10 +7,10 @@
 #include <cstring>
 #include <string>
 
-#include "io/errors.hpp"
+#include "app/errors.hpp"
 #include "parallel/communicator.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// An error one process met in the middle of a step, while the others wait for it in an
 /// exchange: the app reports it from that process and ends every process at once.
@@ -64,4 +64,4 @@ void onRoot(const parallel::Communicator& comm, F&& f) {
     detail::throwIfAny({comm.broadcast(outcome)});
 }
 
-}  // namespace num::io
+}  // namespace num::app

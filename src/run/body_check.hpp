@@ -1,17 +1,17 @@
 // A moving body must stay in the domain: a particle of it beyond a side by more than half a
 // spacing (it passed through a wall, or left through an open side) stops the run (exit 9),
-// naming the body. Periodic axes are not checked. Internal to numerics_io.
+// naming the body. Periodic axes are not checked. Internal to numerics_app.
 #pragma once
 
 #include <string>
 
-#include "io/errors.hpp"
-#include "io/formatted.hpp"
-#include "io/scene.hpp"
+#include "app/errors.hpp"
+#include "app/formatted.hpp"
+#include "app/scene.hpp"
 #include "sph/bodies/moving_bodies.hpp"
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 void checkBodiesInside(const sph::Storage<Dim>& s, const Scene<Dim>& scene,
@@ -40,4 +40,4 @@ void checkBodiesInside(const sph::Storage<Dim>& s, const Scene<Dim>& scene,
     }
 }
 
-}  // namespace num::io
+}  // namespace num::app

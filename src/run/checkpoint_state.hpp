@@ -1,4 +1,4 @@
-// The state of a run a checkpoint keeps besides the particles (internal to numerics_io).
+// The state of a run a checkpoint keeps besides the particles (internal to numerics_app).
 #pragma once
 
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "io/checkpoint.hpp"
+#include "app/checkpoint.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 struct RunState {
@@ -65,4 +65,4 @@ struct RunState {
     }
 };
 
-}  // namespace num::io
+}  // namespace num::app

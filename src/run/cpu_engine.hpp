@@ -1,14 +1,14 @@
-// The CPU engine (internal to numerics_io): the fluid model's terms in a sph::Solver, stepped by
+// The CPU engine (internal to numerics_app): the fluid model's terms in a sph::Solver, stepped by
 // sph::Run with the scene's integrator on the CPU's threads, in the host's storage itself.
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include "io/scene_setup.hpp"
+#include "app/scene_setup.hpp"
 #include "run/engine.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class CpuEngine final : public IEngine<Dim> {
@@ -62,4 +62,4 @@ class CpuEngine final : public IEngine<Dim> {
     std::string backend_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// The CUDA back end in the apps (internal to numerics_io): which backend a run uses, what a
+// The CUDA back end in the apps (internal to numerics_app): which backend a run uses, what a
 // scene must leave out to run on it (refused before anything is allocated, with the scene key),
 // and the device engine. A build without CUDA refuses --backend cuda here.
 #pragma once
@@ -10,14 +10,14 @@
 #include <string>
 #include <utility>
 
+#include "app/errors.hpp"
+#include "app/scene_setup.hpp"
+#include "app/simulation.hpp"
 #include "device/backend.hpp"
 #include "device/fluid_run.hpp"
-#include "io/errors.hpp"
-#include "io/scene_setup.hpp"
-#include "io/simulation.hpp"
 #include "run/engine.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// For tests: NUMERICS_TEST_DEVICE_EXECUTION=host runs the cuda backend's device step on the
 /// host execution (the same functors, in loops), so that the apps' use of the device step is
@@ -184,4 +184,4 @@ class DeviceEngine final : public IEngine<Dim> {
     bool hostCurrent_ = true;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,13 +1,13 @@
-#include "io/emitters.hpp"
+#include "app/emitters.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
-#include "io/formatted.hpp"
-#include "io/nozzle.hpp"
+#include "app/formatted.hpp"
+#include "app/nozzle.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::QuantityId;
 using sph::Size;
@@ -170,4 +170,4 @@ template std::vector<char> occupiedPoints<3>(const sph::Storage<3>&, const Domai
 template class Emitters<2>;
 template class Emitters<3>;
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// What steps a Simulation's particles (internal to numerics_io): the CPU engine (cpu_engine.hpp:
+// What steps a Simulation's particles (internal to numerics_app): the CPU engine (cpu_engine.hpp:
 // the solver's terms on the CPU's threads, in the host's storage) or the device engine
 // (device_backend.hpp: the CUDA back end, the particles on the GPU and copied to the host's
 // storage when asked). Simulation holds one and never asks which; the step loop, the landing on
@@ -14,7 +14,7 @@
 #include "sph/decomposition.hpp"
 #include "sph/timestepping.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class IEngine {
@@ -55,4 +55,4 @@ class IEngine {
     virtual void describe(nlohmann::json& summary, std::size_t particles) const = 0;
 };
 
-}  // namespace num::io
+}  // namespace num::app

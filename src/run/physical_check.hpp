@@ -20,14 +20,14 @@
 #include <string>
 #include <vector>
 
-#include "io/errors.hpp"
-#include "io/formatted.hpp"
+#include "app/errors.hpp"
+#include "app/formatted.hpp"
 #include "parallel/communicator.hpp"
 #include "sph/scheduler.hpp"
 #include "sph/storage.hpp"
 #include "sph/types.hpp"
 
-namespace num::io {
+namespace num::app {
 
 class PhysicalCheck {
   public:
@@ -223,4 +223,4 @@ class PhysicalCheck {
     std::vector<std::string> warnings_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

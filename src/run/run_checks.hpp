@@ -1,4 +1,4 @@
-// The observers that watch the particles and change their number (internal to numerics_io):
+// The observers that watch the particles and change their number (internal to numerics_app):
 // health checks, open boundaries and emitters, progress, and the test hook that raises a signal
 // at a given step.
 #pragma once
@@ -11,7 +11,7 @@
 #include "run/run_parts.hpp"
 #include "run/run_state.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// The id of the next particle made during the run: after the initial particles, those emitted
 /// and those the inlets made, so that ids are never reused.
@@ -24,7 +24,7 @@ std::int64_t nextParticleId(const RunParts<Dim>& p) {
 
 /// Emits the particles due at time t; they come last in the particle order, with ids after the
 /// initial particles' (the same on every process: each emits every particle, and keeps its own).
-/// A nozzle point is left out where water is, every process agreeing (io/emitters.hpp).
+/// A nozzle point is left out where water is, every process agreeing (app/emitters.hpp).
 template <int Dim>
 std::size_t emitParticles(RunParts<Dim>& p, double t) {
     const sph::RunKernel<Dim> kernel(p.setup->settings);
@@ -150,4 +150,4 @@ class TestSignalObserver final : public IStepObserver<Dim> {
     stop::TestSignal signal_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// The observers that write the run's files (internal to numerics_io): the outputs every
+// The observers that write the run's files (internal to numerics_app): the outputs every
 // output.every simulated seconds, the probes every output.probes_every, and checkpoints every
 // --checkpoint-every seconds and on Ctrl-C. The root writes every file, from the particles of every
 // process gathered.
@@ -8,10 +8,10 @@
 #include <utility>
 #include <vector>
 
-#include "io/formatted.hpp"
+#include "app/formatted.hpp"
 #include "run/run_parts.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Outputs fall on multiples of output.every, and the steps land on them. The slot is the next
 /// multiple, the file index (RunState::outputIndex) counts the files written: they differ only
@@ -163,4 +163,4 @@ class CheckpointObserver final : public IStepObserver<Dim> {
     std::vector<std::pair<double, std::string>> written_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// Everything a Simulation holds (internal to numerics_io): the scene and its set-up, the
+// Everything a Simulation holds (internal to numerics_app): the scene and its set-up, the
 // particles, the engine that steps them, and the state a checkpoint keeps.
 #pragma once
 
@@ -11,10 +11,10 @@
 #include <optional>
 #include <string>
 
-#include "io/emitters.hpp"
-#include "io/outputs.hpp"
-#include "io/progress.hpp"
-#include "io/simulation.hpp"
+#include "app/emitters.hpp"
+#include "app/outputs.hpp"
+#include "app/progress.hpp"
+#include "app/simulation.hpp"
 #include "parallel/domain_decomposition.hpp"
 #include "plugin/plugins.hpp"
 #include "run/agreed_errors.hpp"
@@ -24,7 +24,7 @@
 #include "run/written_particles.hpp"
 #include "sph/timestepping.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Whether time t has reached target, to round-off.
 inline bool reached(double t, double target) {
@@ -108,4 +108,4 @@ struct RunParts {
     }
 };
 
-}  // namespace num::io
+}  // namespace num::app

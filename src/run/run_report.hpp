@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "io/formatted.hpp"
-#include "io/outputs.hpp"
-#include "io/scene.hpp"
+#include "app/formatted.hpp"
+#include "app/outputs.hpp"
+#include "app/scene.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Adds the files made at the end of the run, why a movie is missing and the scene's warnings.
 inline void addEndOfRun(nlohmann::json& summary, const EndOfRun& end,
@@ -109,4 +109,4 @@ void printRunReport(const std::string& program, const Outputs<Dim>& out, const S
     std::fflush(stdout);
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// The pieces of the time loop (internal to numerics_io): the state a checkpoint keeps besides
+// The pieces of the time loop (internal to numerics_app): the state a checkpoint keeps besides
 // the particles, health checks, open boundaries, summary.json and the final report.
 #pragma once
 
@@ -7,15 +7,15 @@
 #include <string>
 #include <vector>
 
-#include "io/checkpoint.hpp"
-#include "io/diagnostics.hpp"
-#include "io/fields.hpp"
-#include "io/formatted.hpp"
-#include "io/outputs.hpp"
+#include "app/checkpoint.hpp"
+#include "app/diagnostics.hpp"
+#include "app/fields.hpp"
+#include "app/formatted.hpp"
+#include "app/outputs.hpp"
 #include "run/checkpoint_state.hpp"
 #include "sph/solver.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// mass, momentum (Dim values), kinetic, potential and thermal energy of the fluid.
 template <int Dim>
@@ -206,4 +206,4 @@ nlohmann::json summaryJson(const Scene<Dim>& scene, const sph::Storage<Dim>& s,
             {"conservation", c}};
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,6 +1,6 @@
 // Simulation: the set-up of a run from its scene (or checkpoint), its steps and their
 // observers. The end of a run (summary.json, the report) is in simulation_end.cpp.
-#include "io/simulation.hpp"
+#include "app/simulation.hpp"
 
 #include <thread>
 
@@ -14,7 +14,7 @@
 #include "sph/evaluation_mode.hpp"
 #include "sph/setup/set_up_interrupt.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::QuantityId;
 using sph::Size;
@@ -429,4 +429,4 @@ template class Simulation<3>;
 template int runSimulation<2>(const SceneDocument&, const RunOptions&);
 template int runSimulation<3>(const SceneDocument&, const RunOptions&);
 
-}  // namespace num::io
+}  // namespace num::app

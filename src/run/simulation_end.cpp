@@ -1,11 +1,11 @@
 // The end of a Simulation's run: summary.json (with what each observer adds), the report on
 // the terminal and the exit code.
-#include "io/file.hpp"
+#include "app/file.hpp"
 #include "run/run_parts.hpp"
 #include "run/run_report.hpp"
 #include "run/run_state.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -89,4 +89,4 @@ int Simulation<Dim>::finishRun(RunEnd end) {
 template int Simulation<2>::finishRun(RunEnd);
 template int Simulation<3>::finishRun(RunEnd);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -10,7 +10,7 @@
 #include <ctime>
 #include <thread>
 
-namespace num::io::stop {
+namespace num::app::stop {
 
 namespace {
 
@@ -99,4 +99,4 @@ TestSignal testSignal() {
     return {sig, step};
 }
 
-}  // namespace num::io::stop
+}  // namespace num::app::stop

@@ -1,4 +1,4 @@
-// Ctrl-C (SIGINT), kill (SIGTERM) and a closed terminal (SIGHUP), internal to numerics_io.
+// Ctrl-C (SIGINT), kill (SIGTERM) and a closed terminal (SIGHUP), internal to numerics_app.
 // During set-up a signal ends the program at once (nothing of the run is written yet). During
 // the run the first signal asks for a stop: between steps the run ends with a final output, a
 // checkpoint and summary.json; a step still running kStepGraceSeconds after the signal (a step
@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <string>
 
-namespace num::io::stop {
+namespace num::app::stop {
 
 /// How long a step in progress may still run after a stop was asked for.
 inline constexpr double kStepGraceSeconds = 0.5;
@@ -48,4 +48,4 @@ struct DefaultsOnExit {
     const bool active;
 };
 
-}  // namespace num::io::stop
+}  // namespace num::app::stop

@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "io/errors.hpp"
-#include "io/fields.hpp"
-#include "io/formatted.hpp"
+#include "app/errors.hpp"
+#include "app/fields.hpp"
+#include "app/formatted.hpp"
 #include "spatial/cell_grid.hpp"
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class WrittenParticles {
@@ -176,4 +176,4 @@ class WrittenParticles {
     std::vector<int> kind_, id_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

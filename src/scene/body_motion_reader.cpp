@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace num::io {
+namespace num::app {
 
 using detail::At;
 
@@ -158,4 +158,4 @@ BodyMotionSpec<Dim> readBodyMotion(const At& m) {
 template BodyMotionSpec<2> readBodyMotion<2>(const At&);
 template BodyMotionSpec<3> readBodyMotion<3>(const At&);
 
-}  // namespace num::io
+}  // namespace num::app

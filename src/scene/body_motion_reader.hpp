@@ -1,14 +1,14 @@
 // The reader of a body's "motion" (bodies[i].motion, docs/scenes.md): fixed, free or
-// prescribed, with its keys checked (internal to numerics_io).
+// prescribed, with its keys checked (internal to numerics_app).
 #pragma once
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "scene/json_check.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// The motion at `m` ("fixed" or an object with "type").
 template <int Dim>
 BodyMotionSpec<Dim> readBodyMotion(const detail::At& m);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -8,7 +8,7 @@
 #include "sph/boundary/periodic_boundary.hpp"
 #include "sph/boundary/wall_boundary.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using detail::At;
 
@@ -23,8 +23,8 @@ sph::WallThermal readWallThermal(const At& b) {
     t.object({"temperature", "heat_flux"});
     if (t.has("temperature") == t.has("heat_flux"))
         t.fail("an object with exactly one of \"temperature\" [degC] or \"heat_flux\" [W/m^2]");
-    using Kind = sph::WallThermal::Kind;
-    thermal.kind = t.has("temperature") ? Kind::TEMPERATURE : Kind::HEAT_FLUX;
+    thermal.condition = t.has("temperature") ? sph::ThermalCondition::FIXED_TEMPERATURE
+                                             : sph::ThermalCondition::HEAT_FLUX;
     thermal.value = t.has("temperature") ? t["temperature"].number(-273.15, 1e4, false, "degC")
                                          : t["heat_flux"].number(-1e9, 1e9, false, "W/m^2");
     return thermal;
@@ -180,4 +180,4 @@ template SideBoundary<3> readSideBoundary<3>(const At&);
 template std::string boundaryTypeChoices<2>();
 template std::string boundaryTypeChoices<3>();
 
-}  // namespace num::io
+}  // namespace num::app

@@ -2,17 +2,17 @@
 // name, its keys beside "type", and the reader of those keys into its module
 // (sph/boundary/side_boundary.hpp says what a module does). The scene reader's allowed `type`
 // values, their error text and the keys a side may have come from it (internal to
-// numerics_io).
+// numerics_app).
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "scene/json_check.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 struct BoundaryType {
@@ -39,4 +39,4 @@ std::shared_ptr<const sph::WallBoundary<Dim>> readWallKeys(const detail::At& wal
 template <int Dim>
 std::string boundaryTypeChoices();
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,8 +1,8 @@
-#include "io/expression.hpp"
+#include "app/expression.hpp"
 
 #include <muParser.h>
 
-namespace num::io {
+namespace num::app {
 
 struct Expression::Impl {
     mu::Parser parser;
@@ -55,4 +55,4 @@ const std::string& Expression::text() const {
     return impl_ ? impl_->text : empty;
 }
 
-}  // namespace num::io
+}  // namespace num::app

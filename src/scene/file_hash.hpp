@@ -1,4 +1,4 @@
-// The content hash of a file (internal to numerics_io): a checkpoint stores those of the files
+// The content hash of a file (internal to numerics_app): a checkpoint stores those of the files
 // a run reads besides its scene (plugin libraries, meshes), so that a restart notices a changed
 // file.
 #pragma once
@@ -7,9 +7,9 @@
 #include <fstream>
 #include <string>
 
-#include "io/formatted.hpp"
+#include "app/formatted.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// FNV-1a (64 bit) of the file's bytes, as 16 hexadecimal digits.
 inline std::string fileHash(const std::string& path) {
@@ -24,4 +24,4 @@ inline std::string fileHash(const std::string& path) {
     return formatted("%016llx", (unsigned long long)h);
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,4 +1,4 @@
-// The fingerprint of a run (internal to numerics_io): everything that shapes its particle set and
+// The fingerprint of a run (internal to numerics_app): everything that shapes its particle set and
 // its equations, as "key = value" lines (the content of the mesh files its shapes read too). A
 // checkpoint stores it; a restart whose fingerprint differs is refused, naming what differs. What
 // may change on restart is left out: the end time, the output settings, the threads and the
@@ -13,12 +13,12 @@
 #include <string>
 #include <variant>
 
-#include "io/errors.hpp"
-#include "io/scene_loader.hpp"
-#include "io/scene_setup.hpp"
+#include "app/errors.hpp"
+#include "app/scene_loader.hpp"
+#include "app/scene_setup.hpp"
 #include "scene/file_hash.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace detail {
 
@@ -176,4 +176,4 @@ inline void checkFingerprint(const std::string& stored, const std::string& curre
             "--threads and --backend)");
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/errors.hpp"
-#include "io/formatted.hpp"
+#include "app/errors.hpp"
+#include "app/formatted.hpp"
 #include "sph/boundary/inlet_outlet_boundary.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -152,4 +152,4 @@ template double largestInflowSpeed<3>(const Scene<3>&);
 template void checkFlowSides<2>(const Scene<2>&);
 template void checkFlowSides<3>(const Scene<3>&);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,15 +1,15 @@
 // The scene's inlets and outlets (boundaries.<side>.type "inlet" or "outlet") as the run's
 // FlowBoundaries, the speed scale their inflow sets, and the checks of their openings and
-// velocities (internal to numerics_io).
+// velocities (internal to numerics_app).
 #pragma once
 
 #include <memory>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "sph/boundary/flow_boundaries.hpp"
 #include "sph/setup/fluid_geometry.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// The inlets and outlets of the scene's sides, each with a buffer `wallLayers` spacings deep,
 /// an outlet without a pressure of its own at the background pressure; null where there are
@@ -31,4 +31,4 @@ double largestInflowSpeed(const Scene<Dim>& scene);
 template <int Dim>
 void checkFlowSides(const Scene<Dim>& scene);
 
-}  // namespace num::io
+}  // namespace num::app

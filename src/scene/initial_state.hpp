@@ -1,4 +1,4 @@
-// Checks of the initial particles (internal to numerics_io): what the scene's expressions gave
+// Checks of the initial particles (internal to numerics_app): what the scene's expressions gave
 // at every fluid particle must be a state the run can start from. A value that is not finite
 // (sqrt(-1), 1/0) is an expression error (exit 6); a temperature below absolute zero or a
 // pressure that the equation of state turns into a density beyond half or twice the rest
@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "io/formatted.hpp"
-#include "io/scene_setup.hpp"
+#include "app/formatted.hpp"
+#include "app/scene_setup.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 void checkInitialState(const Scene<Dim>& scene, const SceneSetup<Dim>& setup,
@@ -141,4 +141,4 @@ void checkGravity(const Scene<Dim>& scene) {
     }
 }
 
-}  // namespace num::io
+}  // namespace num::app

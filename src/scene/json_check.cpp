@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "io/formatted.hpp"
+#include "app/formatted.hpp"
 
-namespace num::io::detail {
+namespace num::app::detail {
 
 std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
     return sph::closestName(word, candidates);
@@ -161,4 +161,4 @@ void At::array(std::size_t n, const std::string& what) const {
     if (!v.is_array() || v.size() != n) fail("an array of " + std::to_string(n) + " " + what);
 }
 
-}  // namespace num::io::detail
+}  // namespace num::app::detail

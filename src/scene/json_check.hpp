@@ -1,5 +1,5 @@
 // Checked reading of JSON values with key paths: every mistake becomes an AppError naming the
-// file, the key path, what was expected and what was found (internal to numerics_io).
+// file, the key path, what was expected and what was found (internal to numerics_app).
 #pragma once
 
 #include <initializer_list>
@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "io/errors.hpp"
-#include "io/expression.hpp"
+#include "app/errors.hpp"
+#include "app/expression.hpp"
 #include "spatial/vec.hpp"
 
-namespace num::io::detail {
+namespace num::app::detail {
 
 using nlohmann::json;
 
@@ -78,4 +78,4 @@ Vec<double, Dim> readVec(const At& a, const std::string& unit) {
     return v;
 }
 
-}  // namespace num::io::detail
+}  // namespace num::app::detail

@@ -12,7 +12,7 @@
 #include "geometry/mass_properties.hpp"
 #include "sph/setup/particle_generation.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -253,4 +253,4 @@ template std::string bodyName<3>(const Scene<3>&, std::size_t);
 template double bodyVolume<2>(const Body<2>&, double);
 template double bodyVolume<3>(const Body<3>&, double);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,13 +1,13 @@
-// The scene's body motions for the engine (sph/bodies/): internal to numerics_io.
+// The scene's body motions for the engine (sph/bodies/): internal to numerics_app.
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "sph/bodies/moving_bodies.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Every body with its motion, in scene order; nullptr when every body is fixed.
 template <int Dim>
@@ -21,4 +21,4 @@ std::string bodyName(const Scene<Dim>& scene, std::size_t i);
 template <int Dim>
 double bodyVolume(const Body<Dim>& body, double dx);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,9 +1,9 @@
-#include "io/nozzle.hpp"
+#include "app/nozzle.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 std::vector<SceneVec<Dim>> nozzleOffsets(const Emitter<Dim>& e, double dx) {
@@ -59,4 +59,4 @@ template std::vector<SceneVec<3>> nozzleOffsets<3>(const Emitter<3>&, double);
 template Nozzle<2> openNozzle<2>(const Scene<2>&, std::size_t);
 template Nozzle<3> openNozzle<3>(const Scene<3>&, std::size_t);
 
-}  // namespace num::io
+}  // namespace num::app

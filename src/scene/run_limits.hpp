@@ -1,4 +1,4 @@
-// Limits checked before anything is allocated (internal to numerics_io), so that no scene makes
+// Limits checked before anything is allocated (internal to numerics_app), so that no scene makes
 // the apps write files without end, walk a lattice for hours or run out of memory: the number
 // of outputs and checkpoints, the lattice the set-up walks, and every particle the run will
 // hold (fluid, walls, bodies, emitted) against the memory of the machine.
@@ -10,10 +10,10 @@
 #include <fstream>
 #include <string>
 
-#include "io/formatted.hpp"
-#include "io/scene_setup.hpp"
+#include "app/formatted.hpp"
+#include "app/scene_setup.hpp"
 
-namespace num::io {
+namespace num::app {
 
 inline constexpr double kMaxOutputs = 1e5;         ///< outputs (and checkpoints) per run
 inline constexpr double kMaxParticles = 2e7;       ///< particles of all kinds
@@ -102,4 +102,4 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
     }
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/scene_loader.hpp"
+#include "app/scene_loader.hpp"
 #include "scene/json_check.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -198,4 +198,4 @@ int SceneDocument::dimension() const {
     return int(root.required("dimension").integer(2, 3));
 }
 
-}  // namespace num::io
+}  // namespace num::app

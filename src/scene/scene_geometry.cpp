@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/formatted.hpp"
-#include "io/nozzle.hpp"
-#include "io/scene_loader.hpp"
+#include "app/formatted.hpp"
+#include "app/nozzle.hpp"
+#include "app/scene_loader.hpp"
 #include "scene/flow_sides.hpp"
 #include "scene/run_limits.hpp"
 #include "sph/setup/particle_generation.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -431,4 +431,4 @@ void checkSceneGeometry(const Scene<Dim>& s) {
 template void checkSceneGeometry<2>(const Scene<2>&);
 template void checkSceneGeometry<3>(const Scene<3>&);
 
-}  // namespace num::io
+}  // namespace num::app

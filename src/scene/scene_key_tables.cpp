@@ -2,7 +2,7 @@
 // entry per key, with the readers of the keys that are more than a value.
 #include <algorithm>
 
-#include "io/density_choice.hpp"
+#include "app/density_choice.hpp"
 #include "scene/scene_keys.hpp"
 #include "sph/defaults.hpp"
 #include "sph/equation_of_state_choice.hpp"
@@ -10,7 +10,7 @@
 #include "sph/integrator_choice.hpp"
 #include "sph/kernel_table.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using detail::At;
 namespace d = sph::defaults;
@@ -394,4 +394,4 @@ const KeyTable<MaterialSpec>& materialKeys() { return kMaterialKeys; }
 const KeyTable<PhysicsSpec>& physicsKeys() { return kPhysicsKeys; }
 const KeyTable<OutputSpec>& outputKeys() { return kOutputKeys; }
 
-}  // namespace num::io
+}  // namespace num::app

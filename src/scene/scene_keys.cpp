@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace num::io {
+namespace num::app {
 
 using detail::At;
 
@@ -134,4 +134,4 @@ NUMERICS_SCENE_KEYS(PhysicsSpec)
 NUMERICS_SCENE_KEYS(OutputSpec)
 #undef NUMERICS_SCENE_KEYS
 
-}  // namespace num::io
+}  // namespace num::app

@@ -2,7 +2,7 @@
 // materials, physics, output), each declared once: name, type, range, default, unit and
 // meaning. The reader reads and checks them from these tables, and docs/scenes.md's tables of
 // these sections are made from them (tests/apps/test_scene_key_docs.cpp fails when the two
-// differ). Internal to numerics_io.
+// differ). Internal to numerics_app.
 #pragma once
 
 #include <optional>
@@ -10,10 +10,10 @@
 #include <variant>
 #include <vector>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "scene/json_check.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// What a key holds: true or false; a number in a range; one name of a list; a number in a
 /// range or "auto" (an empty optional); a string; anything its own `read` takes (lists,
@@ -58,4 +58,4 @@ void readKeys(const detail::At& at, const KeyTable<Spec>& table, Spec& spec);
 template <class Spec>
 std::string keyTableMarkdown(const KeyTable<Spec>& table);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -5,17 +5,17 @@
 #include <filesystem>
 #include <set>
 
+#include "app/formatted.hpp"
+#include "app/nozzle.hpp"
+#include "app/scene_loader.hpp"
 #include "geometry/scale_check.hpp"
-#include "io/formatted.hpp"
-#include "io/nozzle.hpp"
-#include "io/scene_loader.hpp"
 #include "scene/body_motion_reader.hpp"
 #include "scene/boundary_types.hpp"
 #include "scene/json_check.hpp"
 #include "scene/scene_keys.hpp"
 #include "scene/shape_reader.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using detail::At;
 
@@ -504,4 +504,4 @@ Scene<Dim> readScene(const SceneDocument& doc) {
 template Scene<2> readScene<2>(const SceneDocument&);
 template Scene<3> readScene<3>(const SceneDocument&);
 
-}  // namespace num::io
+}  // namespace num::app

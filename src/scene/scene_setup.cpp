@@ -1,5 +1,5 @@
 // Scene -> engine: settings, fluid model with heat terms, geometry, initial particles, emitters.
-#include "io/scene_setup.hpp"
+#include "app/scene_setup.hpp"
 #include "scene/flow_sides.hpp"
 #include "scene/moving_bodies.hpp"
 
@@ -8,9 +8,9 @@
 #include <cmath>
 #include <mutex>
 
-#include "io/formatted.hpp"
+#include "app/formatted.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::Float;
 using sph::QuantityId;
@@ -476,7 +476,7 @@ sph::Storage<Dim> emitterTemplate(const Emitter<Dim>& e, int material, double dx
     for (auto& axis : tiny.walls)
         for (auto& w : axis) w.present = false;
     sph::FluidRegion<Dim> r;
-    r.shape = sph::Shape<Dim>::box(tiny.domain.min, tiny.domain.max);
+    r.shape = sph::BoxOrBall<Dim>::box(tiny.domain.min, tiny.domain.max);
     r.temperature = e.temperature;
     r.material = material;
     tiny.fluid.push_back(r);
@@ -627,4 +627,4 @@ template SceneSetup<3> makeSceneSetup<3>(const Scene<3>&, int, const sph::Equati
 template sph::Storage<2> makeInitialStorage<2>(const Scene<2>&, SceneSetup<2>&);
 template sph::Storage<3> makeInitialStorage<3>(const Scene<3>&, SceneSetup<3>&);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -15,7 +15,7 @@
 #include "geometry/revolved.hpp"
 #include "sph/choice_table.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -240,4 +240,4 @@ template SolidPtr<3> readSolid<3>(const At&, const std::string&);
 template std::vector<std::string> shapeHelp<2>();
 template std::vector<std::string> shapeHelp<3>();
 
-}  // namespace num::io
+}  // namespace num::app

@@ -9,7 +9,7 @@
 #include "geometry/solid.hpp"
 #include "scene/json_check.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// The shape object at `at`: its "shape", the keys of that shape, and the optional "scale",
 /// "rotate" (degrees) and "translate" of every shape. Files are relative to `sceneDir`.
@@ -22,4 +22,4 @@ geometry::SolidPtr<Dim> readSolid(const detail::At& at, const std::string& scene
 template <int Dim>
 std::vector<std::string> shapeHelp();
 
-}  // namespace num::io
+}  // namespace num::app

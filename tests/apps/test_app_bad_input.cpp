@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "app/checkpoint.hpp"
 #include "app_runner.hpp"
-#include "io/checkpoint.hpp"
 
 using namespace apptest;
 using nlohmann::json;
@@ -235,7 +235,7 @@ TEST(BadInput, EditedCheckpointsWithARewrittenChecksum) {
             dir);
     ASSERT_EQ(ok.code, 0) << ok.output;
     const std::string path = dir + "/out/checkpoint_0001.chk";
-    const std::string payload = num::io::checkpointPayload(readFile(path), path, 2);
+    const std::string payload = num::app::checkpointPayload(readFile(path), path, 2);
     // The payload: the scene (8-byte length, text), the fingerprint, the run state, the particles.
     std::uint64_t sceneBytes = 0;
     std::memcpy(&sceneBytes, payload.data(), sizeof sceneBytes);
@@ -247,7 +247,7 @@ TEST(BadInput, EditedCheckpointsWithARewrittenChecksum) {
         {"huge_length", std::string(8, '\xff') + payload.substr(8)},
     };
     for (const auto& [name, edited] : edits) {
-        writeFile(dir + "/" + name + ".chk", num::io::checkpointBytes(2, edited));
+        writeFile(dir + "/" + name + ".chk", num::app::checkpointBytes(2, edited));
         const Result r = run(FLUID_SIM, "--quiet --out again --restart " + name + ".chk", dir);
         expectMessage(r, kCheckpoint, {(name + ".chk").c_str()});
         EXPECT_FALSE(contains(r.output, "internal error")) << name << ": " << r.output;
@@ -256,7 +256,7 @@ TEST(BadInput, EditedCheckpointsWithARewrittenChecksum) {
     // every check of the file; the first step stops as unstable (9) and says where it started.
     const std::string scrambled = payload.substr(0, payload.size() / 2) + std::string(64, '\x7f') +
                                   payload.substr(payload.size() / 2 + 64);
-    writeFile(dir + "/scrambled.chk", num::io::checkpointBytes(2, scrambled));
+    writeFile(dir + "/scrambled.chk", num::app::checkpointBytes(2, scrambled));
     const Result r = run(FLUID_SIM, "--quiet --out again --restart scrambled.chk", dir);
     EXPECT_TRUE(r.code == kCheckpoint || r.code == kUnstable) << r.output;
     if (r.code == kUnstable) {
@@ -279,7 +279,7 @@ TEST(BadInput, EndlessFilesAreNotReadWhole) {
                   {"/dev/zero", "not a numerics checkpoint"});
     // A header that promises more than the file holds: refused from the header.
     std::string header("NUMSPHCK", 8);
-    const std::uint32_t version = num::io::kCheckpointVersion, dim = 2, crc = 0, spare = 0;
+    const std::uint32_t version = num::app::kCheckpointVersion, dim = 2, crc = 0, spare = 0;
     const std::uint64_t size = std::uint64_t(1) << 60;
     for (const auto& [p, n] : {std::pair<const void*, std::size_t>{&version, 4},
                                {&dim, 4},

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "app/outputs.hpp"
+#include "app/scene_loader.hpp"
 #include "app_runner.hpp"
-#include "io/outputs.hpp"
-#include "io/scene_loader.hpp"
 
 namespace {
 
@@ -53,7 +53,7 @@ void expectMp4(const std::string& path) {
     EXPECT_TRUE(moov && mdat) << path;
 }
 
-bool ffmpegInstalled() { return num::io::onPath("ffmpeg"); }
+bool ffmpegInstalled() { return num::app::onPath("ffmpeg"); }
 
 /// The last non-empty line of a text.
 std::string lastLine(const std::string& text) {
@@ -97,7 +97,7 @@ void checkDefaultRun(const std::string& program, const std::string& name,
                                   "spacing = " + spacing, "\"temperature\"", "Point Gaussian"})
         EXPECT_TRUE(contains(script, part)) << part << "\n" << script;
     // Valid Python: parsed by python3 (installed by scripts/setup.sh with the validation tools).
-    ASSERT_TRUE(num::io::onPath("python3")) << "python3 is needed to check the ParaView script";
+    ASSERT_TRUE(num::app::onPath("python3")) << "python3 is needed to check the ParaView script";
     const Result parsed = run("python3",
                               "-c 'import ast, sys; ast.parse(open(sys.argv[1]).read())' " + out +
                                   "particles_paraview.py",
@@ -149,7 +149,7 @@ std::vector<std::pair<std::string, std::string>> shippedScenes() {
         if (!fs::is_directory(NUMERICS_SCENES_DIR + sub)) continue;
         for (const auto& e : fs::directory_iterator(NUMERICS_SCENES_DIR + sub))
             if (e.path().extension() == ".json") {
-                const auto doc = num::io::SceneDocument::fromFile(e.path().string());
+                const auto doc = num::app::SceneDocument::fromFile(e.path().string());
                 scenes.emplace_back(e.path().string(),
                                     doc.dimension() == 3 ? "fluid_sim_3d" : "fluid_sim");
             }

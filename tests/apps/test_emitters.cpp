@@ -4,12 +4,12 @@
 
 #include <random>
 
-#include "io/emitters.hpp"
-#include "io/nozzle.hpp"
-#include "io/scene_loader.hpp"
+#include "app/emitters.hpp"
+#include "app/nozzle.hpp"
+#include "app/scene_loader.hpp"
 
 using namespace num;
-using namespace num::io;
+using namespace num::app;
 
 TEST(Emitters, WaterAtMatchesAPlainSum) {
     // Random fluid and wall particles, more points than one run of the search (32), a periodic

@@ -10,7 +10,7 @@
 
 #include "scene/fingerprint.hpp"
 
-using namespace num::io;
+using namespace num::app;
 
 namespace {
 

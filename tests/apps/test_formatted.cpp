@@ -1,15 +1,15 @@
-// The io library's number formatter: printf's text, never cut short, and the scene messages
+// The app library's number formatter: printf's text, never cut short, and the scene messages
 // that use it (a spacing reads as the scene wrote it, not with six fixed decimals).
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "io/formatted.hpp"
-#include "io/scene_loader.hpp"
+#include "app/formatted.hpp"
+#include "app/scene_loader.hpp"
 
 namespace {
 
-using num::io::formatted;
+using num::app::formatted;
 
 TEST(Formatted, IsPrintfsText) {
     EXPECT_EQ(formatted("%.3g s", 0.000123456), "0.000123 s");
@@ -26,13 +26,13 @@ TEST(Formatted, IsNeverCutShort) {
 }
 
 TEST(Formatted, SceneMessagesShowNumbersAsWritten) {
-    num::io::SceneDocument doc =
-        num::io::SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
+    num::app::SceneDocument doc =
+        num::app::SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");
     doc.set("particles.spacing=0.75");
     try {
-        (void)num::io::readScene<2>(doc);
+        (void)num::app::readScene<2>(doc);
         ADD_FAILURE() << "a spacing above half the domain was accepted";
-    } catch (const num::io::AppError& e) {
+    } catch (const num::app::AppError& e) {
         const std::string message = e.what();
         EXPECT_NE(message.find("0.75"), std::string::npos) << message;
         EXPECT_EQ(message.find("0.750000"), std::string::npos) << message;

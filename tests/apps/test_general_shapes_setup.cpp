@@ -51,7 +51,7 @@ FluidGeometry<2> boxWithSquareWall() {
     FluidGeometry<2> g;
     g.spacing = kDx;
     g.domain.max = Vector<2>{{1, 1}};
-    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max)));
+    g.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box(g.domain.min, g.domain.max)));
     InteriorWall<2> wall;
     wall.solid = std::make_shared<RotatedSquare>(Vector<2>{{0.5, 0.5}}, 0.2, 0.5);
     g.interiorWalls.push_back(wall);
@@ -64,8 +64,8 @@ bool insideBox(const Vector<2>& x) { return x[0] > 0 && x[0] < 1 && x[1] > 0 && 
 
 TEST(GeneralShapes, PlacedBoxAndBallAreTheirShapes) {
     PlacedShape<2> box, ball;
-    box.shape = Shape<2>::box(Vector<2>{{0.1, 0.2}}, Vector<2>{{0.4, 0.9}});
-    ball.shape = Shape<2>::ball(Vector<2>{{0.3, 0.3}}, 0.25);
+    box.shape = BoxOrBall<2>::box(Vector<2>{{0.1, 0.2}}, Vector<2>{{0.4, 0.9}});
+    ball.shape = BoxOrBall<2>::ball(Vector<2>{{0.3, 0.3}}, 0.25);
     for (const Vector<2> x : {Vector<2>{{0.2, 0.3}}, Vector<2>{{0.7, 0.1}}, Vector<2>{{0.3, 0.95}}})
         for (const PlacedShape<2>* p : {&box, &ball}) {
             EXPECT_EQ(p->signedDistance(x), p->shape.signedDistance(x));

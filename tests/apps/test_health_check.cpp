@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <limits>
 
-#include "io/scene_loader.hpp"
+#include "app/scene_loader.hpp"
 #include "run/physical_check.hpp"
 #include "run/run_state.hpp"
 
-using namespace num::io;
+using namespace num::app;
 using num::sph::QuantityId;
 
 namespace {

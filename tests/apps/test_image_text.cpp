@@ -2,12 +2,12 @@
 // lower case, anti-aliased, capitals 7 * scale pixels tall as the 5x7 font's; else that font.
 #include <gtest/gtest.h>
 
-#include "io/image.hpp"
+#include "app/image.hpp"
 
 namespace {
 
-using num::io::Image;
-using num::io::Rgb;
+using num::app::Image;
+using num::app::Rgb;
 
 const Rgb kWhite{255, 255, 255}, kBlack{0, 0, 0};
 

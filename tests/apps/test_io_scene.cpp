@@ -3,15 +3,15 @@
 
 #include <filesystem>
 
-#include "io/density_choice.hpp"
-#include "io/scene_loader.hpp"
+#include "app/density_choice.hpp"
+#include "app/scene_loader.hpp"
 #include "scene/boundary_types.hpp"
 #include "sph/equation_of_state_choice.hpp"
 #include "sph/evaluation_mode.hpp"
 #include "sph/integrator_choice.hpp"
 #include "sph/kernel_table.hpp"
 
-using namespace num::io;
+using namespace num::app;
 
 TEST(SceneReader, DefaultsAndOverrides) {
     SceneDocument doc = SceneDocument::fromFile(std::string(APP_TEST_SCENES_DIR) + "/tiny_2d.json");

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "scene/scene_keys.hpp"
 
 namespace {
@@ -30,8 +30,8 @@ std::string docTable(const std::string& doc, const std::string& section) {
 }
 
 template <class Spec>
-void expectDocumented(const std::string& section, const num::io::KeyTable<Spec>& keys) {
-    const std::string made = num::io::keyTableMarkdown(keys);
+void expectDocumented(const std::string& section, const num::app::KeyTable<Spec>& keys) {
+    const std::string made = num::app::keyTableMarkdown(keys);
     EXPECT_EQ(docTable(scenesDoc(), section), made)
         << "docs/scenes.md's table of `" << section
         << "` differs from the reader's keys (src/scene/scene_keys.cpp); its table is:\n"
@@ -39,7 +39,7 @@ void expectDocumented(const std::string& section, const num::io::KeyTable<Spec>&
 }
 
 TEST(SceneKeyDocs, TheTablesAreTheReadersKeys) {
-    using namespace num::io;
+    using namespace num::app;
     expectDocumented("particles", particleKeys());
     expectDocumented("time", timeKeys());
     expectDocumented("materials", materialKeys());
@@ -51,20 +51,20 @@ TEST(SceneKeyDocs, TheTablesAreTheReadersKeys) {
 /// An absent key gets the table's default, which is the section struct's own (sections without
 /// required keys).
 template <class Spec>
-void expectTheStructsDefaults(const num::io::KeyTable<Spec>& keys) {
+void expectTheStructsDefaults(const num::app::KeyTable<Spec>& keys) {
     const nlohmann::json empty = nlohmann::json::object();
     const std::string file = "scene.json";
     Spec read;
-    num::io::readKeys(num::io::detail::At{empty, file, "section"}, keys, read);
+    num::app::readKeys(num::app::detail::At{empty, file, "section"}, keys, read);
     const Spec plain;
     for (const auto& k : keys)
-        if (k.type != num::io::KeyType::CUSTOM)  // a CUSTOM key is left alone when absent
+        if (k.type != num::app::KeyType::CUSTOM)  // a CUSTOM key is left alone when absent
             std::visit([&](auto member) { EXPECT_EQ(read.*member, plain.*member) << k.name; },
                        k.field);
 }
 
 TEST(SceneKeyDocs, AbsentKeysGetTheStructsDefaults) {
-    using namespace num::io;
+    using namespace num::app;
     expectTheStructsDefaults(materialKeys());
     expectTheStructsDefaults(physicsKeys());
     expectTheStructsDefaults(numericsKeys());

@@ -1,12 +1,12 @@
 // Shapes and walls as the scene reader and set-up take them: a box or ball without a
-// transformation keeps its fast path (the CUDA back end's Shape), any other shape becomes a
+// transformation keeps its fast path (the CUDA back end's BoxOrBall), any other shape becomes a
 // solid; an interior wall's particles take its velocity, slip and thermal condition.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "io/scene_loader.hpp"
-#include "io/scene_setup.hpp"
+#include "app/scene_loader.hpp"
+#include "app/scene_setup.hpp"
 #include "sph/boundary/thermal_condition.hpp"
 
 using namespace num;
@@ -28,8 +28,8 @@ json tinyScene() {
     })");
 }
 
-io::Scene<2> read(const json& j) {
-    return io::readScene<2>(io::SceneDocument::fromText(j.dump(), "scene.json"));
+app::Scene<2> read(const json& j) {
+    return app::readScene<2>(app::SceneDocument::fromText(j.dump(), "scene.json"));
 }
 
 bool insideDomain(const sph::Vector<2>& x) {
@@ -41,17 +41,17 @@ bool insideDomain(const sph::Vector<2>& x) {
 TEST(SceneShapes, BoxesAndBallsKeepTheirFastPath) {
     json j = tinyScene();
     j["bodies"] = json::array({{{"shape", "circle"}, {"center", {0.3, 0.1}}, {"radius", 0.05}}});
-    const io::Scene<2> plain = read(j);
-    EXPECT_EQ(plain.fluids[0].shape, io::ShapeKind::BOX);
-    EXPECT_EQ(plain.bodies[0].shape, io::ShapeKind::CIRCLE);
+    const app::Scene<2> plain = read(j);
+    EXPECT_EQ(plain.fluids[0].shape, app::ShapeKind::BOX);
+    EXPECT_EQ(plain.bodies[0].shape, app::ShapeKind::CIRCLE);
     EXPECT_FALSE(plain.bodies[0].solid);
     j["bodies"][0]["translate"] = {0.01, 0};
     j["fluids"][0]["rotate"] = 0;
-    const io::Scene<2> moved = read(j);
-    EXPECT_EQ(moved.bodies[0].shape, io::ShapeKind::SOLID);
-    EXPECT_EQ(moved.fluids[0].shape, io::ShapeKind::SOLID);
+    const app::Scene<2> moved = read(j);
+    EXPECT_EQ(moved.bodies[0].shape, app::ShapeKind::SOLID);
+    EXPECT_EQ(moved.fluids[0].shape, app::ShapeKind::SOLID);
     EXPECT_NEAR(moved.bodies[0].solid->signedDistance({{0.31, 0.1}}), -0.05, 1e-12);
-    EXPECT_EQ(io::firstGeneralShapeKey(moved), "fluids[0].shape");
+    EXPECT_EQ(app::firstGeneralShapeKey(moved), "fluids[0].shape");
 }
 
 TEST(SceneShapes, InteriorWallsTakeVelocitySlipAndThermalCondition) {
@@ -65,10 +65,10 @@ TEST(SceneShapes, InteriorWallsTakeVelocitySlipAndThermalCondition) {
                                {"min", {0.25, 0.02}},
                                {"max", {0.38, 0.1}},
                                {"thermal", {{"heat_flux", 1000}}}}});
-    const io::Scene<2> scene = read(j);
+    const app::Scene<2> scene = read(j);
     ASSERT_EQ(scene.walls.size(), 2u);
-    io::SceneSetup<2> setup = io::makeSceneSetup(scene, 1);
-    const sph::Storage<2> st = io::makeInitialStorage(scene, setup);
+    app::SceneSetup<2> setup = app::makeSceneSetup(scene, 1);
+    const sph::Storage<2> st = app::makeInitialStorage(scene, setup);
     const auto x = st.getValue<sph::Vector<2>>(sph::QuantityId::POSITION);
     const auto kind = st.getValue<int>(sph::QuantityId::KIND);
     const auto T = st.getValue<double>(sph::QuantityId::TEMPERATURE);

@@ -1,6 +1,6 @@
 // Simulation, the object the apps drive: its steps, advanceTo, observers and particles, and a
 // run driven in pieces against one run() (the same files, byte for byte).
-#include "io/simulation.hpp"
+#include "app/simulation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,10 +10,10 @@
 
 namespace {
 
-using num::io::IStepObserver;
-using num::io::RunOptions;
-using num::io::SceneDocument;
-using num::io::Simulation;
+using num::app::IStepObserver;
+using num::app::RunOptions;
+using num::app::SceneDocument;
+using num::app::Simulation;
 
 std::string work(const std::string& name) {
     const std::string dir = std::string(APP_TEST_WORK) + "/simulation/" + name;
@@ -97,8 +97,8 @@ TEST(Simulation, BadSceneIsAnAppError) {
     try {
         Simulation<2> sim(doc, quietRun(work("bad")));
         FAIL() << "a negative spacing was accepted";
-    } catch (const num::io::AppError& e) {
-        EXPECT_EQ(e.code(), num::io::ExitCode::SCENE);
+    } catch (const num::app::AppError& e) {
+        EXPECT_EQ(e.code(), num::app::ExitCode::SCENE);
         EXPECT_NE(std::string(e.what()).find("particles.spacing"), std::string::npos) << e.what();
     }
 }

@@ -2,10 +2,10 @@
 // error an unknown format gives (the scene file, the key, and the names there are).
 #include <gtest/gtest.h>
 
-#include "io/scene_loader.hpp"
-#include "io/writer_registry.hpp"
+#include "app/scene_loader.hpp"
+#include "app/writer_registry.hpp"
 
-using namespace num::io;
+using namespace num::app;
 
 namespace {
 

@@ -51,7 +51,7 @@ set(prefix ${WORK_DIR}/prefix)
 run_step("configure numerics for install" ${CMAKE_COMMAND} -S ${NUMERICS_SOURCE_DIR}
          -B ${WORK_DIR}/numerics-build ${common_args} -DCMAKE_INSTALL_PREFIX=${prefix}
          -DNUMERICS_BUILD_APPS=OFF -DNUMERICS_BUILD_TESTS=OFF -DNUMERICS_BUILD_BENCH=OFF
-         -DNUMERICS_BUILD_EXAMPLES=OFF -DNUMERICS_BUILD_IO=OFF)
+         -DNUMERICS_BUILD_EXAMPLES=OFF -DNUMERICS_BUILD_APP=OFF)
 run_step("build numerics" ${CMAKE_COMMAND} --build ${WORK_DIR}/numerics-build -j 2)
 run_step("install numerics" ${CMAKE_COMMAND} --install ${WORK_DIR}/numerics-build)
 build_and_run_consumer(package ${WORK_DIR}/package -DCMAKE_PREFIX_PATH=${prefix})

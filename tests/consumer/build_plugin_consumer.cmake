@@ -1,5 +1,5 @@
 # The plugin walkthrough of docs/extending.md as a user follows it, from a clean install
-# prefix: numerics (library, numerics::io, headers, CMake package) is installed into an empty
+# prefix: numerics (library, numerics::app, headers, CMake package) is installed into an empty
 # prefix; the walkthrough's damping.cpp, CMakeLists.txt and damped.json, taken from the document,
 # are built with numerics_add_plugin against that prefix alone and run with the built fluid_sim.
 # Run with

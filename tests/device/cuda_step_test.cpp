@@ -35,7 +35,7 @@ Case<Dim> damBreak() {
     Vector<Dim> hi = c.geometry.domain.max;
     hi[0] = 0.32, hi[Dim - 1] = 0.32;
     c.geometry.fluid.push_back(
-        FluidRegion<Dim>::filling(Shape<Dim>::box(c.geometry.domain.min, hi)));
+        FluidRegion<Dim>::filling(BoxOrBall<Dim>::box(c.geometry.domain.min, hi)));
     Vector<Dim> g{};
     g[Dim - 1] = -9.81;
     c.model.bodyForce = constantForce(g);

@@ -15,7 +15,7 @@ FluidGeometry<2> tank() {
     FluidGeometry<2> g;
     g.spacing = 0.05;
     g.domain.min = {{0, 0}}, g.domain.max = {{1, 1}};
-    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box({{0, 0}}, {{0.5, 0.5}})));
+    g.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box({{0, 0}}, {{0.5, 0.5}})));
     return g;
 }
 
@@ -68,7 +68,7 @@ TEST(DeviceRefusal, RefusesSummationDensityByItsTerm) {
 TEST(DeviceRefusal, RefusesGeometryItDoesNotRead) {
     FluidGeometry<2> g = tank();
     InteriorWall<2> wall;
-    wall.shape = Shape<2>::box({{0.7, 0}}, {{0.8, 0.2}});
+    wall.shape = BoxOrBall<2>::box({{0.7, 0}}, {{0.8, 0.2}});
     g.interiorWalls.push_back(wall);
     EXPECT_EQ(refusal(water(), g), "walls inside the domain");
 }

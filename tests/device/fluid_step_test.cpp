@@ -56,11 +56,11 @@ Case<Dim> damBreak(bool periodicX = false, bool body = false) {
         Vector<Dim> centre = c.geometry.domain.max * 0.5;
         centre[0] = 0.5, centre[Dim - 1] = 0.12;
         SolidBody<Dim> ball;
-        ball.shape = Shape<Dim>::ball(centre, 2.5 * dx);
+        ball.shape = BoxOrBall<Dim>::ball(centre, 2.5 * dx);
         c.geometry.bodies.push_back(ball);
     }
     c.geometry.fluid.push_back(
-        FluidRegion<Dim>::filling(Shape<Dim>::box(c.geometry.domain.min, hi)));
+        FluidRegion<Dim>::filling(BoxOrBall<Dim>::box(c.geometry.domain.min, hi)));
     if (periodicX)  // a flow along the channel
         c.geometry.fluid.back().velocity = [](const Vector<Dim>& x) {
             Vector<Dim> v{};
@@ -359,7 +359,7 @@ TEST(DeviceFluidStep, ContainmentKeepsFluidOutOfBodies) {
     ASSERT_EQ(config.bodies.size(), 1u);
     ASSERT_TRUE(config.contain);
     Storage<2> storage = c.storage();
-    const Shape<2>& ball = c.geometry.bodies[0].shape;
+    const BoxOrBall<2>& ball = c.geometry.bodies[0].shape;
     auto x = storage.getValue<Vector<2>>(QuantityId::POSITION);
     auto v = storage.getDt<Vector<2>>(QuantityId::POSITION);
     const auto kind = storage.getValue<int>(QuantityId::KIND);

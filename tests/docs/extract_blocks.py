@@ -17,7 +17,7 @@ import os
 import sys
 
 PRELUDE = """#include "heat_diffusion.hpp"
-#include "io/plugin.hpp"
+#include "app/plugin.hpp"
 #include "numerics.hpp"
 #include "sph/fluid_model.hpp"
 #include "spring_force.hpp"

@@ -82,8 +82,8 @@ struct HeatedTank {
         for (int k = 0; k < 2; ++k) geometry.walls[k][0] = geometry.walls[k][1] = WallSide<2>{};
         geometry.walls[1][1].velocity = Vector<2>{{1.0, 0.0}};
         geometry.fluid.push_back(
-            FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, 0.8}})));
-        geometry.bodies.push_back(SolidBody<2>{Shape<2>::ball({{0.5, 0.4}}, 0.15)});
+            FluidRegion<2>::filling(BoxOrBall<2>::box({{0.0, 0.0}}, {{1.0, 0.8}})));
+        geometry.bodies.push_back(SolidBody<2>{BoxOrBall<2>::ball({{0.5, 0.4}}, 0.15)});
         geometry.bodies.back().temperature = 60;
         settings.set("smoothing_length", 1.5 * dx);
     }

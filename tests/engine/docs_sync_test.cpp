@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "sph/defaults.hpp"
 
 namespace {
@@ -35,7 +35,7 @@ TEST(Docs, ExtendingShowsTheExamplesVerbatim) {
 // reader starts from sph/defaults.hpp's values.
 TEST(Docs, ScenesStartFromTheDefaults) {
     namespace d = num::sph::defaults;
-    const num::io::Scene<2> scene;
+    const num::app::Scene<2> scene;
     EXPECT_EQ(scene.hOverSpacing, d::hOverSpacing);
     EXPECT_EQ(scene.kernel, d::kernel);
     EXPECT_EQ(scene.cfl, d::cfl);

@@ -94,7 +94,7 @@ FluidGeometry<2> periodicBox() {
     g.spacing = 0.1;
     g.domain.max = {{1.0, 1.0}};
     g.domain.periodic = {true, true};
-    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max)));
+    g.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box(g.domain.min, g.domain.max)));
     return g;
 }
 

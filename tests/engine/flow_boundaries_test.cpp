@@ -137,7 +137,7 @@ TEST(FlowBoundaries, TheBufferFillsTheOpeningWhereWaterReachesTheSide) {
     g.walls[0][0].layers = ParticleKind::INLET;
     g.walls[0][0].openFrom = V2{{0, 0.2}}, g.walls[0][0].openTo = V2{{0, 0.8}};
     InteriorWall<2> plate;
-    plate.shape = Shape<2>::box(V2{{0, 0.6}}, V2{{1, 0.8}});
+    plate.shape = BoxOrBall<2>::box(V2{{0, 0.6}}, V2{{1, 0.8}});
     g.interiorWalls.push_back(plate);
     int inlet = 0, wallBeyond = 0;
     for (const auto& p : generateParticles(g, 2)) {

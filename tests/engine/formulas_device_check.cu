@@ -64,8 +64,8 @@ __global__ void everyFormula(const double* in, double* out,
              wallTemperature(sums, in[1], true);
     Vec x = vi, v = vj;  // containment: the box's walls and a body (a ball)
     containInWalls(x[0], v[0], 0.0, 1.0, true, true);
-    Shape<Dim> ball;
-    ball.type = Shape<Dim>::Type::BALL, ball.center = dx, ball.radius = 0.1;
+    BoxOrBall<Dim> ball;
+    ball.type = BoxOrBall<Dim>::Type::BALL, ball.center = dx, ball.radius = 0.1;
     containOutsideBody<Dim>(x, v, ball);
     s += x[0] + v[0];
     out[0] = s + a[0];

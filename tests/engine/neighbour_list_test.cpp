@@ -475,7 +475,8 @@ std::pair<Storage<2>, std::size_t> damBreak(double skin, Size threads, const std
     FluidGeometry<2> geometry;
     geometry.spacing = dx;
     geometry.domain.max = {{1.0, 0.6}};
-    geometry.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{0.4, 0.4}})));
+    geometry.fluid.push_back(
+        FluidRegion<2>::filling(BoxOrBall<2>::box({{0.0, 0.0}}, {{0.4, 0.4}})));
     RunSettings settings;
     settings.set("smoothing_length", 1.3 * dx)
         .set("neighbour_skin", skin)

@@ -32,7 +32,7 @@ struct LidTank {
         for (int k = 0; k < 2; ++k) geometry.walls[k][0] = geometry.walls[k][1] = WallSide<2>{};
         geometry.walls[1][1].velocity = Vector<2>{{lidSpeed, 0.0}};
         geometry.fluid.push_back(
-            FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, 1.0}})));
+            FluidRegion<2>::filling(BoxOrBall<2>::box({{0.0, 0.0}}, {{1.0, 1.0}})));
         settings.set("smoothing_length", 1.5 * dx);
         storage = makeFluidStorage(model, geometry, settings);
         auto v = storage.getDt<Vector<2>>(QuantityId::POSITION);

@@ -66,7 +66,7 @@ struct JitteredBox {
         geometry.domain.max = {{1.0, 1.0}};
         geometry.domain.periodic = {true, true};
         geometry.fluid.push_back(
-            FluidRegion<2>::filling(Shape<2>::box(geometry.domain.min, geometry.domain.max)));
+            FluidRegion<2>::filling(BoxOrBall<2>::box(geometry.domain.min, geometry.domain.max)));
         settings.set("smoothing_length", 1.3 * dx);
         storage = makeFluidStorage(model, geometry, settings);
         std::mt19937_64 rng(5);
@@ -160,7 +160,7 @@ struct WalledBox {
         geometry.spacing = dx;
         geometry.domain.max = {{1.0, 1.0}};
         geometry.fluid.push_back(
-            FluidRegion<2>::filling(Shape<2>::box({{0.0, 0.0}}, {{1.0, fillHeight}})));
+            FluidRegion<2>::filling(BoxOrBall<2>::box({{0.0, 0.0}}, {{1.0, fillHeight}})));
         settings.set("smoothing_length", 1.3 * dx);
     }
 };

@@ -10,10 +10,10 @@
 #include <memory>
 #include <string>
 
-#include "io/checkpoint.hpp"
-#include "io/errors.hpp"
-#include "io/expression.hpp"
-#include "io/scene_loader.hpp"
+#include "app/checkpoint.hpp"
+#include "app/errors.hpp"
+#include "app/expression.hpp"
+#include "app/scene_loader.hpp"
 #include "run/checkpoint_state.hpp"
 #include "sph/settings.hpp"
 
@@ -24,12 +24,12 @@ using namespace num;
 template <int Dim>
 void readCheckpoint(const std::string& bytes) {
     const std::string path = "fuzz.chk";
-    const std::string payload = io::checkpointPayload(bytes, path, Dim);
-    io::ByteReader r(payload, path);
-    const io::SceneDocument doc = io::SceneDocument::fromText(r.getString(), path + " (scene)");
+    const std::string payload = app::checkpointPayload(bytes, path, Dim);
+    app::ByteReader r(payload, path);
+    const app::SceneDocument doc = app::SceneDocument::fromText(r.getString(), path + " (scene)");
     (void)doc.dimension();
     (void)r.getString();  // the fingerprint: text compared line by line (fingerprint.hpp)
-    io::RunState<Dim> state;
+    app::RunState<Dim> state;
     state.read(r);
     // The material table a restart of the stored scene has: its materials in name order.
     sph::Storage<Dim> materials;
@@ -37,7 +37,7 @@ void readCheckpoint(const std::string& bytes) {
     if (table.is_object())
         for (const auto& [name, value] : table.items())
             materials.materials().push_back(std::make_shared<sph::Material>(name));
-    const sph::Storage<Dim> s = io::readStorage<Dim>(r, materials);
+    const sph::Storage<Dim> s = app::readStorage<Dim>(r, materials);
     (void)s.size();
 }
 
@@ -48,14 +48,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const int mode = data[0];
     const int dim = mode & 2 ? 3 : 2;
     std::string bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
-    if (mode & 1) bytes = io::checkpointBytes(dim, bytes);
+    if (mode & 1) bytes = app::checkpointBytes(dim, bytes);
     try {
         if (dim == 2)
             readCheckpoint<2>(bytes);
         else
             readCheckpoint<3>(bytes);
-    } catch (const io::AppError&) {
-    } catch (const io::ExpressionError&) {
+    } catch (const app::AppError&) {
+    } catch (const app::ExpressionError&) {
     } catch (const sph::SettingsError&) {
     }
     return 0;

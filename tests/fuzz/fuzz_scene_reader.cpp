@@ -6,13 +6,13 @@
 #include <cstdint>
 #include <string>
 
-#include "io/errors.hpp"
-#include "io/expression.hpp"
-#include "io/scene_loader.hpp"
+#include "app/errors.hpp"
+#include "app/expression.hpp"
+#include "app/scene_loader.hpp"
 #include "sph/settings.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    using namespace num::io;
+    using namespace num::app;
     const std::string text(reinterpret_cast<const char*>(data), size);
     try {
         const SceneDocument doc = SceneDocument::fromText(text, "fuzz.json");

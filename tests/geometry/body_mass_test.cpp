@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "io/scene_loader.hpp"
+#include "app/scene_loader.hpp"
 #include "scene/moving_bodies.hpp"
 
 namespace {
 
 using nlohmann::json;
-using num::io::readScene;
-using num::io::SceneDocument;
+using num::app::readScene;
+using num::app::SceneDocument;
 
 /// The moving bodies of a scene of the given dimension in walls whose only body is `body`.
 template <int Dim>
@@ -31,7 +31,7 @@ std::shared_ptr<num::sph::MovingBodies<Dim>> bodiesOf(const std::string& body) {
     j["fluids"] = {
         {{"material", "water"}, {"shape", "box"}, {"min", j["domain"]["min"]}, {"max", top}}};
     j["bodies"] = {json::parse(body)};
-    return num::io::makeMovingBodies(
+    return num::app::makeMovingBodies(
         readScene<Dim>(SceneDocument::fromText(j.dump(), "scene.json")));
 }
 

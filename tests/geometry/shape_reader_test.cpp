@@ -4,16 +4,16 @@
 
 #include <string>
 
-#include "io/errors.hpp"
+#include "app/errors.hpp"
 #include "scene/shape_reader.hpp"
 
 namespace {
 
 using nlohmann::json;
-using num::io::AppError;
-using num::io::ExitCode;
-using num::io::readSolid;
-using num::io::detail::At;
+using num::app::AppError;
+using num::app::ExitCode;
+using num::app::readSolid;
+using num::app::detail::At;
 using P2 = num::geometry::Point<2>;
 using P3 = num::geometry::Point<3>;
 

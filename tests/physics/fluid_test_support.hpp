@@ -123,7 +123,8 @@ class ChannelFlow {
             g.domain.max[k] = k == 1 ? spec.L : spec.periodicCells * dx_;
         }
         g.walls[1][1].velocity[0] = spec.wallVelocity;
-        g.fluid.push_back(FluidRegion<Dim>::filling(Shape<Dim>::box(g.domain.min, g.domain.max)));
+        g.fluid.push_back(
+            FluidRegion<Dim>::filling(BoxOrBall<Dim>::box(g.domain.min, g.domain.max)));
         case_ = std::make_unique<FluidCase<Dim>>(model, g, settingsFor(dx_, spec.hFactor));
     }
 

@@ -29,7 +29,7 @@ FluidCase<2>* makeBox(FluidModel<2>& model, std::unique_ptr<FluidCase<2>>& holde
     g.spacing = dx;
     g.domain.max = Vector<2>{{1, 1}};
     g.domain.periodic = {true, true};
-    auto region = FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max));
+    auto region = FluidRegion<2>::filling(BoxOrBall<2>::box(g.domain.min, g.domain.max));
     auto random = std::make_shared<std::mt19937>(7);
     region.velocity = [random](const Vector<2>&) {
         std::uniform_real_distribution<double> u(-0.2, 0.2);

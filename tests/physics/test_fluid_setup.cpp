@@ -17,9 +17,9 @@ FluidGeometry<2> boxWithBody(double dx) {
     FluidGeometry<2> g;
     g.spacing = dx;
     g.domain.max = Vector<2>{{1, 1}};
-    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max)));
+    g.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box(g.domain.min, g.domain.max)));
     SolidBody<2> body;
-    body.shape = Shape<2>::ball(Vector<2>{{0.5, 0.5}}, 0.2);
+    body.shape = BoxOrBall<2>::ball(Vector<2>{{0.5, 0.5}}, 0.2);
     g.bodies.push_back(body);
     return g;
 }
@@ -103,7 +103,7 @@ TEST(FluidSetup, SlidingLidIsNoMassSource) {
     g.spacing = dx;
     g.domain.max = Vector<2>{{1, 1}};
     g.walls[1][1].velocity = Vector<2>{{1, 0}};
-    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max)));
+    g.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box(g.domain.min, g.domain.max)));
     FluidModel<2> model;
     model.restDensity = 1;
     model.maxVelocity = 1;

@@ -60,8 +60,9 @@ TEST(HeatBuoyancy, WarmBlobRisesAtBoussinesqRate) {
     geo.domain.max = {{L, L}};
     geo.domain.periodic = {true, true};
     geo.spacing = dx;
-    geo.fluid.push_back(FluidRegion<2>::filling(Shape<2>::ball(centre, R), T0 + dT));
-    geo.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(geo.domain.min, geo.domain.max), T0));
+    geo.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::ball(centre, R), T0 + dT));
+    geo.fluid.push_back(
+        FluidRegion<2>::filling(BoxOrBall<2>::box(geo.domain.min, geo.domain.max), T0));
 
     RunSettings settings;
     settings.set("kernel", "cubic_spline").set("smoothing_length", 1.3 * dx);

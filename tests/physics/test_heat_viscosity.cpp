@@ -54,7 +54,7 @@ TEST(HeatViscosity, WarmPoiseuilleFollowsViscosityAtItsTemperature) {
     g.spacing = dx;
     g.domain.periodic = {true, false};
     g.domain.max = {{8 * dx, L}};
-    g.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max)));
+    g.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box(g.domain.min, g.domain.max)));
     FluidCase<2> c(model, g, settingsFor(dx));
     for (Float& T : c.storage.getValue<Float>(QuantityId::TEMPERATURE)) T = T0 + dT;
 

@@ -26,7 +26,7 @@ TEST(FluidHydrostatic, TankPressureAfterGravityRamp) {
     geo.spacing = dx;
     geo.domain.max = Vector<2>{{width, H}};
     geo.walls[1][1].present = false;  // open top: free surface
-    geo.fluid.push_back(FluidRegion<2>::filling(Shape<2>::box(geo.domain.min, geo.domain.max)));
+    geo.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::box(geo.domain.min, geo.domain.max)));
     FluidCase<2> c(model, geo, settingsFor(dx, defaults::hOverSpacing, defaults::kernel));
 
     const double pScale = rho0 * g * H;

@@ -31,7 +31,7 @@ TaylorGreenErrors runTaylorGreen(int n, double tEnd) {
     g.spacing = dx;
     g.domain.max = Vector<2>{{1, 1}};
     g.domain.periodic = {true, true};
-    auto region = FluidRegion<2>::filling(Shape<2>::box(g.domain.min, g.domain.max));
+    auto region = FluidRegion<2>::filling(BoxOrBall<2>::box(g.domain.min, g.domain.max));
     region.velocity = [&](const Vector<2>& x) {
         return Vector<2>{{-U * std::cos(2 * pi * x[0]) * std::sin(2 * pi * x[1]),
                           U * std::sin(2 * pi * x[0]) * std::cos(2 * pi * x[1])}};

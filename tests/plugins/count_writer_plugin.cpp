@@ -4,45 +4,45 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/file.hpp"
-#include "io/plugin.hpp"
+#include "app/file.hpp"
+#include "app/plugin.hpp"
 
 namespace {
 
 template <int Dim>
-class ParticleCountWriter : public num::io::IWriter<Dim> {
+class ParticleCountWriter : public num::app::IWriter<Dim> {
   public:
-    explicit ParticleCountWriter(const num::io::WriterContext& context) : c_(context) {}
+    explicit ParticleCountWriter(const num::app::WriterContext& context) : c_(context) {}
 
-    void start() override { num::io::writeFileAtomically(log(), "start\n"); }
-    void resume(double t, const num::io::OutputSeries&) override {
-        num::io::appendToFile(log(), num::io::formatted("resume %g\n", t));
+    void start() override { num::app::writeFileAtomically(log(), "start\n"); }
+    void resume(double t, const num::app::OutputSeries&) override {
+        num::app::appendToFile(log(), num::app::formatted("resume %g\n", t));
     }
-    void write(const num::sph::Storage<Dim>& s, const std::vector<num::io::OutputField>& fields,
+    void write(const num::sph::Storage<Dim>& s, const std::vector<num::app::OutputField>& fields,
                double t, int index) override {
-        std::string text = num::io::formatted("dimension %d\ntime %.6g\nparticles %zu\nfields", Dim,
-                                              t, std::size_t(s.size()));
+        std::string text = num::app::formatted("dimension %d\ntime %.6g\nparticles %zu\nfields",
+                                               Dim, t, std::size_t(s.size()));
         for (const auto& f : fields) text += " " + f.name;
-        num::io::writeFileAtomically(c_.path(c_.fileName(index, "txt")), text + "\n");
-        num::io::appendToFile(log(), num::io::formatted("write %d\n", index));
+        num::app::writeFileAtomically(c_.path(c_.fileName(index, "txt")), text + "\n");
+        num::app::appendToFile(log(), num::app::formatted("write %d\n", index));
     }
-    void finish(bool completed, num::io::EndOfRun&) override {
-        num::io::appendToFile(log(), completed ? "finish completed\n" : "finish stopped\n");
+    void finish(bool completed, num::app::EndOfRun&) override {
+        num::app::appendToFile(log(), completed ? "finish completed\n" : "finish stopped\n");
     }
-    std::vector<num::io::WrittenFile> files() const override {
+    std::vector<num::app::WrittenFile> files() const override {
         return {{c_.prefix + "_*.txt", "particle counts"}};
     }
 
   private:
     std::string log() const { return c_.path("particle_count.log"); }
-    num::io::WriterContext c_;
+    num::app::WriterContext c_;
 };
 
 template <int Dim>
-class FailingWriter : public num::io::IWriter<Dim> {
+class FailingWriter : public num::app::IWriter<Dim> {
   public:
-    explicit FailingWriter(const num::io::WriterContext&) {}
-    void write(const num::sph::Storage<Dim>&, const std::vector<num::io::OutputField>&, double,
+    explicit FailingWriter(const num::app::WriterContext&) {}
+    void write(const num::sph::Storage<Dim>&, const std::vector<num::app::OutputField>&, double,
                int index) override {
         if (index == 2) throw std::runtime_error("no room for output 2");
     }

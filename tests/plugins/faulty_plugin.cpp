@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "io/plugin.hpp"
+#include "app/plugin.hpp"
 
 namespace {
 
@@ -60,7 +60,7 @@ class Drift : public IEquationTerm<Dim> {
 }  // namespace
 
 NUMERICS_PLUGIN(registry) {
-    using P = num::io::plugin::Parameters;
+    using P = num::app::plugin::Parameters;
     registry.add<Faulty>("throws_when_made", [](const P&) -> std::tuple<When, Float> {
         throw std::runtime_error("the test factory refuses its parameters");
     });

@@ -1,6 +1,6 @@
 // A plugin whose entry point throws something that is not a std::exception (an int), as code
 // that reports errors by throwing plain values does.
-#include "io/plugin.hpp"
+#include "app/plugin.hpp"
 
 NUMERICS_PLUGIN(registry) {
     (void)registry;

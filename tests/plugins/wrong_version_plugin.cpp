@@ -1,7 +1,7 @@
 // A library with the entry point of a plugin built against another plugin API version.
-#include "io/plugin.hpp"
+#include "app/plugin.hpp"
 
 extern "C" __attribute__((visibility("default"))) int numerics_plugin_entry(
-    int, num::io::plugin::Registry*) {
+    int, num::app::plugin::Registry*) {
     return NUMERICS_PLUGIN_API_VERSION + 998;
 }

@@ -10,9 +10,10 @@
 
 namespace num::sph {
 
-/// A wall's thermal side: adiabatic, a held temperature or a heat flux into the fluid.
+/// A wall's thermal side: ADIABATIC, FIXED_TEMPERATURE (`value` held) or HEAT_FLUX (`value`
+/// into the fluid; its particles conduct).
 struct WallThermal {
-    enum class Kind { ADIABATIC, TEMPERATURE, HEAT_FLUX } kind = Kind::ADIABATIC;
+    ThermalCondition condition = ThermalCondition::ADIABATIC;
     Float value = 0;  ///< temperature [degC] or heat flux into the fluid [W/m^2]
 };
 
@@ -34,11 +35,8 @@ class WallBoundary : public ISideBoundary<Dim> {
     /// next to the fluid (depth below one spacing): q'' A enters the domain.
     void setThermal(Storage<Dim>& s, const std::vector<Size>& beyond,
                     const std::vector<Float>& depth, Float area, Float spacing) const override {
-        using Kind = WallThermal::Kind;
-        const ThermalCondition condition =
-            thermal_.kind == Kind::TEMPERATURE ? ThermalCondition::FIXED_TEMPERATURE
-            : thermal_.kind == Kind::HEAT_FLUX ? ThermalCondition::CONDUCTING
-                                               : ThermalCondition::ADIABATIC;
+        const bool flux = thermal_.condition == ThermalCondition::HEAT_FLUX;
+        const ThermalCondition condition = flux ? ThermalCondition::CONDUCTING : thermal_.condition;
         const auto cond = s.template getValue<int>(heat_ids::THERMAL_CONDITION);
         std::vector<char> layer(s.size(), 0);
         bool anyLayer = false;
@@ -46,7 +44,7 @@ class WallBoundary : public ISideBoundary<Dim> {
             cond[beyond[k]] = int(condition);
             if (depth[k] < spacing) layer[beyond[k]] = 1, anyLayer = true;
         }
-        if (thermal_.kind != Kind::HEAT_FLUX || !anyLayer) return;
+        if (!flux || !anyLayer) return;
         ThermalBoundary<Dim>::setHeatFlux(s, thermal_.value, area,
                                           [&](Size i) { return layer[i] != 0; });
     }
@@ -56,7 +54,7 @@ class WallBoundary : public ISideBoundary<Dim> {
     bool closes() const override { return true; }
     Float surfaceSpeed() const override { return norm(velocity_); }
     std::optional<Float> heldTemperature() const override {
-        if (thermal_.kind != WallThermal::Kind::TEMPERATURE) return std::nullopt;
+        if (thermal_.condition != ThermalCondition::FIXED_TEMPERATURE) return std::nullopt;
         return thermal_.value;
     }
 

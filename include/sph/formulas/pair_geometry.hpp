@@ -43,10 +43,10 @@ NUMERICS_HD_INLINE Float pairInverseR2(Float r, Float eta2) { return 1.0 / (r * 
 
 namespace detail {
 template <class Kernel>
-struct KernelShape {};
-template <class Shape, int Dim, class T>
-struct KernelShape<kernels::RadialKernel<Shape, Dim, T>> {
-    using type = Shape;
+struct KernelProfile {};
+template <class Profile, int Dim, class T>
+struct KernelProfile<kernels::RadialKernel<Profile, Dim, T>> {
+    using type = Profile;
 };
 }  // namespace detail
 
@@ -59,13 +59,13 @@ struct KernelShape<kernels::RadialKernel<Shape, Dim, T>> {
 /// (hence also the copies the pair loop makes inside each thread's function).
 template <class Kernel>
 struct GradientFactor {
-    using Shape = typename detail::KernelShape<Kernel>::type;
+    using Profile = typename detail::KernelProfile<Kernel>::type;
     Float invH, scale, support = Kernel::support;
     explicit GradientFactor(Float h)
         : invH(1 / h), scale(Kernel::sigma / (Kernel::hPowDim(h) * h)) {}
     NUMERICS_HD Float factor(Float r) const {
         const Float q = hd::min(r * invH, support);
-        return scale * Shape::df(q) / hd::max(r, std::numeric_limits<Float>::min());
+        return scale * Profile::df(q) / hd::max(r, std::numeric_limits<Float>::min());
     }
 };
 
@@ -75,10 +75,10 @@ struct GradientFactor {
 /// the support radius on.
 template <class Kernel>
 struct KernelValue {
-    using Shape = typename detail::KernelShape<Kernel>::type;
+    using Profile = typename detail::KernelProfile<Kernel>::type;
     Float h, scale, support = Kernel::support;
     explicit KernelValue(Float h) : h(h), scale(Kernel::sigma / Kernel::hPowDim(h)) {}
-    NUMERICS_HD Float value(Float r) const { return scale * Shape::f(hd::min(r / h, support)); }
+    NUMERICS_HD Float value(Float r) const { return scale * Profile::f(hd::min(r / h, support)); }
 };
 
 }  // namespace num::sph

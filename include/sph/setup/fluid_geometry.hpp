@@ -1,7 +1,7 @@
 // What a fluid case is made of, as particles: the container box with its walls (or periodic
 // axes), fluid regions, solid bodies and walls inside the box. makeFluidStorage
 // (fluid_model.hpp) turns it into a Storage on one lattice of spacing dx. Regions, bodies and
-// walls are boxes or balls (Shape, which the CUDA back end takes too) or, on the host only, any
+// walls are boxes or balls (BoxOrBall, which the CUDA back end takes too) or, on the host only, any
 // solid (PlacedShape::solid; include/geometry/).
 #pragma once
 
@@ -49,7 +49,7 @@ struct FluidRegion : PlacedShape<Dim> {
     /// Initial velocity at a position; empty means at rest.
     std::function<Vector<Dim>(const Vector<Dim>&)> velocity;
 
-    static FluidRegion filling(const Shape<Dim>& s, Float temperature = defaults::temperature) {
+    static FluidRegion filling(const BoxOrBall<Dim>& s, Float temperature = defaults::temperature) {
         FluidRegion r;
         r.shape = s, r.temperature = temperature;
         return r;

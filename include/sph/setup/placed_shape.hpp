@@ -1,4 +1,4 @@
-// Where a fluid region, a body or a wall is: a box or ball (Shape, plain data the CUDA back end
+// Where a fluid region, a body or a wall is: a box or ball (BoxOrBall, plain data the CUDA back end
 // copies to the device) or, on the host, any solid of include/geometry/ (a polygon, a mesh, a
 // combination). The set-up, the checks and the containment ask the placed shape, never its
 // parts, so that boxes and balls keep their exact formulas and other solids use theirs.
@@ -11,7 +11,7 @@ namespace num::sph {
 
 template <int Dim>
 struct PlacedShape {
-    Shape<Dim> shape;                         ///< the box or ball, used when `solid` is empty
+    BoxOrBall<Dim> shape;                     ///< the box or ball, used when `solid` is empty
     geometry::SolidPtr<Dim> solid = nullptr;  ///< any other solid (host only)
     /// A box holding `solid`, kept for mayContain (infinite, the default: not known).
     geometry::Bounds<Dim> solidBounds{};
@@ -36,7 +36,7 @@ struct PlacedShape {
     /// A box that holds every point inside (infinite components for an unbounded solid).
     geometry::Bounds<Dim> bounds() const {
         if (solid) return solid->bounds();
-        if (shape.type == Shape<Dim>::Type::BOX) return {shape.min, shape.max};
+        if (shape.type == BoxOrBall<Dim>::Type::BOX) return {shape.min, shape.max};
         const Vector<Dim> r = Vector<Dim>::filled(shape.radius);
         return {shape.center - r, shape.center + r};
     }

@@ -14,7 +14,7 @@
 namespace num::sph {
 
 template <int Dim>
-struct Shape {
+struct BoxOrBall {
     using Vec = Vector<Dim>;
     enum class Type { BOX, BALL };
 
@@ -23,13 +23,13 @@ struct Shape {
     Vec center{};      // ball centre
     Float radius = 0;  // ball radius
 
-    static Shape box(const Vec& lo, const Vec& hi) {
-        Shape s;
+    static BoxOrBall box(const Vec& lo, const Vec& hi) {
+        BoxOrBall s;
         s.type = Type::BOX, s.min = lo, s.max = hi;
         return s;
     }
-    static Shape ball(const Vec& c, Float r) {
-        Shape s;
+    static BoxOrBall ball(const Vec& c, Float r) {
+        BoxOrBall s;
         s.type = Type::BALL, s.center = c, s.radius = r;
         return s;
     }

@@ -1,8 +1,8 @@
-// The "csv" format: the fluid particles as CSV, a file per output time (io/writers.hpp).
-#include "io/writer_registry.hpp"
-#include "io/writers.hpp"
+// The "csv" format: the fluid particles as CSV, a file per output time (app/writers.hpp).
+#include "app/writer_registry.hpp"
+#include "app/writers.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -27,4 +27,4 @@ class CsvWriter final : public IWriter<Dim> {
 
 void csvFormat(WriterRegistry& registry) { registry.add<CsvWriter>("csv"); }
 
-}  // namespace num::io
+}  // namespace num::app

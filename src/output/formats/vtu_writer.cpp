@@ -1,12 +1,12 @@
-// The "vtu" format: a binary VTU file per output time (io/writers.hpp), the .pvd series that
+// The "vtu" format: a binary VTU file per output time (app/writers.hpp), the .pvd series that
 // lists them with their times, and a ParaView script that opens the series.
 #include <algorithm>
 #include <cmath>
 
-#include "io/writer_registry.hpp"
-#include "io/writers.hpp"
+#include "app/writer_registry.hpp"
+#include "app/writers.hpp"
 
-namespace num::io {
+namespace num::app {
 
 namespace {
 
@@ -57,4 +57,4 @@ class VtuWriter final : public IWriter<Dim> {
 
 void vtuFormat(WriterRegistry& registry) { registry.add<VtuWriter>("vtu"); }
 
-}  // namespace num::io
+}  // namespace num::app

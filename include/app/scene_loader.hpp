@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// The largest scene file read [bytes].
 inline constexpr std::size_t kMaxSceneBytes = std::size_t(16) << 20;
@@ -51,4 +51,4 @@ Scene<Dim> readScene(const SceneDocument& doc);
 template <int Dim>
 void checkSceneGeometry(const Scene<Dim>& scene);
 
-}  // namespace num::io
+}  // namespace num::app

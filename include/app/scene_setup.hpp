@@ -1,5 +1,5 @@
 // From a checked Scene to what the engine runs: run settings, the fluid model (with heat and
-// buoyancy terms), the geometry and the initial particles (emitters: io/emitters.hpp).
+// buoyancy terms), the geometry and the initial particles (emitters: app/emitters.hpp).
 #pragma once
 
 #include <map>
@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 #include "sph/fluid_model.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 struct SceneSetup {
@@ -38,4 +38,4 @@ SceneSetup<Dim> makeSceneSetup(const Scene<Dim>& scene, int threads,
 template <int Dim>
 sph::Storage<Dim> makeInitialStorage(const Scene<Dim>& scene, SceneSetup<Dim>& setup);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "io/scene.hpp"
+#include "app/scene.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Offsets from an emitter's centre to the lattice points across its nozzle (spacing dx): a row
 /// across the direction in 2D, the points of a square lattice within the radius in 3D.
@@ -26,4 +26,4 @@ struct Nozzle {
 template <int Dim>
 Nozzle<Dim> openNozzle(const Scene<Dim>& scene, std::size_t i);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,5 +1,5 @@
-// Everything a run writes per output time, through its writers (io/output_writer.hpp): the
-// formats of output.formats by name (io/writer_registry.hpp: VTU with its .pvd series and a
+// Everything a run writes per output time, through its writers (app/output_writer.hpp): the
+// formats of output.formats by name (app/writer_registry.hpp: VTU with its .pvd series and a
 // ParaView script, CSV, and those plugins add), the pictures (PNG, and at the end an MP4 by
 // ffmpeg when it is installed) and the probes (a row of probes.csv at each probe time,
 // output.probes_every, and at the end their plot by scripts/plot_series.py).
@@ -9,15 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "io/fields.hpp"
-#include "io/file.hpp"
-#include "io/output_writer.hpp"
-#include "io/render.hpp"
-#include "io/scene_setup.hpp"
-#include "io/writer_registry.hpp"
-#include "io/writers.hpp"
+#include "app/fields.hpp"
+#include "app/file.hpp"
+#include "app/output_writer.hpp"
+#include "app/render.hpp"
+#include "app/scene_setup.hpp"
+#include "app/writer_registry.hpp"
+#include "app/writers.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 class PicturesWriter;
@@ -84,4 +84,4 @@ class Outputs {
 /// Whether an executable is on the PATH.
 bool onPath(const std::string& program);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace num::io {
+namespace num::app {
 
 /// Exit codes of fluid_sim and fluid_sim_3d.
 enum class ExitCode : int {
@@ -46,4 +46,4 @@ inline AppError sceneError(const std::string& file, const std::string& path,
     return AppError(code, m);
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "io/scene_setup.hpp"
+#include "app/scene_setup.hpp"
 #include "parallel/communicator.hpp"
 #include "sph/kernel_choice.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Water's kernel sum above which a nozzle point counts as occupied (see WaterAt).
 inline constexpr double kOccupiedFraction = 0.4;
@@ -72,4 +72,4 @@ class Emitters {
     std::vector<std::string> warnings_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

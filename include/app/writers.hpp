@@ -5,9 +5,9 @@
 #include <utility>
 #include <vector>
 
-#include "io/fields.hpp"
+#include "app/fields.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Writes all particles as VTK_VERTEX cells of an UnstructuredGrid with the given point data
 /// (vectors padded to 3 components), the time in FieldData "TimeValue".
@@ -48,4 +48,4 @@ class PvdSeries {
     std::vector<std::pair<double, std::string>> entries_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

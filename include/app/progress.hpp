@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <string>
 
-#include "io/formatted.hpp"
+#include "app/formatted.hpp"
 
-namespace num::io {
+namespace num::app {
 
 class Progress {
   public:
@@ -62,4 +62,4 @@ class Progress {
     Clock::time_point start_, last_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -10,16 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "app/errors.hpp"
+#include "app/expression.hpp"
 #include "geometry/solid.hpp"
-#include "io/errors.hpp"
-#include "io/expression.hpp"
 #include "spatial/vec.hpp"
 #include "sph/bodies/rigid_body.hpp"
 #include "sph/boundary/side_boundary.hpp"
 #include "sph/boundary/wall_boundary.hpp"
 #include "sph/defaults.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// The largest sound speed a scene may give or derive [m/s] ("auto" is 10 times the velocity
 /// scale, so physics.max_speed is at most a tenth of it).
@@ -65,8 +65,8 @@ struct SceneShape {
         if (shape == ShapeKind::SOLID)
             p.solid = solid, p.solidBounds = solid->bounds();
         else
-            p.shape = shape == ShapeKind::BOX ? sph::Shape<Dim>::box(min, max)
-                                              : sph::Shape<Dim>::ball(center, radius);
+            p.shape = shape == ShapeKind::BOX ? sph::BoxOrBall<Dim>::box(min, max)
+                                              : sph::BoxOrBall<Dim>::ball(center, radius);
         return p;
     }
 };
@@ -150,7 +150,7 @@ struct OutputSpec {
     /// Seconds of simulated time between probe samples (output.probes_every); empty: the
     /// default, probeInterval(). Probes sample at the first step that reaches each multiple.
     std::optional<double> probesEvery;
-    /// Names of writers (io/writer_registry.hpp), each listed once, in the scene's order.
+    /// Names of writers (app/writer_registry.hpp), each listed once, in the scene's order.
     std::vector<std::string> formats = {"vtu"};
     bool images = true, video = true;
     int imageWidth = 960;
@@ -236,4 +236,4 @@ inline const char* sideName(int axis, int high) {
     return names[axis][high];
 }
 
-}  // namespace num::io
+}  // namespace num::app

@@ -1,6 +1,6 @@
 // The output formats by name: one table from which the scene's output.formats is checked, its
 // error text lists the names, and Outputs<Dim> makes the writers. The built-in formats ("vtu",
-// "csv") are in builtInWriters(); a plugin adds its own (io/plugin.hpp, addWriter).
+// "csv") are in builtInWriters(); a plugin adds its own (app/plugin.hpp, addWriter).
 #pragma once
 
 #include <functional>
@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "io/output_writer.hpp"
+#include "app/output_writer.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Makes a writer of dimension Dim for a run.
 template <int Dim>
@@ -67,4 +67,4 @@ template <int Dim>
 void checkOutputFormats(const std::string& file, const std::vector<std::string>& formats,
                         const WriterRegistry& writers);
 
-}  // namespace num::io
+}  // namespace num::app

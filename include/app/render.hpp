@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "io/image.hpp"
+#include "app/image.hpp"
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 struct RenderSettings {
@@ -23,4 +23,4 @@ struct RenderSettings {
 template <int Dim>
 Image renderParticles(const sph::Storage<Dim>& s, const RenderSettings<Dim>& r, double time);
 
-}  // namespace num::io
+}  // namespace num::app

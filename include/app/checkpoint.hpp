@@ -10,10 +10,10 @@
 #include <type_traits>
 #include <vector>
 
-#include "io/errors.hpp"
+#include "app/errors.hpp"
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Format version: 2 added the run's fingerprint, 3 the count of emitter points left out, 4 the
 /// moving bodies' states, 5 the books of the inlets and outlets.
@@ -105,4 +105,4 @@ void writeStorage(ByteWriter& w, const sph::Storage<Dim>& s);
 template <int Dim>
 sph::Storage<Dim> readStorage(ByteReader& r, const sph::Storage<Dim>& materials);
 
-}  // namespace num::io
+}  // namespace num::app

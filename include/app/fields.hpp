@@ -10,7 +10,7 @@
 
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 using sph::QuantityId;
 
@@ -80,4 +80,4 @@ std::vector<OutputField> outputFields(const sph::Storage<Dim>& s, const FieldNam
     return out;
 }
 
-}  // namespace num::io
+}  // namespace num::app

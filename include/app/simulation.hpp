@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
-#include "io/errors.hpp"
-#include "io/fields.hpp"
-#include "io/scene_loader.hpp"
+#include "app/errors.hpp"
+#include "app/fields.hpp"
+#include "app/scene_loader.hpp"
 #include "parallel/communicator.hpp"
 #include "sph/bodies/moving_bodies.hpp"
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 struct RunOptions {
     std::string program = "fluid_sim";
@@ -44,7 +44,7 @@ struct RunOptions {
 
 template <int Dim>
 class Simulation;
-/// Everything a run holds (internal to numerics_io: src/run/run_parts.hpp).
+/// Everything a run holds (internal to numerics_app: src/run/run_parts.hpp).
 template <int Dim>
 struct RunParts;
 
@@ -81,7 +81,7 @@ template <int Dim>
 class Simulation {
   public:
     /// Reads the scene, sets up the particles (or reads the checkpoint of options.restart) and
-    /// writes the first output. Errors are AppErrors (io/errors.hpp).
+    /// writes the first output. Errors are AppErrors (app/errors.hpp).
     Simulation(const SceneDocument& doc, const RunOptions& options);
     ~Simulation();
     Simulation(const Simulation&) = delete;
@@ -140,4 +140,4 @@ int runSimulation(const SceneDocument& doc, const RunOptions& options);
 /// Reads the scene document stored in a checkpoint (for --restart without a scene file).
 SceneDocument sceneOfCheckpoint(const std::string& path, int dimension);
 
-}  // namespace num::io
+}  // namespace num::app

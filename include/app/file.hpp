@@ -6,9 +6,9 @@
 #include <string>
 #include <string_view>
 
-#include "io/errors.hpp"
+#include "app/errors.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// An output file written to `<path>.tmp` and renamed to `path` by close(), so that a reader
 /// (and a full disk, a crash or a second Ctrl-C) never leaves a partial file under `path`.
@@ -64,4 +64,4 @@ class OutputLock {
     int fd_ = -1;
 };
 
-}  // namespace num::io
+}  // namespace num::app

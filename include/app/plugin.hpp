@@ -7,9 +7,9 @@
 // scene may name in output.formats). NUMERICS_PLUGIN writes
 // that function; a whole plugin is a term class and a few lines:
 //
-//     #include "io/plugin.hpp"
+//     #include "app/plugin.hpp"
 //     NUMERICS_PLUGIN(registry) {
-//         registry.add<MyTerm>("my_term", [](const num::io::plugin::Parameters& p) {
+//         registry.add<MyTerm>("my_term", [](const num::app::plugin::Parameters& p) {
 //             p.allow({"strength"});
 //             return std::tuple{p.positive("strength", "N/kg")};   // MyTerm<Dim>(strength)
 //         });
@@ -29,7 +29,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/writer_registry.hpp"
+#include "app/writer_registry.hpp"
 #include "sph/equation_term.hpp"
 
 /// The version of this header's classes; a plugin built against another version is refused.
@@ -39,7 +39,7 @@
 /// The symbol every plugin exports (as extern "C").
 #define NUMERICS_PLUGIN_ENTRY_NAME "numerics_plugin_entry"
 
-namespace num::io::plugin {
+namespace num::app::plugin {
 
 /// The parameters of one term of a scene: its JSON object (less the "term" key). Every read
 /// checks type and range; a mistake stops the app with the scene file and the key path, e.g.
@@ -110,7 +110,7 @@ class Registry {
     virtual void addField(const std::string& name, sph::QuantityId id, double lo, double hi,
                           const std::string& unit) = 0;
 
-    /// Registers a writer (io/output_writer.hpp) by name for 2D or 3D (a name may have both): a
+    /// Registers a writer (app/output_writer.hpp) by name for 2D or 3D (a name may have both): a
     /// scene that loads the plugin may name it in output.formats.
     virtual void addWriter2(const std::string& name, WriterFactory<2> factory) = 0;
     virtual void addWriter3(const std::string& name, WriterFactory<3> factory) = 0;
@@ -157,15 +157,15 @@ class Registry {
 /// The signature of numerics_plugin_entry.
 using EntryFunction = int (*)(int hostVersion, Registry* registry);
 
-}  // namespace num::io::plugin
+}  // namespace num::app::plugin
 
 /// Defines the plugin's entry point; the braces that follow register its terms and writers:
 ///     NUMERICS_PLUGIN(registry) { registry.add<MyTerm>("my_term", read); }
 #define NUMERICS_PLUGIN(registry)                                                              \
-    static void numericsPluginRegister(::num::io::plugin::Registry& registry);                 \
+    static void numericsPluginRegister(::num::app::plugin::Registry& registry);                \
     extern "C" __attribute__((visibility("default"))) int numerics_plugin_entry(               \
-        int hostVersion, ::num::io::plugin::Registry* host) {                                  \
+        int hostVersion, ::num::app::plugin::Registry* host) {                                 \
         if (hostVersion == NUMERICS_PLUGIN_API_VERSION && host) numericsPluginRegister(*host); \
         return NUMERICS_PLUGIN_API_VERSION;                                                    \
     }                                                                                          \
-    static void numericsPluginRegister(::num::io::plugin::Registry& registry)
+    static void numericsPluginRegister(::num::app::plugin::Registry& registry)

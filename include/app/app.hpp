@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "io/fields.hpp"
+#include "app/fields.hpp"
 
-namespace num::io {
+namespace num::app {
 
 struct AppInfo {
     std::string name;          ///< program name
@@ -25,4 +25,4 @@ int listScenes(const std::string& dir, const AppInfo& info);
 template <int Dim>
 int runApp(int argc, char** argv, const AppInfo& info);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -9,7 +9,7 @@
 #include "sph/choice_table.hpp"
 #include "sph/fluid_model.hpp"
 
-namespace num::io {
+namespace num::app {
 
 inline constexpr std::array densityTable{
     sph::Choice<std::optional<sph::DensityMode>>{
@@ -26,4 +26,4 @@ inline std::optional<sph::DensityMode> densityFromName(const std::string& name) 
     return densityTable[sph::chooseIndex(densityTable, "density", name)].value;
 }
 
-}  // namespace num::io
+}  // namespace num::app

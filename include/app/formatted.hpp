@@ -1,4 +1,4 @@
-// Text of numbers for messages, reports and files: one printf-style formatter for the io
+// Text of numbers for messages, reports and files: one printf-style formatter for the app
 // library, so that every message formats numbers the same way and no caller sizes a buffer.
 #pragma once
 
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-namespace num::io {
+namespace num::app {
 
 /// The text std::printf(format, ...) would print, e.g. formatted("%.3g s", t); never cut short.
 [[gnu::format(printf, 1, 2)]] inline std::string formatted(const char* format, ...) {
@@ -21,4 +21,4 @@ namespace num::io {
     return text;
 }
 
-}  // namespace num::io
+}  // namespace num::app

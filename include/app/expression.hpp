@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace num::io {
+namespace num::app {
 
 struct ExpressionError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -34,4 +34,4 @@ class Expression {
     std::shared_ptr<Impl> impl_;
 };
 
-}  // namespace num::io
+}  // namespace num::app

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace num::io {
+namespace num::app {
 
 struct Rgb {
     std::uint8_t r = 0, g = 0, b = 0;
@@ -52,4 +52,4 @@ class Image {
 /// Writes the image as an 8-bit RGB PNG (AppError OUTPUT on failure).
 void writePng(const std::string& path, const Image& image);
 
-}  // namespace num::io
+}  // namespace num::app

@@ -9,7 +9,7 @@
 #include "sph/kernel_choice.hpp"
 #include "sph/storage.hpp"
 
-namespace num::io {
+namespace num::app {
 
 template <int Dim>
 struct Conservation {
@@ -102,4 +102,4 @@ std::vector<double> probe(const sph::Storage<Dim>& s, const sph::RunKernel<Dim>&
     return sum;
 }
 
-}  // namespace num::io
+}  // namespace num::app

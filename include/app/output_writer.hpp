@@ -1,6 +1,6 @@
 // One kind of output file of a run: the interface every writer implements (the formats of the
 // scene's output.formats, the pictures, the probes), what it is made with, and what the end of a
-// run reports. io/writer_registry.hpp finds the formats by name.
+// run reports. app/writer_registry.hpp finds the formats by name.
 #pragma once
 
 #include <memory>
@@ -8,11 +8,11 @@
 #include <utility>
 #include <vector>
 
-#include "io/fields.hpp"
-#include "io/formatted.hpp"
-#include "io/writers.hpp"
+#include "app/fields.hpp"
+#include "app/formatted.hpp"
+#include "app/writers.hpp"
 
-namespace num::io {
+namespace num::app {
 
 /// Where a writer writes and what it may use of the run (the same for every writer of a run).
 struct WriterContext {
@@ -62,7 +62,7 @@ class IWriter {
     /// up to t.
     virtual void resume(double /*t*/, const OutputSeries& /*series*/) {}
     /// Output number `index` (0 at t = 0) at time t: every particle, and the fields to write
-    /// (io/fields.hpp).
+    /// (app/fields.hpp).
     virtual void write(const sph::Storage<Dim>& s, const std::vector<OutputField>& fields, double t,
                        int index) = 0;
     /// The end of the run (`completed`: it reached its end time); notes its files in `end`.
@@ -74,4 +74,4 @@ class IWriter {
     virtual const PvdSeries* series() const { return nullptr; }
 };
 
-}  // namespace num::io
+}  // namespace num::app

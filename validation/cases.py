@@ -1393,17 +1393,12 @@ case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.0
 # outlet; 872ef69) -> regression bound 0.30 (times 1.5).
 CYLINDER_CI_BOUND = 0.30
 CYLINDER_MISS = (
-    "c_D is 6.1 % low at D / dx = 20 and 19.4 % at 10. PySPH's own inlet and outlet on this set-up "
-    "(validation/pysph_cylinder_inlet_re20.py, EDAC) meets the gate, +5.0 % at D / dx = 10 and +2.8 % at 20. "
-    "The cause is the particle shifting: within a kernel support of a wall or body it moves particles along "
-    "it only, and at the front stagnation point they then crowd against the surface (at D / dx = 10 a mean gap "
-    "of 0.2 dx against 0.5 dx without shifting) at a pressure 100 Pa below their neighbours', so the wall "
-    "pressure and the drag are low. Measured at D / dx = 10 (t = 2 to 3 s; c_D error, front-back pressure "
-    "difference against 117.5 Pa): without shifting +0.5 %, 116 Pa; without shifting within a kernel support "
-    "of walls -2.2 %, 126 Pa (-2.3 % at D / dx = 20), but then the lid-driven cavity at Re 100 misses its "
-    "gate (0.038 against 0.03) and natural convection at Ra 1e4 too (v_max 4.3 % against 3 %); shifting away "
-    "from walls allowed -9 %, cavity 0.049; exact surface normals -18 %; a fifth of the shift -20 %; "
-    "density by summation -7 %. The default keeps the shifting the cavity and the convection need.")
+    "c_D is 6.1 % low at D / dx = 20 and 19.4 % at 10; PySPH's inlet and outlet on this set-up "
+    "(validation/pysph_cylinder_inlet_re20.py, EDAC) meets the gate, +2.8 % at 20. The cause is the particle "
+    "shifting along walls (docs/physics.md): at the front stagnation point the particles crowd against the "
+    "surface at a pressure about 100 Pa below their neighbours', so the wall pressure and the drag are low. "
+    "Without shifting near walls c_D is 2.3 % low at D / dx = 20, but the lid-driven cavity (Re 100) and "
+    "natural convection (Ra 1e4) then miss their gates, so the default keeps it.")
 case("cylinder_re20", "cylinder_re20.json", cylinder_benchmark, 0.005, [0.01, 0.005],
      (0.01, [CYLINDER_CI_BOUND]), issue=48, miss_note=CYLINDER_MISS,
      shared_cores=True)
@@ -1453,10 +1448,8 @@ PIPE_CI_BOUNDS = [0.052, 0.40, None]
 case("cylinder_re100", "cylinder_re100.json", cylinder_shedding, 0.01, [0.01], (0.01, None),
      gates="Schaefer & Turek 1996, 2D-2", not_in_ci="minutes at D / dx = 10", shared_cores=True,
      miss_note="At D / dx = 10 the wake does not shed as the benchmark's: the lift's spectrum peaks at St 0.55 "
-     "against 0.30, and the mean c_D is 1.37 against about 3.2 (the steady 2D-1 flow at this spacing is 19 % "
-     "low), from the particle shifting at walls (see cylinder_re20): without shifting within a kernel support "
-     "of walls the mean c_D is 3.29 but St 0.60 and the largest c_D 5.6. Finer spacings (D / dx = 20: about "
-     "30 min on 2 cores) and a peer on this set-up were not run.")
+     "against 0.30, and the mean c_D is 1.37 against about 3.2, low for the reason cylinder_re20 gives. Finer "
+     "spacings (D / dx = 20: about 30 min on 2 cores) and a peer on this set-up were not run.")
 case("pipe_inflow_3d", "pipe_inflow_3d.json", pipe_flow, 0.0005, [0.001, 0.0005], (0.001, PIPE_CI_BOUNDS),
      gates="the source each check names", details=True, shared_cores=True,
      note="The pipe is a wall (the difference of a box and a cylinder); where it meets the inlet's side its "

@@ -107,6 +107,15 @@ class CudaExecution {
         if (debug_) completed("cub::DeviceReduce::Max");
         return fetchResult();
     }
+    /// Run to run deterministic on one GPU (CUB's reduction tree is fixed by n and the device).
+    double sumOf(const double* v, Index n) {
+        if (n == 0) return 0;
+        std::size_t bytes = 0;
+        check(cub::DeviceReduce::Sum(nullptr, bytes, v, result_, int(n)), "DeviceReduce::Sum");
+        check(cub::DeviceReduce::Sum(temp(bytes), bytes, v, result_, int(n)), "DeviceReduce::Sum");
+        if (debug_) completed("cub::DeviceReduce::Sum");
+        return fetchResult();
+    }
     double minOf(const double* v, Index n) {
         if (n == 0) return std::numeric_limits<double>::infinity();
         std::size_t bytes = 0;

@@ -72,6 +72,12 @@ class HostExecution {
         for (Index i = 0; i < n; ++i) m = std::max(m, v[i]);
         return m;
     }
+    /// The sum of v[0 .. n-1] in index order; 0 for n = 0.
+    double sumOf(const double* v, Index n) {
+        double s = 0;
+        for (Index i = 0; i < n; ++i) s += v[i];
+        return s;
+    }
     /// The smallest of v[0 .. n-1]; +infinity for n = 0.
     double minOf(const double* v, Index n) {
         double m = std::numeric_limits<double>::infinity();

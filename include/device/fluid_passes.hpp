@@ -42,6 +42,8 @@ struct Arrays {
     Float *T, *dT, *dTOld, *Tb, *heatSource;
     int *material, *condition;
     const DeviceMaterial* materials;  // the material table
+    // The heat books' powers of each particle [W]: a fixed temperature's -m c dT/dt, m s.
+    Float *fixedPower, *sourcePower;
     // Rebuilt by each evaluation.
     Float *volume, *pOverRho2, *mu, *inverseWAtSpacing;
     char *active, *atSurface;
@@ -69,6 +71,13 @@ struct Gather {  // to[k] = from[order[k]]
 };
 
 template <class T>
+struct Fill {
+    T* to;
+    T value;
+    NUMERICS_HD void operator()(Index k) const { to[k] = value; }
+};
+
+template <class T>
 struct Scatter {  // to[origin[k]] = from[k]: back to the storage's order
     const T* from;
     T* to;
@@ -88,6 +97,30 @@ struct DensityFloorPass {
                                 w0))
             return;
         d.rho[i] = sph::formulas::surfaceDensityFloor(d.rho[i], surfaceRhoMin);
+    }
+};
+
+/// Density by summation (terms/summation_density.hpp): rho_i = sum_j m_j W_ij over every
+/// neighbour and i itself, fluid particles only, before the equation of state reads it. i's own
+/// term comes before its first neighbour of a higher index: in the CPU's order of increasing j
+/// where the grid visits the sorted particles in increasing order (no periodic wrap).
+template <int Dim, class Kernel>
+struct SummationDensityPass {
+    Arrays<Dim> d;
+    GridShape<Dim> grid;
+    const Index *start, *end;
+    sph::KernelValue<Kernel> kernelValue;
+    NUMERICS_HD void operator()(Index i) const {
+        if (d.kind[i] != fluid) return;
+        const Float self = sph::formulas::summationDensityTerm(d.m[i], kernelValue.value(0.0));
+        Float sum = 0;
+        bool selfAdded = false;
+        forEachNeighbour<Dim>(
+            grid, d.x, start, end, i, [&](Index j, const Vector<Dim>&, double r2) {
+                if (!selfAdded && j > i) sum += self, selfAdded = true;
+                sum += sph::formulas::summationDensityTerm(d.m[j], kernelValue.value(hd::sqrt(r2)));
+            });
+        d.rho[i] = selfAdded ? sum : sum + self;
     }
 };
 
@@ -185,6 +218,7 @@ struct FluidGather {
     sph::KernelValue<Kernel> kernelValue;
     Float laplacianEta2, inverseR2Eta2;
     Float deltaCoefficient, alphaC0h;
+    bool continuityOn;  // false: density by summation, no rate
     bool laminar;
     Vec gravityTerm;  // rho0 g / c0^2 of delta-SPH's hydrostatic part (or zero)
     Vec g;            // the body force
@@ -240,7 +274,7 @@ struct FluidGather {
             if (!fluidj) wallDirection += grad * vj;
             for (int b = 0; b < Dim; ++b) gradV[b] += f::velocityGradientTerm<Dim>(dv, vj, grad[b]);
         });
-        d.drho[i] = continuity + diffusion;
+        d.drho[i] = continuityOn ? continuity + diffusion : 0.0;
         Vec a = pressure + artificial + viscous;
         f::addBodyForce<Dim>(a, g);
         if (buoyancy) {
@@ -256,7 +290,7 @@ struct FluidGather {
 
 /// Heat conduction (terms/heat_conduction.hpp) of every particle that is not adiabatic, in one
 /// gather over its neighbours, then the thermal conditions (boundary/thermal_walls.hpp): a
-/// fixed temperature holds, a heat source adds s / c.
+/// fixed temperature holds, a heat source adds s / c; each particle's power for the books.
 template <int Dim, class Kernel>
 struct HeatPass {
     Arrays<Dim> d;
@@ -286,7 +320,10 @@ struct HeatPass {
                         d.m[b], f::heatExchange(ka, kb, rhoA, d.rho[b], Ta, Tb, laplacian), invCa);
                 });
         }
-        if (condA == fixedTemperature)
+        const bool fixed = condA == fixedTemperature;
+        d.fixedPower[a] = fixed ? -(d.m[a] * ma.heatCapacity * sum) : 0.0;
+        d.sourcePower[a] = fixed ? 0.0 : d.m[a] * d.heatSource[a];
+        if (fixed)
             sum = 0;
         else if (d.heatSource[a] != 0)
             sum += d.heatSource[a] / ma.heatCapacity;

@@ -65,7 +65,8 @@ FluidStepConfig<Dim> makeFluidStepConfig(const sph::FluidModel<Dim>& model,
         c.periodic[k] = geometry.domain.periodic[k];
     }
     c.walls = boundaries;
-    c.deltaCoefficient = model.deltaSph > 0
+    c.summation = model.density == sph::DensityMode::SUMMATION;
+    c.deltaCoefficient = model.deltaSph > 0 && !c.summation
                              ? sph::formulas::deltaSphCoefficient(model.deltaSph, c.eos.c0, c.h)
                              : 0.0;
     c.deltaHydrostatic = model.deltaSphHydrostatic;
@@ -127,8 +128,12 @@ ParticleArrays<Dim> particleArrays(const sph::Storage<Dim>& s) {
     p.x.assign(x.begin(), x.end()), p.v.assign(v.begin(), v.end()), p.a.assign(a.begin(), a.end());
     p.m = detail::valuesOr<Float>(s, QuantityId::MASS, 0.0);
     p.rho = detail::valuesOr<Float>(s, QuantityId::DENSITY, 0.0);
-    const auto drho = s.template getDt<Float>(QuantityId::DENSITY);
-    p.drho.assign(drho.begin(), drho.end());
+    if (s.order(QuantityId::DENSITY) >= sph::OrderEnum::FIRST) {
+        const auto drho = s.template getDt<Float>(QuantityId::DENSITY);
+        p.drho.assign(drho.begin(), drho.end());
+    } else {  // density by summation: no rate
+        p.drho.assign(s.size(), 0.0);
+    }
     p.p = detail::valuesOr<Float>(s, QuantityId::PRESSURE, 0.0);
     p.nu = detail::valuesOr<Float>(s, FluidId::KINEMATIC_VISCOSITY, 0.0);
     p.kernelSum = detail::valuesOr<Float>(s, FluidId::KERNEL_SUM, 1.0);
@@ -165,7 +170,8 @@ void copyBack(const ParticleArrays<Dim>& p, sph::Storage<Dim>& s) {
     copy(p.v, s.template getDt<Vec>(QuantityId::POSITION));
     copy(p.a, s.template getD2t<Vec>(QuantityId::POSITION));
     copy(p.rho, s.template getValue<Float>(QuantityId::DENSITY));
-    copy(p.drho, s.template getDt<Float>(QuantityId::DENSITY));
+    if (s.order(QuantityId::DENSITY) >= sph::OrderEnum::FIRST)
+        copy(p.drho, s.template getDt<Float>(QuantityId::DENSITY));
     detail::store(s, QuantityId::PRESSURE, p.p);
     detail::store(s, FluidId::KERNEL_SUM, p.kernelSum);
     detail::store(s, FluidId::SURFACE_NEIGHBOURS, p.surfaceNeighbours);

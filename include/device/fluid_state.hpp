@@ -41,6 +41,7 @@ struct FluidStepConfig {
     bool tensionLimit = false;
     Float surfaceRhoMin = 0, surfacePMin = 0;  ///< f rho0 and p(f rho0)
     // Terms.
+    bool summation = false;      ///< density by summation (no continuity, no delta-SPH)
     bool walls = false;          ///< the wall condition (any wall or body)
     Float deltaCoefficient = 0;  ///< 2 delta h c0; 0: no delta-SPH
     bool deltaHydrostatic = false;
@@ -96,6 +97,12 @@ struct StepMaxima {
     Float diffusivity = 0;    ///< max k / (rho c) of the particles that conduct (conduction on)
 };
 
+/// The heat books' powers of an evaluation [W] (boundary/thermal_walls.hpp's WallHeatBooks).
+struct HeatPowers {
+    Float fixed = 0;   ///< given by fixed-temperature particles to the others
+    Float source = 0;  ///< added by heat sources and flux walls
+};
+
 }  // namespace num::device
 
 namespace num::device {
@@ -114,6 +121,8 @@ class IDeviceFluid {
     virtual void evaluate(Float t) = 0;
     /// The maxima of the time-step criteria at the current state.
     virtual StepMaxima maxima() = 0;
+    /// The heat books' powers at the last evaluation (zero without conduction).
+    virtual HeatPowers heatPowers() = 0;
     /// The leapfrog from t to t + dt: kick-drift, evaluate at t + dt, kick.
     virtual void advance(Float t, Float dt) = 0;
     /// The post-step phase of a step of dt: shifting, containment.

@@ -6,6 +6,7 @@
 //   the constraints: wrap periodic positions; the density floor at free surfaces
 //   -> cell keys, sort, permute every array, cell ranges
 //   -> viscosity pass (temperature-dependent viscosity): nu = nu(T) of every particle
+//   -> summation pass (density by summation): rho = sum_j m_j W_ij of the fluid particles
 //   -> fluid pass:  p = max(p(rho), p_b - T_max); the pressure floor at free surfaces
 //   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles, walls and
 //                   bodies, gather fluid); with conduction the temperature a fixed-temperature
@@ -101,7 +102,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
           heatSource_(exec),
           material_(exec),
           condition_(exec),
-          materials_(exec) {
+          materials_(exec),
+          fixedPower_(exec),
+          sourcePower_(exec) {
         for (int b = 0; b < Dim; ++b) gradV_.emplace_back(exec);
         if (!c_.bodies.empty()) bodies_.upload(c_.bodies);
         if (c_.heat() && !c_.materials.empty()) materials_.upload(c_.materials);
@@ -128,7 +131,11 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             T_.upload(s.T), dT_.upload(s.dT), Tb_.upload(s.Tb), heatSource_.upload(s.heatSource);
             material_.upload(s.material), condition_.upload(s.condition), dTOld_.resize(n_);
         }
-        if (heat_ && c_.conduction) maxima_[3].resize(n_);
+        if (heat_ && c_.conduction) {
+            maxima_[3].resize(n_), fixedPower_.resize(n_), sourcePower_.resize(n_);
+            exec_.forEach(n_, passes::Fill<double>{fixedPower_.data(), 0.0});
+            exec_.forEach(n_, passes::Fill<double>{sourcePower_.data(), 0.0});
+        }
     }
 
     void download(ParticleArrays<Dim>& s) override {
@@ -161,11 +168,14 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             c_.deltaHydrostatic && c_.bodyForce
                 ? sph::formulas::deltaSphGravityTerm<Dim>(g, c_.eos.rho0, c_.eos.c0)
                 : Vec{};
-        exec_.forEach(
-            n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin, c_.tensionLimit});
         sph::withKernel<Dim>(c_.kernel, [&](auto kernel) {
             using K = decltype(kernel);
             const sph::KernelValue<K> value(c_.h);
+            if (c_.summation)
+                exec_.forEach(n_, passes::SummationDensityPass<Dim, K>{
+                                      d, grid_.grid(), grid_.start(), grid_.end(), value});
+            exec_.forEach(n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
+                                                     c_.tensionLimit});
             if (c_.walls)
                 exec_.forEach(
                     n_, passes::WallPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(), value,
@@ -175,7 +185,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
                 n_, passes::FluidGather<Dim, K>{
                         d, grid_.grid(), grid_.start(), grid_.end(), sph::GradientFactor<K>(c_.h),
                         value, c_.laplacianEta2, c_.inverseR2Eta2, c_.deltaCoefficient, c_.alphaC0h,
-                        c_.laminar, gravityTerm, g, heat_ && c_.buoyancy});
+                        !c_.summation, c_.laminar, gravityTerm, g, heat_ && c_.buoyancy});
             if (heat_ && c_.conduction)
                 exec_.forEach(
                     n_, passes::HeatPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(),
@@ -196,6 +206,11 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         return m;
     }
 
+    HeatPowers heatPowers() override {
+        if (!(heat_ && c_.conduction)) return {};
+        return {exec_.sumOf(fixedPower_.data(), n_), exec_.sumOf(sourcePower_.data(), n_)};
+    }
+
     void advance(Float t, Float dt) override {
         exec_.forEach(n_, passes::KickDrift<Dim>{arrays(), dt});
         evaluate(t + dt);
@@ -207,7 +222,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         passes::PostStep<Dim> post{arrays(),
                                    c_.shifting,
                                    c_.shiftingNormalToWalls,
-                                   true,
+                                   !c_.summation,
                                    c_.contain,
                                    c_.shiftingCoefficient * c_.h * c_.eos.c0 * dt,
                                    0.1 * c_.h,
@@ -239,6 +254,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
              tempIndex_.bytes() + active_.bytes() + atSurface_.bytes() + bodies_.bytes();
         for (const auto* f : {&T_, &dT_, &dTOld_, &Tb_, &heatSource_}) b += f->bytes();
         b += material_.bytes() + condition_.bytes() + materials_.bytes();
+        b += fixedPower_.bytes() + sourcePower_.bytes();
         return b;
     }
     const char* execution() const override { return Exec::name(); }
@@ -280,6 +296,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         d.Tb = Tb_.data(), d.heatSource = heatSource_.data();
         d.material = material_.data(), d.condition = condition_.data();
         d.materials = materials_.data();
+        d.fixedPower = fixedPower_.data(), d.sourcePower = sourcePower_.data();
         return d;
     }
 
@@ -339,6 +356,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     Buffer<Float, Exec> T_, dT_, dTOld_, Tb_, heatSource_;
     Buffer<int, Exec> material_, condition_;
     Buffer<DeviceMaterial, Exec> materials_;
+    Buffer<Float, Exec> fixedPower_, sourcePower_;  // each particle's, for the heat books
     std::vector<unsigned char> tempHost_;
     std::vector<Index> originHost_;
 };

@@ -23,7 +23,7 @@ struct RunState {
     std::vector<std::pair<double, std::string>> series;
     std::vector<double> bodies;    ///< the moving bodies' states (MovingBodies::save); or empty
     std::vector<double> flow;      ///< the inlets' and outlets' books (FlowBooks::save); or empty
-    std::vector<double> wallHeat;  ///< the walls' heat books (ThermalBoundary::saveBooks); or empty
+    std::vector<double> wallHeat;  ///< the walls' heat books (WallHeatBooks::save); or empty
 
     void write(ByteWriter& w) const {
         w.put(time), w.put(steps), w.put(outputIndex), w.put(checkpointCount);

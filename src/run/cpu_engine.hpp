@@ -38,8 +38,9 @@ class CpuEngine final : public IEngine<Dim> {
     void setAbandonCheck(std::function<bool()> check) override {
         solver_.setAbandonCheck(std::move(check));
     }
-    sph::ThermalBoundary<Dim>* wallHeat() const override {
-        return solver_.equations().template find<sph::ThermalBoundary<Dim>>();
+    sph::WallHeatBooks* wallHeat() override {
+        auto* walls = solver_.equations().template find<sph::ThermalBoundary<Dim>>();
+        return walls ? &walls->books() : nullptr;
     }
     double meanNeighbours() const override { return solver_.meanNeighbours(); }
     std::string backend() const override { return backend_; }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -39,7 +40,6 @@ bool runsOnCuda(const Scene<Dim>& scene, const RunOptions& opt) {
 template <int Dim>
 std::pair<std::string, std::string> keyNotOnCuda(const Scene<Dim>& scene,
                                                  const SceneSetup<Dim>& setup) {
-    if (!scene.emitters.empty()) return {"emitters", "a scene with emitters"};
     if (!scene.walls.empty()) return {"walls", "a wall inside the domain"};
     if (const std::string key = firstGeneralShapeKey(scene); !key.empty())
         return {key, "a shape other than a box or a ball"};
@@ -47,7 +47,6 @@ std::pair<std::string, std::string> keyNotOnCuda(const Scene<Dim>& scene,
         for (int hi = 0; hi < 2; ++hi) {
             const std::string side = std::string("boundaries.") + sideName(k, hi) + ".type \"" +
                                      scene.sides[k][hi]->type() + "\"";
-            if (scene.sides[k][hi]->letsFluidOut()) return {side, "an open side"};
             if (setup.model.flowBoundaries && setup.geometry.hasWall(k, hi) &&
                 !setup.geometry.isSolidWall(k, hi))
                 return {side, "inlets and outlets"};
@@ -59,9 +58,6 @@ std::pair<std::string, std::string> keyNotOnCuda(const Scene<Dim>& scene,
         return {"time.integrator \"" + scene.integrator + "\"", "this integrator"};
     if (sph::evaluationFromName(scene.evaluation) == sph::Evaluation::SYMMETRIC)
         return {"particles.evaluation \"symmetric\"", "the symmetric evaluation"};
-    if (setup.model.density == sph::DensityMode::SUMMATION)
-        return {"physics.density \"" + scene.physics.density + "\" (density by summation here)",
-                "density by summation"};
     return {"", ""};
 }
 
@@ -134,18 +130,21 @@ inline std::string cudaDeviceText() {
 
 /// The device engine: the steps on the GPU (or, for tests, on the host execution), the
 /// particles copied to the host's storage only when asked (outputs, probes, checkpoints, the
-/// end, a front end) and sent up again when the host changed them. It keeps no heat books of
-/// walls and counts no neighbours.
+/// end, a front end) and sent up again when the host changed them. It keeps the heat books of
+/// walls from the powers each step's last evaluation measured, and counts no neighbours.
 template <int Dim>
 class DeviceEngine final : public IEngine<Dim> {
   public:
     DeviceEngine(sph::Storage<Dim>& storage, const SceneSetup<Dim>& setup, double t0)
-        : storage_(storage), run_(makeCudaRun(setup, t0)) {}
+        : storage_(storage), run_(makeCudaRun(setup, t0)) {
+        if (setup.model.heat.conduction) books_.emplace();
+    }
 
     const sph::StepClock& clock() const override { return *run_; }
     void prime() override {
         run_->upload(storage_, false);
         run_->prime();
+        measureHeat();
         run_->download(storage_);
     }
     void resume(double t, sph::Size steps) override {
@@ -155,7 +154,10 @@ class DeviceEngine final : public IEngine<Dim> {
     double allowedStep() override { return run_->timeStepLimits().dt(); }
     double step(double target) override {
         hostCurrent_ = false;
-        return run_->step(target);
+        const double dt = run_->step(target);
+        measureHeat();
+        if (books_) books_->book(dt);
+        return dt;
     }
     void copyToHost() override {
         if (!hostCurrent_) run_->download(storage_);
@@ -163,12 +165,13 @@ class DeviceEngine final : public IEngine<Dim> {
     }
     bool hostCurrent() const override { return hostCurrent_; }
     void takeWrittenParticles() override { run_->upload(storage_, false); }
-    void takeNewParticleSet() override { run_->upload(storage_, false); }
+    // The host's rates are those of the current time (the CPU engine steps on with them too).
+    void takeNewParticleSet() override { run_->upload(storage_, true); }
     void setDecomposition(sph::IDecomposition<Dim>*) override {
         throw std::logic_error("the CUDA back end runs on one process");
     }
     void setAbandonCheck(std::function<bool()>) override {}  // a step on the GPU runs to its end
-    sph::ThermalBoundary<Dim>* wallHeat() const override { return nullptr; }
+    sph::WallHeatBooks* wallHeat() override { return books_ ? &*books_ : nullptr; }
     double meanNeighbours() const override { return 0; }
     std::string backend() const override { return "cuda"; }
     void describe(nlohmann::json& summary, std::size_t particles) const override {
@@ -179,8 +182,15 @@ class DeviceEngine final : public IEngine<Dim> {
     }
 
   private:
+    void measureHeat() {
+        if (!books_) return;
+        const device::HeatPowers powers = run_->fluid().heatPowers();
+        books_->measured(powers.fixed, powers.source);
+    }
+
     sph::Storage<Dim>& storage_;
     std::unique_ptr<device::DeviceRun<Dim>> run_;
+    std::optional<sph::WallHeatBooks> books_;  // with conduction
     bool hostCurrent_ = true;
 };
 

@@ -45,8 +45,8 @@ class IEngine {
     virtual void setDecomposition(sph::IDecomposition<Dim>* decomposition) = 0;
     /// Abandons a step in progress when check() is true (Ctrl-C), where the engine can.
     virtual void setAbandonCheck(std::function<bool()> check) = 0;
-    /// The books of the heat walls and bodies gave, or nullptr where the engine keeps none.
-    virtual sph::ThermalBoundary<Dim>* wallHeat() const = 0;
+    /// The books of the heat walls and bodies gave, or nullptr without conduction.
+    virtual sph::WallHeatBooks* wallHeat() = 0;
     /// The mean number of neighbours at the last evaluation (0 where not counted).
     virtual double meanNeighbours() const = 0;
     /// summary.json's `backend`: the CPU's (threads, omp, seq, tbb) or "cuda".

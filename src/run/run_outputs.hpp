@@ -137,7 +137,7 @@ class CheckpointObserver final : public IStepObserver<Dim> {
         r.emitterBlocked = p.emitters->blocked();
         if (const auto& bodies = p.setup->model.movingBodies) r.bodies = bodies->save();
         if (const auto& flow = p.setup->model.flowBoundaries) r.flow = flow->books.save();
-        if (const auto* walls = p.engine->wallHeat()) r.wallHeat = walls->saveBooks();
+        if (const auto* walls = p.engine->wallHeat()) r.wallHeat = walls->save();
         if (p.root()) r.series = p.outputs->series().entries();
         return r;
     }

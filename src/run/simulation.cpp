@@ -112,15 +112,15 @@ void restoreBodiesAndFlow(RunParts<Dim>& p, const std::string& file) {
                 [&](const std::vector<double>& v) { flow->books.restore(v); });
 }
 
-/// The walls' heat books at the checkpoint's time (once the engine is made). An engine that
-/// keeps none (the device) ignores them; a checkpoint it wrote holds none.
+/// The walls' heat books at the checkpoint's time (once the engine is made); a checkpoint of a
+/// run with conduction that holds none starts them at zero.
 template <int Dim>
 void restoreWallHeat(RunParts<Dim>& p, const std::string& file) {
     auto* walls = p.engine->wallHeat();
     const bool conduction = p.setup->model.heat.conduction;
     if (conduction && (!walls || p.state.wallHeat.empty())) return;
     restorePart(walls != nullptr, p.state.wallHeat, "heat books of walls", file,
-                [&](const std::vector<double>& v) { walls->restoreBooks(v); });
+                [&](const std::vector<double>& v) { walls->restore(v); });
 }
 
 /// The state and particles of the checkpoint options.restart names.

@@ -268,6 +268,21 @@ TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithHeat3D) {
         heatedDamBreak<3>(ThermalCondition::ADIABATIC, ThermalCondition::CONDUCTING));
 }
 
+/// The dam break with density by summation (no continuity, no delta-SPH; the shifting moves no
+/// density).
+template <int Dim>
+Case<Dim> summationDamBreak() {
+    Case<Dim> c = damBreak<Dim>();
+    c.model.density = DensityMode::SUMMATION;
+    return c;
+}
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithDensityBySummation2D) {
+    compareOneEvaluation(summationDamBreak<2>());
+}
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithDensityBySummation3D) {
+    compareOneEvaluation(summationDamBreak<3>());
+}
+
 /// The CPU run and the device step's run over the same steps.
 template <int Dim>
 void compareShortRun(const Case<Dim>& c, int steps) {
@@ -328,6 +343,9 @@ TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRunWithHeat3D) {
 }
 TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRunWithAHeater) {
     compareShortRun(heatedFromBelow(), 20);
+}
+TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRunWithDensityBySummation) {
+    compareShortRun(summationDamBreak<2>(), 20);
 }
 /// Conduction fast enough that the diffusion limit sets the step: the same limit, the same
 /// steps.

@@ -176,8 +176,8 @@ TEST(BoundaryGather, SkippingBoundaryParticlesChangesNoResult) {
     ASSERT_NE(books2, nullptr);
     skipping.postStep(skipped, 0.0, 1e-4);
     gathering.postStep(all, 0.0, 1e-4);
-    EXPECT_GT(books1->heatFromFixed(), 0.0);
-    EXPECT_EQ(books1->heatFromFixed(), books2->heatFromFixed());
+    EXPECT_GT(books1->books().heatFromFixed(), 0.0);
+    EXPECT_EQ(books1->books().heatFromFixed(), books2->books().heatFromFixed());
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ TEST(HeatBodies, FixedTemperatureBodyWarmsWaterWithEnergyBalance) {
     EXPECT_LT(farMax, Twater + 0.01 * (Tbody - Twater));
     // Energy balance: the heat the body gave (trapezoidal books) is what the water gained, to
     // round-off of the sums (relative 1e-10).
-    const double given = c.boundary->heatFromFixed();
+    const double given = c.boundary->books().heatFromFixed();
     EXPECT_GT(given, 0);
     EXPECT_NEAR(waterGain, given, 1e-10 * given);
 
@@ -120,5 +120,5 @@ TEST(HeatBodies, ConductingBodyExchangesAndConservesHeat) {
     EXPECT_LE(waterMax, bodyMax);
     // Nothing fixed, no source: sum m c T is conserved to round-off.
     EXPECT_NEAR(totalHeat(s), heat0, 1e-12 * heat0);
-    EXPECT_EQ(c.boundary->heatFromFixed(), 0.0);
+    EXPECT_EQ(c.boundary->books().heatFromFixed(), 0.0);
 }

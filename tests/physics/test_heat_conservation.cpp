@@ -111,5 +111,5 @@ TEST(HeatConservation, FluxWallAddsExactlyItsPower) {
     const double added = totalHeat(s) - heat0;
     // Exact power q'' A = 50 W over t: the books and the particles agree to round-off.
     EXPECT_NEAR(added, flux * 1.0 * t, 1e-9 * heat0);
-    EXPECT_NEAR(boundary->heatFromSources(), flux * 1.0 * t, 1e-12 * flux * t);
+    EXPECT_NEAR(boundary->books().heatFromSources(), flux * 1.0 * t, 1e-12 * flux * t);
 }

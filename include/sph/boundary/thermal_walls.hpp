@@ -15,10 +15,10 @@
 // reference implementation of a heat source.
 //
 // Energy books (trapezoidal in time, as the leapfrog and predictor-corrector integrators
-// advance first-order quantities): heatFromFixed() is the heat fixed-temperature particles gave
-// to the others, heatFromSources() the heat the sources added; the total sum m c T of the
-// evolving particles changes by exactly their sum (to round-off). Each evaluation measures the
-// powers; the post-step phase books 0.5 (P_start + P_end) dt once per step, P_end the power of
+// advance first-order quantities, WallHeatBooks): heatFromFixed() is the heat fixed-temperature
+// particles gave to the others, heatFromSources() the heat the sources added; the total sum m c T
+// of the evolving particles changes by exactly their sum (to round-off). Each evaluation measures
+// the powers; the post-step phase books 0.5 (P_start + P_end) dt once per step, P_end the power of
 // the step's last evaluation.
 #pragma once
 
@@ -30,6 +30,45 @@
 #include "sph/equation_term.hpp"
 
 namespace num::sph {
+
+/// The heat fixed temperatures and sources gave, booked step by step with the trapezoidal rule
+/// from the powers each evaluation measured (the CPU's ThermalBoundary, the device engine).
+class WallHeatBooks {
+  public:
+    /// The powers of an evaluation [W]: fixed-temperature particles to the others, sources.
+    void measured(double fixedPower, double sourcePower) {
+        lastFixed_ = fixedPower, lastSource_ = sourcePower;
+        if (!started_) startFixed_ = fixedPower, startSource_ = sourcePower, started_ = true;
+    }
+    /// Books a step of dt: 0.5 (P_start + P_end) dt, P_end the last evaluation's power.
+    void book(double dt) {
+        fromFixed_ += 0.5 * (startFixed_ + lastFixed_) * dt;
+        fromSources_ += 0.5 * (startSource_ + lastSource_) * dt;
+        startFixed_ = lastFixed_, startSource_ = lastSource_;
+    }
+    /// Heat given by fixed-temperature particles to the others in the steps so far [J].
+    double heatFromFixed() const { return fromFixed_; }
+    /// Heat added by heat sources (and flux walls) in the steps so far [J].
+    double heatFromSources() const { return fromSources_; }
+    /// Power of the fixed-temperature particles and of the sources at the last evaluation [W].
+    double fixedPower() const { return lastFixed_; }
+    double sourcePower() const { return lastSource_; }
+    /// For a checkpoint: the heats so far and the powers the next step starts from.
+    std::vector<double> save() const {
+        return {fromFixed_, fromSources_, startFixed_, startSource_, double(started_)};
+    }
+    /// Throws std::invalid_argument on a vector that save() did not make.
+    void restore(const std::vector<double>& b) {
+        if (b.size() != 5) throw std::invalid_argument("holds no heat books of the walls");
+        fromFixed_ = b[0], fromSources_ = b[1], startFixed_ = b[2], startSource_ = b[3];
+        started_ = b[4] != 0;
+    }
+
+  private:
+    bool started_ = false;  // the powers at the start of the first step are known
+    double startFixed_ = 0, startSource_ = 0, lastFixed_ = 0, lastSource_ = 0;
+    double fromFixed_ = 0, fromSources_ = 0;
+};
 
 template <int Dim>
 class ThermalBoundary : public IEquationTerm<Dim> {
@@ -71,16 +110,10 @@ class ThermalBoundary : public IEquationTerm<Dim> {
                     dT[i] += src[i] / table[mat[i]].heatCapacity;
             }
         });
-        lastFixed_ = fixedPower, lastSource_ = sourcePower;
-        if (!started_) startFixed_ = fixedPower, startSource_ = sourcePower, started_ = true;
+        books_.measured(fixedPower, sourcePower);
     }
 
-    /// Books the step's heat with the trapezoidal rule.
-    void postStep(IScheduler&, Storage<Dim>&, Float, Float dt) override {
-        fromFixed_ += 0.5 * (startFixed_ + lastFixed_) * dt;
-        fromSources_ += 0.5 * (startSource_ + lastSource_) * dt;
-        startFixed_ = lastFixed_, startSource_ = lastSource_;
-    }
+    void postStep(IScheduler&, Storage<Dim>&, Float, Float dt) override { books_.book(dt); }
 
     /// The last pass: fixed temperatures hold against every term's dT/dt.
     TermAccess access() const override { return {.placement = PassPlacement::LAST}; }
@@ -116,29 +149,13 @@ class ThermalBoundary : public IEquationTerm<Dim> {
             if (select(i)) src[i] = flux * area / mass;
     }
 
-    /// Heat given by fixed-temperature particles to the others in the steps so far [J].
-    Float heatFromFixed() const { return fromFixed_; }
-    /// Heat added by heat sources (and flux walls) in the steps so far [J].
-    Float heatFromSources() const { return fromSources_; }
-    /// The books, for a checkpoint: the heats so far and the powers the next step starts from.
-    std::vector<double> saveBooks() const {
-        return {fromFixed_, fromSources_, startFixed_, startSource_, double(started_)};
-    }
-    /// Throws std::invalid_argument on a vector that saveBooks() did not make.
-    void restoreBooks(const std::vector<double>& b) {
-        if (b.size() != 5) throw std::invalid_argument("holds no heat books of the walls");
-        fromFixed_ = b[0], fromSources_ = b[1], startFixed_ = b[2], startSource_ = b[3];
-        started_ = b[4] != 0;
-    }
-    /// Power of the fixed-temperature particles and of the sources at the last evaluation [W].
-    Float fixedPower() const { return lastFixed_; }
-    Float sourcePower() const { return lastSource_; }
+    /// The heat books: what fixed temperatures and sources gave so far.
+    const WallHeatBooks& books() const { return books_; }
+    WallHeatBooks& books() { return books_; }
 
   private:
     ThermalCondition wallDefault_, bodyDefault_;
-    bool started_ = false;  // the powers at the start of the first step are known
-    Float startFixed_ = 0, startSource_ = 0, lastFixed_ = 0, lastSource_ = 0;
-    Float fromFixed_ = 0, fromSources_ = 0;
+    WallHeatBooks books_;
 };
 
 }  // namespace num::sph

@@ -218,17 +218,6 @@ struct Scene : ParticleSpec, TimeSpec, NumericsSpec {
     std::vector<std::string> warnings;  ///< likely mistakes that are still valid scenes
 };
 
-/// The key of the first fluid block or body whose shape is not a box or ball ("" if none): the
-/// CUDA back end takes boxes and balls only.
-template <int Dim>
-std::string firstGeneralShapeKey(const Scene<Dim>& s) {
-    for (std::size_t i = 0; i < s.fluids.size(); ++i)
-        if (s.fluids[i].shape == ShapeKind::SOLID) return "fluids[" + std::to_string(i) + "].shape";
-    for (std::size_t i = 0; i < s.bodies.size(); ++i)
-        if (s.bodies[i].shape == ShapeKind::SOLID) return "bodies[" + std::to_string(i) + "].shape";
-    return "";
-}
-
 /// Names of the sides of the box: the axis and its low or high end (x_min ... z_max), the same
 /// in 2D and 3D whatever the direction of gravity.
 inline const char* sideName(int axis, int high) {

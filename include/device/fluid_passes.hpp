@@ -124,19 +124,24 @@ struct SummationDensityPass {
     }
 };
 
-/// The equation of state and the pressure floor at free surfaces (fluid particles).
+/// The equation of state and the pressure floor at free surfaces (fluid particles); with density
+/// by summation the density floor there too (FreeSurfaceTensionLimit::initialize).
 template <int Dim>
 struct FluidPass {
     Arrays<Dim> d;
     sph::EquationOfState eos;
-    Float pMin, w0, surfacePMin;
-    bool tensionLimit;
+    Float pMin, w0, surfacePMin, surfaceRhoMin;
+    bool tensionLimit, densityFloor;
     NUMERICS_HD void operator()(Index i) const {
         if (d.kind[i] != fluid) return;
         Float p = sph::formulas::fluidPressure(eos, d.rho[i], pMin);
         if (tensionLimit &&
-            sph::atFreeSurface(d.kernelSum[i], sph::formulas::particleVolume(d.m[i], d.rho[i]), w0))
+            sph::atFreeSurface(d.kernelSum[i], sph::formulas::particleVolume(d.m[i], d.rho[i]),
+                               w0)) {
             p = sph::formulas::surfacePressureFloor(p, surfacePMin);
+            if (densityFloor)
+                d.rho[i] = sph::formulas::surfaceDensityFloor(d.rho[i], surfaceRhoMin);
+        }
         d.p[i] = p;
     }
 };
@@ -356,7 +361,7 @@ struct Kick {
 };
 
 /// The post-step phase: particle shifting, then containment in the box's walls and out of the
-/// solid bodies.
+/// solid bodies and the walls inside the domain.
 template <int Dim>
 struct PostStep {
     Arrays<Dim> d;
@@ -364,8 +369,10 @@ struct PostStep {
     Float diffusion, cap, w0;  // A h c0 dt, 0.1 h, W(0)
     Vector<Dim> lo, hi;
     bool wallLow[Dim], wallHigh[Dim];
-    const sph::BoxOrBall<Dim>* bodies;
-    int bodyCount;
+    const ContainmentSolid<Dim>* solids;  // the bodies, then the interior walls
+    int solidCount;
+    const geometry::FlatNode* flatNodes;
+    const double* flatValues;
     NUMERICS_HD void operator()(Index i) const {
         if (d.kind[i] != fluid) return;
         if (shifting && !sph::atFreeSurface(d.kernelSum[i], d.volume[i], w0) &&
@@ -381,8 +388,7 @@ struct PostStep {
             for (int k = 0; k < Dim; ++k)
                 sph::formulas::containInWalls(d.x[i][k], d.v[i][k], lo[k], hi[k], wallLow[k],
                                               wallHigh[k]);
-            for (int b = 0; b < bodyCount; ++b)
-                sph::formulas::containOutsideBody<Dim>(d.x[i], d.v[i], bodies[b]);
+            containOutsideSolids<Dim>(d.x[i], d.v[i], solids, solidCount, flatNodes, flatValues);
         }
     }
 };

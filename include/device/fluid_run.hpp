@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "device/containment_setup.hpp"
 #include "device/device_terms.hpp"
 #include "device/fluid_step_on.hpp"
 #include "sph/defaults.hpp"
@@ -34,8 +35,8 @@ std::string unsupported(const sph::FluidModel<Dim>& model, const sph::FluidGeome
         !term.empty())
         // A plugin's term is named `term "spring" (plugins.0.terms.0, libx.so)` already.
         return term.starts_with("term \"") ? term : "the equation term \"" + term + "\"";
-    if (!geometry.interiorWalls.empty()) return "walls inside the domain";
-    if (geometry.hasGeneralShapes()) return "shapes other than boxes and balls";
+    if (const std::string solid = firstSolidNotOnDevice(geometry); !solid.empty())
+        return "the mesh shape of " + solid;
     if (sph::evaluationFromName(settings.get<std::string>("evaluation")) ==
         sph::Evaluation::SYMMETRIC)
         return "symmetric evaluation";
@@ -57,7 +58,7 @@ FluidStepConfig<Dim> makeFluidStepConfig(const sph::FluidModel<Dim>& model,
     c.tensionLimit = model.freeSurfaceTensionLimit;
     c.surfaceRhoMin = model.freeSurfaceDensityFloor * c.eos.rho0;
     c.surfacePMin = c.eos.pressure(c.surfaceRhoMin);
-    bool boundaries = !geometry.bodies.empty();
+    bool boundaries = !geometry.bodies.empty() || !geometry.interiorWalls.empty();
     for (int k = 0; k < Dim; ++k) {
         c.wallLow[k] = geometry.hasWall(k, 0), c.wallHigh[k] = geometry.hasWall(k, 1);
         boundaries |= c.wallLow[k] || c.wallHigh[k];
@@ -76,7 +77,7 @@ FluidStepConfig<Dim> makeFluidStepConfig(const sph::FluidModel<Dim>& model,
     c.shiftingCoefficient = model.shiftingCoefficient;
     c.shiftingNormalToWalls = model.shiftingNormalToWalls;
     c.contain = model.containParticles && boundaries;
-    for (const sph::SolidBody<Dim>& body : geometry.bodies) c.bodies.push_back(body.shape);
+    c.solids = containmentSolids(geometry);
     c.bodyForce = model.bodyForce;
     c.conduction = model.heat.conduction;
     c.buoyancy = model.heat.buoyancy && bool(model.bodyForce);  // as makeHeatEquations

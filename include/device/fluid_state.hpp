@@ -9,6 +9,7 @@
 #include <functional>
 #include <vector>
 
+#include "device/containment.hpp"
 #include "sph/formulas/equation_of_state.hpp"
 #include "sph/formulas/fluid_particles.hpp"
 #include "sph/kernel_choice.hpp"
@@ -52,7 +53,7 @@ struct FluidStepConfig {
     bool shiftingNormalToWalls = false;
     bool contain = false;                         ///< containment in the box's walls
     bool wallLow[Dim] = {}, wallHigh[Dim] = {};   ///< which box sides are walls
-    std::vector<sph::BoxOrBall<Dim>> bodies;      ///< the solid bodies' shapes (containment)
+    ContainmentSolids<Dim> solids;                ///< the bodies and interior walls (containment)
     std::function<Vector<Dim>(Float)> bodyForce;  ///< empty: none
     // Heat (terms/heat_model.hpp).
     bool conduction = false;  ///< conduction with the thermal conditions of walls and bodies

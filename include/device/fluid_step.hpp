@@ -3,11 +3,12 @@
 // execution.hpp) between outputs, as structure of arrays sorted by cell at every evaluation.
 //
 // One evaluation at time t, as the CPU solver's (sph/solver.hpp with the fluid model's terms):
-//   the constraints: wrap periodic positions; the density floor at free surfaces
+//   the constraints: wrap periodic positions; the density floor at free surfaces (continuity)
 //   -> cell keys, sort, permute every array, cell ranges
 //   -> viscosity pass (temperature-dependent viscosity): nu = nu(T) of every particle
 //   -> summation pass (density by summation): rho = sum_j m_j W_ij of the fluid particles
-//   -> fluid pass:  p = max(p(rho), p_b - T_max); the pressure floor at free surfaces
+//   -> fluid pass:  p = max(p(rho), p_b - T_max); the pressure floor at free surfaces (with
+//                   summation the density floor too)
 //   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles, walls and
 //                   bodies, gather fluid); with conduction the temperature a fixed-temperature
 //                   boundary particle shows
@@ -21,7 +22,7 @@
 //                   then the thermal conditions (fixed temperature, heat sources)
 // The leapfrog of sph/timestepping.hpp (kick-drift, evaluate, kick; Heun for the density and
 // the temperature) and the post-step phase (particle shifting, containment in the box's walls
-// and out of the bodies) are passes too.
+// and out of the bodies and interior walls, of any shape but a mesh) are passes too.
 // Every formula is the shared one of sph/formulas/ (host and device).
 //
 // Order and round-off: a particle's neighbours come in the grid's order (device/
@@ -94,7 +95,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
           tempFloat_(exec),
           tempInt_(exec),
           tempIndex_(exec),
-          bodies_(exec),
+          solids_(exec),
+          flatNodes_(exec),
+          flatValues_(exec),
           T_(exec),
           dT_(exec),
           dTOld_(exec),
@@ -106,7 +109,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
           fixedPower_(exec),
           sourcePower_(exec) {
         for (int b = 0; b < Dim; ++b) gradV_.emplace_back(exec);
-        if (!c_.bodies.empty()) bodies_.upload(c_.bodies);
+        if (!c_.solids.solids.empty()) solids_.upload(c_.solids.solids);
+        if (!c_.solids.nodes.empty()) flatNodes_.upload(c_.solids.nodes);
+        if (!c_.solids.values.empty()) flatValues_.upload(c_.solids.values);
         if (c_.heat() && !c_.materials.empty()) materials_.upload(c_.materials);
     }
 
@@ -174,8 +179,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             if (c_.summation)
                 exec_.forEach(n_, passes::SummationDensityPass<Dim, K>{
                                       d, grid_.grid(), grid_.start(), grid_.end(), value});
-            exec_.forEach(n_, passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
-                                                     c_.tensionLimit});
+            exec_.forEach(n_,
+                          passes::FluidPass<Dim>{d, c_.eos, c_.pMin, c_.w0, c_.surfacePMin,
+                                                 c_.surfaceRhoMin, c_.tensionLimit, c_.summation});
             if (c_.walls)
                 exec_.forEach(
                     n_, passes::WallPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(), value,
@@ -231,8 +237,10 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
                                    c_.domainMax,
                                    {},
                                    {},
-                                   bodies_.data(),
-                                   int(c_.bodies.size())};
+                                   solids_.data(),
+                                   int(c_.solids.solids.size()),
+                                   flatNodes_.data(),
+                                   flatValues_.data()};
         for (int k = 0; k < Dim; ++k)
             post.wallLow[k] = c_.wallLow[k], post.wallHigh[k] = c_.wallHigh[k];
         exec_.forEach(n_, post);
@@ -251,7 +259,8 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             b += f->bytes();
         for (const auto& f : maxima_) b += f.bytes();
         b += kind_.bytes() + slip_.bytes() + tempInt_.bytes() + origin_.bytes() +
-             tempIndex_.bytes() + active_.bytes() + atSurface_.bytes() + bodies_.bytes();
+             tempIndex_.bytes() + active_.bytes() + atSurface_.bytes() + solids_.bytes();
+        b += flatNodes_.bytes() + flatValues_.bytes();
         for (const auto* f : {&T_, &dT_, &dTOld_, &Tb_, &heatSource_}) b += f->bytes();
         b += material_.bytes() + condition_.bytes() + materials_.bytes();
         b += fixedPower_.bytes() + sourcePower_.bytes();
@@ -269,7 +278,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             for (int k = 0; k < Dim; ++k) wrap.periodic[k] = c_.periodic[k];
             exec_.forEach(n_, wrap);
         }
-        if (c_.tensionLimit)
+        if (c_.tensionLimit && !c_.summation)  // with summation: after it (FluidPass)
             exec_.forEach(n_, passes::DensityFloorPass<Dim>{d, c_.w0, c_.surfaceRhoMin});
     }
 
@@ -351,7 +360,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     Buffer<Float, Exec> tempFloat_;
     Buffer<int, Exec> tempInt_;
     Buffer<Index, Exec> tempIndex_;
-    Buffer<sph::BoxOrBall<Dim>, Exec> bodies_;
+    Buffer<ContainmentSolid<Dim>, Exec> solids_;
+    Buffer<geometry::FlatNode, Exec> flatNodes_;
+    Buffer<double, Exec> flatValues_;
     bool heat_ = false;  // temperature on the device (the config's heat and the particles')
     Buffer<Float, Exec> T_, dT_, dTOld_, Tb_, heatSource_;
     Buffer<int, Exec> material_, condition_;

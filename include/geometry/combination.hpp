@@ -35,6 +35,8 @@ class Combination final : public Solid<Dim> {
         return how_ == Combine::DIFFERENCE && i > 0 ? -n : n;
     }
     Bounds<Dim> bounds() const override;
+    Combine how() const { return how_; }
+    const std::vector<SolidPtr<Dim>>& parts() const { return parts_; }
 
   private:
     /// The part that decides, and the distance.

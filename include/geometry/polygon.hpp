@@ -3,6 +3,7 @@
 // t about an open vertex list, in any dimension).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -31,6 +32,8 @@ class PolygonSet final : public Solid<2> {
     Bounds<2> bounds() const override { return bounds_; }
     /// Exact for one loop (Green's theorem, polygon.cpp); empty for several.
     std::optional<MassProperties<2>> massProperties() const override { return mass_; }
+    /// The edges (each from one vertex to the next of its loop), the loops' in order.
+    std::vector<std::array<Point<2>, 2>> edges() const;
 
   private:
     friend SolidPtr<2> polygon(const Loop& points);  ///< checks the outline with tree_
@@ -68,6 +71,8 @@ class Polyline final : public Solid<Dim> {
         return {b.min - Point<Dim>::filled(halfThickness_),
                 b.max + Point<Dim>::filled(halfThickness_)};
     }
+    const std::vector<Point<Dim>>& points() const { return points_; }
+    double halfThickness() const { return halfThickness_; }
 
   private:
     std::vector<Point<Dim>> points_;

@@ -33,6 +33,8 @@ class Ball final : public Solid<Dim> {
     std::optional<MassProperties<Dim>> massProperties() const override {
         return ballMassProperties(center_, radius_);
     }
+    const Point<Dim>& center() const { return center_; }
+    double radius() const { return radius_; }
 
   private:
     Point<Dim> center_;
@@ -61,6 +63,8 @@ class Box final : public Solid<Dim> {
     std::optional<MassProperties<Dim>> massProperties() const override {
         return boxMassProperties(min_, max_);
     }
+    const Point<Dim>& min() const { return min_; }
+    const Point<Dim>& max() const { return max_; }
 
   private:
     Point<Dim> min_, max_;
@@ -86,6 +90,9 @@ class HalfSpace final : public Solid<Dim> {
         }
         return b;
     }
+    const Point<Dim>& point() const { return point_; }
+    /// The unit outward normal.
+    const Point<Dim>& normal() const { return normal_; }
 
   private:
     Point<Dim> point_, normal_;

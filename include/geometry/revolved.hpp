@@ -49,6 +49,12 @@ class Cone final : public Solid<3> {
         return b;
     }
     std::optional<MassProperties<3>> massProperties() const override;
+    const Point<3>& base() const { return base_; }
+    /// The unit vector from base to top.
+    const Point<3>& axis() const { return axis_; }
+    double length() const { return length_; }
+    double baseRadius() const { return rBase_; }
+    double topRadius() const { return rTop_; }
 
   private:
     Point<3> base_, top_, axis_;

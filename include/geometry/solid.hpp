@@ -1,7 +1,7 @@
 // A solid region of space given by its signed distance: the one interface through which scenes
 // fill fluid volumes, place bodies and build walls of any shape (primitives, polygons, meshes and
-// their combinations, include/geometry/). Host only: the CUDA back end takes the box and ball
-// of sph/setup/shapes.hpp.
+// their combinations, include/geometry/). Virtual, so host only: the CUDA back end evaluates
+// them flattened into plain data (flat_solid.hpp), meshes excepted.
 #pragma once
 
 #include <limits>

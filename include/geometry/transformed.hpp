@@ -33,6 +33,10 @@ class Transformed final : public Solid<Dim> {
         if (!inner) return std::nullopt;
         return transformed(*inner, scale_, rotation_.rows(), translate_);
     }
+    const Solid<Dim>& inner() const { return *inner_; }
+    double scale() const { return scale_; }
+    const Rotation<Dim>& rotation() const { return rotation_; }
+    const Point<Dim>& translation() const { return translate_; }
 
   private:
     Point<Dim> toInner(const Point<Dim>& x) const {

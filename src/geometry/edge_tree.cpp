@@ -187,4 +187,10 @@ void EdgeTree::edgesNear(const Point<2>& p, const Point<2>& q, std::vector<int>&
     }
 }
 
+std::vector<PolygonEdge> EdgeTree::inputEdges() const {
+    std::vector<PolygonEdge> edges(edges_.size());
+    for (std::size_t k = 0; k < edges_.size(); ++k) edges[ids_[k]] = edges_[k];
+    return edges;
+}
+
 }  // namespace num::geometry::detail

@@ -34,6 +34,9 @@ class EdgeTree {
     /// the edges that touch or cross p-q, with rounding allowed for), in no particular order.
     void edgesNear(const Point<2>& p, const Point<2>& q, std::vector<int>& ids) const;
 
+    /// The edges, in the input's order.
+    std::vector<PolygonEdge> inputEdges() const;
+
   private:
     struct Node {
         Bounds<2> box;

@@ -128,6 +128,12 @@ double PolygonSet::signedDistance(const Point<2>& x) const {
     return tree_->oddCrossings(x) ? -d : d;
 }
 
+std::vector<std::array<Point<2>, 2>> PolygonSet::edges() const {
+    std::vector<std::array<Point<2>, 2>> edges;
+    for (const detail::PolygonEdge& e : tree_->inputEdges()) edges.push_back({e.a, e.b});
+    return edges;
+}
+
 SolidPtr<2> polygon(const Loop& points) {
     if (points.size() < 3)
         throw GeometryError("a polygon needs 3 points or more, found " +

@@ -40,20 +40,19 @@ bool runsOnCuda(const Scene<Dim>& scene, const RunOptions& opt) {
 template <int Dim>
 std::pair<std::string, std::string> keyNotOnCuda(const Scene<Dim>& scene,
                                                  const SceneSetup<Dim>& setup) {
-    if (!scene.walls.empty()) return {"walls", "a wall inside the domain"};
-    if (const std::string key = firstGeneralShapeKey(scene); !key.empty())
-        return {key, "a shape other than a box or a ball"};
+    if (const std::string solid = device::firstSolidNotOnDevice(setup.geometry); !solid.empty())
+        return {solid + ".shape", "a mesh shape"};
     for (int k = 0; k < Dim; ++k)
         for (int hi = 0; hi < 2; ++hi) {
             const std::string side = std::string("boundaries.") + sideName(k, hi) + ".type \"" +
                                      scene.sides[k][hi]->type() + "\"";
             if (setup.model.flowBoundaries && setup.geometry.hasWall(k, hi) &&
                 !setup.geometry.isSolidWall(k, hi))
-                return {side, "inlets and outlets"};
+                return {side, "an inlet or outlet"};
         }
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
         if (scene.bodies[i].motion.type != sph::MotionType::FIXED)
-            return {"bodies[" + std::to_string(i) + "].motion", "moving bodies"};
+            return {"bodies[" + std::to_string(i) + "].motion", "a moving body"};
     if (scene.integrator != "leapfrog")
         return {"time.integrator \"" + scene.integrator + "\"", "this integrator"};
     if (sph::evaluationFromName(scene.evaluation) == sph::Evaluation::SYMMETRIC)

@@ -141,15 +141,13 @@ TEST(BadGeometry, ShapeInOtherUnitsIsAWarning) {
     EXPECT_TRUE(contains(r.output, "times larger than the domain")) << r.output;
 }
 
-TEST(BadGeometry, CudaBackendRefusesWallsAndGeneralShapes) {
-    json j = tiny2d();
-    j["walls"] = json::array({polygon({{0.12, 0.02}, {0.18, 0.02}, {0.15, 0.08}})});
-    expectMessage(runScene("cuda_walls", j, "--quiet --backend cuda"),
-                  {"--backend cuda", "walls", "CPU back end only"});
-    json k = tiny2d();
-    k["bodies"] = json::array({polygon({{0.12, 0.02}, {0.18, 0.02}, {0.15, 0.08}})});
-    expectMessage(runScene("cuda_shape", k, "--quiet --backend cuda"),
-                  {"--backend cuda", "bodies[0].shape", "a shape other than a box or a ball"});
+TEST(BadGeometry, CudaBackendRefusesMeshShapesByTheirKey) {
+    json j = tiny3d();
+    j["walls"] =
+        json::array({{{"shape", "mesh"}, {"file", "t.stl"}, {"translate", {0.1, 0.04, 0.04}}}});
+    expectMessage(
+        runScene("cuda_mesh", j, "--quiet --backend cuda", {{"t.stl", tetrahedron(true)}}),
+        {"--backend cuda", "walls[0].shape", "a mesh shape", "CPU back end only"});
 }
 
 TEST(BadGeometry, EmitterNozzleInsideAWall) {

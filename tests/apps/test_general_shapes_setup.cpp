@@ -114,7 +114,6 @@ TEST(GeneralShapes, FluidFillsItsShapeOutsideBodies) {
     SolidBody<2> body;
     body.solid = std::make_shared<RotatedSquare>(Vector<2>{{0.5, 0.5}}, 0.1, 0.9);
     g.bodies.push_back(body);
-    EXPECT_TRUE(g.hasGeneralShapes());
     const auto particles = generateParticles(g, 3);
     int fluid = 0, bodies = 0;
     for (const auto& p : particles) {

@@ -51,7 +51,6 @@ TEST(SceneShapes, BoxesAndBallsKeepTheirFastPath) {
     EXPECT_EQ(moved.bodies[0].shape, app::ShapeKind::SOLID);
     EXPECT_EQ(moved.fluids[0].shape, app::ShapeKind::SOLID);
     EXPECT_NEAR(moved.bodies[0].solid->signedDistance({{0.31, 0.1}}), -0.05, 1e-12);
-    EXPECT_EQ(app::firstGeneralShapeKey(moved), "fluids[0].shape");
 }
 
 TEST(SceneShapes, InteriorWallsTakeVelocitySlipAndThermalCondition) {

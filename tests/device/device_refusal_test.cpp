@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "device/fluid_run.hpp"
+#include "geometry/primitives.hpp"
 
 namespace {
 
@@ -65,12 +66,29 @@ TEST(DeviceRefusal, RunsDensityBySummation) {
     EXPECT_EQ(refusal(m), "");
 }
 
-TEST(DeviceRefusal, RefusesGeometryItDoesNotRead) {
+TEST(DeviceRefusal, RunsWallsInsideTheDomain) {
     FluidGeometry<2> g = tank();
     InteriorWall<2> wall;
     wall.shape = BoxOrBall<2>::box({{0.7, 0}}, {{0.8, 0.2}});
     g.interiorWalls.push_back(wall);
-    EXPECT_EQ(refusal(water(), g), "walls inside the domain");
+    wall.solid = std::make_shared<geometry::Ball<2>>(Vector<2>{{0.2, 0.8}}, 0.1);
+    g.interiorWalls.push_back(wall);
+    EXPECT_EQ(refusal(water(), g), "");
+}
+
+/// A solid the device cannot evaluate (as a triangle mesh): refused by its place in the scene.
+class Blob : public geometry::Solid<2> {
+  public:
+    double signedDistance(const geometry::Point<2>& x) const override { return norm(x) - 0.1; }
+    geometry::Bounds<2> bounds() const override { return {}; }
+};
+
+TEST(DeviceRefusal, RefusesASolidItCannotEvaluateByItsPlace) {
+    FluidGeometry<2> g = tank();
+    InteriorWall<2> wall;
+    wall.solid = std::make_shared<Blob>();
+    g.interiorWalls.push_back(wall);
+    EXPECT_EQ(refusal(water(), g), "the mesh shape of walls[0]");
 }
 
 }  // namespace

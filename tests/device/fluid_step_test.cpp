@@ -17,6 +17,8 @@
 #include <numeric>
 
 #include "device/fluid_run.hpp"
+#include "geometry/combination.hpp"
+#include "geometry/primitives.hpp"
 #include "sph/timestepping.hpp"
 
 namespace {
@@ -371,21 +373,21 @@ TEST(DeviceFluidStep, TheDiffusionLimitIsTheCpuRunsLimit) {
 
 /// A fluid particle that ends a step inside a body is reflected out of it, its velocity into
 /// the body removed, by both engines alike.
-TEST(DeviceFluidStep, ContainmentKeepsFluidOutOfBodies) {
-    const Case<2> c = damBreak<2>(false, true);
+/// One step of the CPU run and the device step from particles where one fluid particle sits
+/// at `inside` in `solid` (a body or a wall of the case), moving into it: both reflect it out,
+/// the same way.
+void checkContainment(const Case<2>& c, const PlacedShape<2>& solid, const Vector<2>& inside) {
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
-    ASSERT_EQ(config.bodies.size(), 1u);
     ASSERT_TRUE(config.contain);
     Storage<2> storage = c.storage();
-    const BoxOrBall<2>& ball = c.geometry.bodies[0].shape;
     auto x = storage.getValue<Vector<2>>(QuantityId::POSITION);
     auto v = storage.getDt<Vector<2>>(QuantityId::POSITION);
     const auto kind = storage.getValue<int>(QuantityId::KIND);
     Size moved = 0;
     while (kind[moved] != int(ParticleKind::FLUID)) ++moved;
-    x[moved] = ball.center + Vector<2>{{0.3 * ball.radius, 0.2 * ball.radius}};
-    v[moved] = Vector<2>{{-1.0, -0.5}};  // into the body
-    ASSERT_LT(ball.signedDistance(x[moved]), 0);
+    x[moved] = inside;
+    v[moved] = Vector<2>{{-1.0, -0.5}};  // into the solid
+    ASSERT_LT(solid.signedDistance(x[moved]), 0);
     device::DeviceRun<2> deviceRun(std::make_unique<device::HostFluidStep<2>>(config), config);
     deviceRun.upload(storage, false);
     SequentialScheduler scheduler;
@@ -397,11 +399,43 @@ TEST(DeviceFluidStep, ContainmentKeepsFluidOutOfBodies) {
     Storage<2> fromDevice = storage;
     deviceRun.download(fromDevice);
     const ParticleArrays<2> cpu = stateOf(storage), dev = stateOf(fromDevice);
-    EXPECT_GE(ball.signedDistance(cpu.x[moved]), 0);
-    EXPECT_GE(ball.signedDistance(dev.x[moved]), 0);
-    EXPECT_GE(dot(dev.v[moved], ball.outwardNormal(dev.x[moved])), -1e-12);
+    EXPECT_GE(solid.signedDistance(cpu.x[moved]), 0);
+    EXPECT_GE(solid.signedDistance(dev.x[moved]), 0);
+    EXPECT_GE(dot(dev.v[moved], solid.outwardNormal(dev.x[moved])), -1e-12);
     EXPECT_LE(largestDifference(dev.x, cpu.x), 1e-9 * c.geometry.spacing);
     EXPECT_LE(largestDifference(dev.v, cpu.v), 1e-9 * largest(cpu.v));
+}
+
+TEST(DeviceFluidStep, ContainmentKeepsFluidOutOfBodies) {
+    const Case<2> c = damBreak<2>(false, true);
+    const BoxOrBall<2>& ball = c.geometry.bodies[0].shape;
+    checkContainment(c, c.geometry.bodies[0],
+                     ball.center + Vector<2>{{0.3 * ball.radius, 0.2 * ball.radius}});
+}
+
+/// The dam break with a wall inside the box of a general shape: a tilted plate with a round
+/// notch (a turned box minus a disc), flattened for the device.
+Case<2> damBreakWithATiltedWall() {
+    Case<2> c = damBreak<2>();
+    InteriorWall<2> wall;
+    const auto plate = geometry::rotatedBox<2>(Vector<2>{{0.55, 0.15}}, Vector<2>{{0.12, 0.03}},
+                                               geometry::Rotation<2>(geometry::Angles<2>{{23.0}}));
+    const auto notch = std::make_shared<geometry::Ball<2>>(Vector<2>{{0.62, 0.2}}, 0.04);
+    wall.solid = std::make_shared<geometry::Combination<2>>(
+        geometry::Combine::DIFFERENCE, std::vector<geometry::SolidPtr<2>>{plate, notch});
+    wall.solidBounds = wall.solid->bounds();
+    c.geometry.interiorWalls.push_back(wall);
+    return c;
+}
+
+TEST(DeviceFluidStep, ContainmentKeepsFluidOutOfAWallOfAnyShape) {
+    const Case<2> c = damBreakWithATiltedWall();
+    ASSERT_EQ(device::unsupported(c.model, c.geometry, c.settings), "");
+    checkContainment(c, c.geometry.interiorWalls[0], Vector<2>{{0.5, 0.13}});
+}
+
+TEST(DeviceFluidStep, AShortRunStaysCloseToTheCpuRunWithAWallOfAnyShape) {
+    compareShortRun(damBreakWithATiltedWall(), 20);
 }
 
 template <int Dim>

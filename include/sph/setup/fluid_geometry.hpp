@@ -1,8 +1,8 @@
 // What a fluid case is made of, as particles: the container box with its walls (or periodic
 // axes), fluid regions, solid bodies and walls inside the box. makeFluidStorage
 // (fluid_model.hpp) turns it into a Storage on one lattice of spacing dx. Regions, bodies and
-// walls are boxes or balls (BoxOrBall, which the CUDA back end takes too) or, on the host only, any
-// solid (PlacedShape::solid; include/geometry/).
+// walls are boxes or balls (BoxOrBall) or any solid (PlacedShape::solid; include/geometry/); the
+// CUDA back end flattens the solids of bodies and walls (device/containment.hpp).
 #pragma once
 
 #include <algorithm>
@@ -118,14 +118,6 @@ struct FluidGeometry {
         bool any = !bodies.empty() || !interiorWalls.empty();
         for (int k = 0; k < Dim; ++k) any |= hasWall(k, 0) || hasWall(k, 1);
         return any;
-    }
-    /// Whether a region, body or wall is a general solid (host only: not a box or ball).
-    bool hasGeneralShapes() const {
-        auto general = [](const auto& parts) {
-            return std::any_of(parts.begin(), parts.end(),
-                               [](const auto& p) { return p.isGeneral(); });
-        };
-        return general(fluid) || general(bodies) || general(interiorWalls);
     }
 };
 

@@ -1,7 +1,8 @@
-// Where a fluid region, a body or a wall is: a box or ball (BoxOrBall, plain data the CUDA back end
-// copies to the device) or, on the host, any solid of include/geometry/ (a polygon, a mesh, a
-// combination). The set-up, the checks and the containment ask the placed shape, never its
-// parts, so that boxes and balls keep their exact formulas and other solids use theirs.
+// Where a fluid region, a body or a wall is: a box or ball (BoxOrBall, plain data) or any solid of
+// include/geometry/ (a polygon, a mesh, a combination; the CUDA back end takes every one but a
+// mesh, flattened by geometry/flat_solid.hpp). The set-up, the checks and the containment ask the
+// placed shape, never its parts, so that boxes and balls keep their exact formulas and other solids
+// use theirs.
 #pragma once
 
 #include "geometry/solid.hpp"
@@ -12,7 +13,7 @@ namespace num::sph {
 template <int Dim>
 struct PlacedShape {
     BoxOrBall<Dim> shape;                     ///< the box or ball, used when `solid` is empty
-    geometry::SolidPtr<Dim> solid = nullptr;  ///< any other solid (host only)
+    geometry::SolidPtr<Dim> solid = nullptr;  ///< any other solid
     /// A box holding `solid`, kept for mayContain (infinite, the default: not known).
     geometry::Bounds<Dim> solidBounds{};
 

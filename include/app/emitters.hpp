@@ -52,6 +52,8 @@ class Emitters {
     /// Adds the layers due by time t, each lattice point of a layer unless `occupied` says that
     /// water is there; returns the number of particles added.
     std::size_t emit(sph::Storage<Dim>& storage, double t, const Occupied& occupied);
+    /// Whether emit(t) has a layer to add.
+    bool anyDue(double t) const;
     std::vector<std::uint64_t>& layers() { return layers_; }
     std::size_t emitted() const { return emitted_; }
     void setEmitted(std::size_t n) { emitted_ = n; }
@@ -62,6 +64,9 @@ class Emitters {
     const std::vector<std::string>& warnings() const { return warnings_; }
 
   private:
+    /// The layers emitter e has injected once emit(t) ran: the nozzle's travel over dx, plus one.
+    std::uint64_t layersDue(std::size_t e, double t) const;
+
     const Scene<Dim>& scene_;
     const SceneSetup<Dim>& setup_;
     std::vector<std::vector<sph::Vector<Dim>>> discs_;  ///< each nozzle's open lattice offsets

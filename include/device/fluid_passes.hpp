@@ -228,13 +228,14 @@ struct FluidGather {
     Vec gravityTerm;  // rho0 g / c0^2 of delta-SPH's hydrostatic part (or zero)
     Vec g;            // the body force
     bool buoyancy;    // Boussinesq buoyancy -beta (T - T0) g
+    /// A boundary particle's rates and sums: zero.
+    NUMERICS_HD void clear(Index i) const {
+        d.a[i] = Vec{}, d.drho[i] = 0, d.kernelSum[i] = 0, d.surfaceNeighbours[i] = 0;
+        d.gradC[i] = Vec{}, d.gradRho[i] = Vec{}, d.wallDirection[i] = Vec{};
+        for (int b = 0; b < Dim; ++b) d.gradV[b][i] = Vec{};
+    }
     NUMERICS_HD void operator()(Index i) const {
-        if (d.kind[i] != fluid) {
-            d.a[i] = Vec{}, d.drho[i] = 0, d.kernelSum[i] = 0, d.surfaceNeighbours[i] = 0;
-            d.gradC[i] = Vec{}, d.gradRho[i] = Vec{}, d.wallDirection[i] = Vec{};
-            for (int b = 0; b < Dim; ++b) d.gradV[b][i] = Vec{};
-            return;
-        }
+        if (d.kind[i] != fluid) return clear(i);
         namespace f = sph::formulas;
         const Vec vi = d.v[i], ui = d.u[i];
         const Float rhoi = d.rho[i], pr2i = d.pOverRho2[i], mui = d.mu[i];
@@ -390,6 +391,19 @@ struct PostStep {
                                               wallHigh[k]);
             containOutsideSolids<Dim>(d.x[i], d.v[i], solids, solidCount, flatNodes, flatValues);
         }
+    }
+};
+
+/// sign x_k of a fluid particle, -infinity for the others (the fluid's extent by a maximum).
+template <int Dim>
+struct FluidCoordinate {
+    const Vector<Dim>* x;
+    const int* kind;
+    int axis;
+    double sign;
+    double* out;
+    NUMERICS_HD void operator()(Index i) const {
+        out[i] = kind[i] == fluid ? sign * x[i][axis] : -HUGE_VAL;
     }
 };
 

@@ -36,7 +36,7 @@ std::string unsupported(const sph::FluidModel<Dim>& model, const sph::FluidGeome
         // A plugin's term is named `term "spring" (plugins.0.terms.0, libx.so)` already.
         return term.starts_with("term \"") ? term : "the equation term \"" + term + "\"";
     if (const std::string solid = firstSolidNotOnDevice(geometry); !solid.empty())
-        return "the mesh shape of " + solid;
+        return "the shape of " + solid + " (a mesh, or a solid flatten() does not take)";
     if (sph::evaluationFromName(settings.get<std::string>("evaluation")) ==
         sph::Evaluation::SYMMETRIC)
         return "symmetric evaluation";

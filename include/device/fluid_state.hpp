@@ -124,6 +124,8 @@ class IDeviceFluid {
     virtual StepMaxima maxima() = 0;
     /// The heat books' powers at the last evaluation (zero without conduction).
     virtual HeatPowers heatPowers() = 0;
+    /// The box that holds every fluid particle now.
+    virtual sph::FluidExtent<Dim> fluidExtent() = 0;
     /// The leapfrog from t to t + dt: kick-drift, evaluate at t + dt, kick.
     virtual void advance(Float t, Float dt) = 0;
     /// The post-step phase of a step of dt: shifting, containment.

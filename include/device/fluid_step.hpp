@@ -217,6 +217,20 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         return {exec_.sumOf(fixedPower_.data(), n_), exec_.sumOf(sourcePower_.data(), n_)};
     }
 
+    sph::FluidExtent<Dim> fluidExtent() override {
+        sph::FluidExtent<Dim> extent;
+        if (n_ == 0) return extent;
+        tempFloat_.resize(n_);
+        for (int k = 0; k < Dim; ++k)
+            for (const double sign : {1.0, -1.0}) {  // the largest of x_k, then of -x_k
+                exec_.forEach(n_, passes::FluidCoordinate<Dim>{x_.data(), kind_.data(), k, sign,
+                                                               tempFloat_.data()});
+                const double most = exec_.maxOf(tempFloat_.data(), n_);
+                (sign > 0 ? extent.max[k] : extent.min[k]) = sign * most;
+            }
+        return extent;
+    }
+
     void advance(Float t, Float dt) override {
         exec_.forEach(n_, passes::KickDrift<Dim>{arrays(), dt});
         evaluate(t + dt);

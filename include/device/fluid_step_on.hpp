@@ -23,6 +23,7 @@ class FluidStepOn final : public IDeviceFluid<Dim> {
     void evaluate(Float t) override { step_.evaluate(t); }
     StepMaxima maxima() override { return step_.maxima(); }
     HeatPowers heatPowers() override { return step_.heatPowers(); }
+    sph::FluidExtent<Dim> fluidExtent() override { return step_.fluidExtent(); }
     void advance(Float t, Float dt) override { step_.advance(t, dt); }
     void postStep(Float dt) override { step_.postStep(dt); }
     std::size_t size() const override { return step_.size(); }

@@ -1,6 +1,7 @@
 // Basic types of the SPH engine: precision, indices, quantity ids and derivative orders.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <span>
 
@@ -56,6 +57,16 @@ constexpr int kParticleKinds = 5;
 
 /// Whether a stored KIND is a fluid particle (not a wall or body).
 NUMERICS_HD_INLINE bool isFluid(int kind) { return kind == int(ParticleKind::FLUID); }
+
+/// The box that holds a set of particles (min > max for none).
+template <int Dim>
+struct FluidExtent {
+    Vector<Dim> min = Vector<Dim>::filled(HUGE_VAL), max = Vector<Dim>::filled(-HUGE_VAL);
+    NUMERICS_HD void add(const Vector<Dim>& x) {
+        for (int k = 0; k < Dim; ++k)
+            min[k] = x[k] < min[k] ? x[k] : min[k], max[k] = x[k] > max[k] ? x[k] : max[k];
+    }
+};
 
 /// Whether a stored KIND is an inlet's or an outlet's buffer particle.
 NUMERICS_HD_INLINE bool isBuffer(int kind) {

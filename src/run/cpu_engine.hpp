@@ -32,6 +32,14 @@ class CpuEngine final : public IEngine<Dim> {
     double step(double target) override { return run_.step(target); }
     void copyToHost() override {}
     bool hostCurrent() const override { return true; }
+    sph::FluidExtent<Dim> fluidExtent() override {
+        const auto x = storage_.template getValue<sph::Vector<Dim>>(sph::QuantityId::POSITION);
+        const auto kind = storage_.template getValue<int>(sph::QuantityId::KIND);
+        sph::FluidExtent<Dim> extent;
+        for (sph::Size i = 0; i < storage_.size(); ++i)
+            if (sph::isFluid(kind[i])) extent.add(x[i]);
+        return extent;
+    }
     void takeWrittenParticles() override {}
     void takeNewParticleSet() override { run_.particlesChanged(); }
     void setDecomposition(sph::IDecomposition<Dim>* d) override { solver_.setDecomposition(d); }

@@ -163,6 +163,7 @@ class DeviceEngine final : public IEngine<Dim> {
         hostCurrent_ = true;
     }
     bool hostCurrent() const override { return hostCurrent_; }
+    sph::FluidExtent<Dim> fluidExtent() override { return run_->fluid().fluidExtent(); }
     void takeWrittenParticles() override { run_->upload(storage_, false); }
     // The host's rates are those of the current time (the CPU engine steps on with them too).
     void takeNewParticleSet() override { run_->upload(storage_, true); }

@@ -96,6 +96,21 @@ Emitters<Dim>::Emitters(const Scene<Dim>& scene, const SceneSetup<Dim>& setup)
 }
 
 template <int Dim>
+std::uint64_t Emitters<Dim>::layersDue(std::size_t e, double t) const {
+    const Emitter<Dim>& em = scene_.emitters[e];
+    if (t < em.start) return 0;
+    const double te = std::min(t, em.end);
+    return std::uint64_t(std::floor((te - em.start) * em.speed / scene_.spacing)) + 1;
+}
+
+template <int Dim>
+bool Emitters<Dim>::anyDue(double t) const {
+    for (std::size_t e = 0; e < scene_.emitters.size(); ++e)
+        if (layersDue(e, t) > layers_[e]) return true;
+    return false;
+}
+
+template <int Dim>
 std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occupied& occupied) {
     const double dx = scene_.spacing;
     // The lattice points of every layer due, emitter by emitter.
@@ -105,8 +120,7 @@ std::size_t Emitters<Dim>::emit(sph::Storage<Dim>& storage, double t, const Occu
         firstPoint[e] = points.size();
         const Emitter<Dim>& em = scene_.emitters[e];
         if (t < em.start) continue;
-        const double te = std::min(t, em.end);
-        const auto due = std::uint64_t(std::floor((te - em.start) * em.speed / dx)) + 1;
+        const std::uint64_t due = layersDue(e, t);
         for (std::uint64_t k = layers_[e]; k < due; ++k) {
             const double travelled = (t - (em.start + double(k) * dx / em.speed)) * em.speed;
             for (const auto& off : discs_[e])

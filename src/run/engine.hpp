@@ -37,6 +37,8 @@ class IEngine {
     virtual void copyToHost() = 0;
     /// Whether the host's particles are those of the engine's time.
     virtual bool hostCurrent() const = 0;
+    /// The box that holds every fluid particle at the engine's time.
+    virtual sph::FluidExtent<Dim> fluidExtent() = 0;
     /// The host's particles were written between steps (a front end): the engine takes them.
     virtual void takeWrittenParticles() = 0;
     /// Particles were added or removed on the host (emitters, inlets, outlets, open sides).

@@ -90,17 +90,24 @@ class HealthObserver final : public IStepObserver<Dim> {
 };
 
 /// Open sides remove the fluid that leaves the domain; inlets and outlets exchange particles
-/// with the fluid; emitters add particles; either way the engine takes the new set.
+/// with the fluid; emitters add particles; either way the engine takes the new set. An engine
+/// whose particles are elsewhere (the GPU) copies them back only after a step that needs it:
+/// fluid beyond an open side, an emitter's layer due, inlets and outlets (every step).
 template <int Dim>
 class ParticleFlowObserver final : public IStepObserver<Dim> {
   public:
     explicit ParticleFlowObserver(const RunParts<Dim>& p)
         : active_(!p.scene.emitters.empty() || bool(p.setup->model.flowBoundaries) ||
                   anySideLetsFluidOut(p.scene)) {}
-    bool needsParticles(const Simulation<Dim>&) const override { return active_; }
+    bool needsParticles(const Simulation<Dim>& sim) const override {
+        const RunParts<Dim>& p = sim.parts();
+        if (!active_ || p.engine->hostCurrent() || p.setup->model.flowBoundaries) return active_;
+        return p.emitters->anyDue(sim.time()) ||
+               (anySideLetsFluidOut(p.scene) && fluidLeaves(p.scene, p.engine->fluidExtent()));
+    }
     void afterStep(Simulation<Dim>& sim) override {
-        if (!active_) return;
         RunParts<Dim>& p = sim.parts();
+        if (!active_ || !p.engine->hostCurrent()) return;
         bool changed = false;
         if (p.comm.any(removeOutflow(p.storage, p.scene) > 0)) {
             p.state.removed += std::uint64_t(p.comm.sum(p.owned - p.countOwned()));

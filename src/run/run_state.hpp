@@ -136,6 +136,17 @@ bool anySideLetsFluidOut(const Scene<Dim>& scene) {
     return anyOut;
 }
 
+/// Whether fluid within `extent` (the box holding every fluid particle) is beyond a side that
+/// lets fluid out: what removeOutflow removes.
+template <int Dim>
+bool fluidLeaves(const Scene<Dim>& scene, const sph::FluidExtent<Dim>& extent) {
+    for (int k = 0; k < Dim; ++k)
+        if ((scene.sides[k][0]->letsFluidOut() && extent.min[k] < scene.domainMin[k]) ||
+            (scene.sides[k][1]->letsFluidOut() && extent.max[k] > scene.domainMax[k]))
+            return true;
+    return false;
+}
+
 /// The sides' post-step sink: removes the fluid particles that left through a side that lets
 /// fluid out (ISideBoundary::markLeaving); returns how many.
 template <int Dim>

@@ -88,7 +88,8 @@ TEST(DeviceRefusal, RefusesASolidItCannotEvaluateByItsPlace) {
     InteriorWall<2> wall;
     wall.solid = std::make_shared<Blob>();
     g.interiorWalls.push_back(wall);
-    EXPECT_EQ(refusal(water(), g), "the mesh shape of walls[0]");
+    EXPECT_EQ(refusal(water(), g),
+              "the shape of walls[0] (a mesh, or a solid flatten() does not take)");
 }
 
 }  // namespace

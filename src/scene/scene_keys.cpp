@@ -1,5 +1,5 @@
 // Reading the scene sections that are objects of values from their key tables, and the tables'
-// docs (scene/scene_keys.hpp; the tables: scene_key_tables.cpp).
+// docs (scene/scene_keys.hpp; the tables: scene_key_tables.cpp, scene_key_tables_arrays.cpp).
 #include "scene/scene_keys.hpp"
 
 #include <cmath>
@@ -81,7 +81,7 @@ std::string docRange(const SceneKey<Spec>& k) {
 template <class Spec>
 std::string docDefault(const SceneKey<Spec>& k) {
     if (k.required) return "required";
-    if (k.type == KeyType::CUSTOM) return k.shownDefault;
+    if (k.type == KeyType::CUSTOM || *k.shownDefault) return k.shownDefault;
     std::string text;
     if (const bool* b = std::get_if<bool>(&k.fallback)) text = *b ? "true" : "false";
     if (const double* x = std::get_if<double>(&k.fallback)) text = detail::shortest(*x);
@@ -132,6 +132,10 @@ NUMERICS_SCENE_KEYS(NumericsSpec)
 NUMERICS_SCENE_KEYS(MaterialSpec)
 NUMERICS_SCENE_KEYS(PhysicsSpec)
 NUMERICS_SCENE_KEYS(OutputSpec)
+NUMERICS_SCENE_KEYS(EmitterInput<2>)
+NUMERICS_SCENE_KEYS(EmitterInput<3>)
+NUMERICS_SCENE_KEYS(ProbeInput<2>)
+NUMERICS_SCENE_KEYS(ProbeInput<3>)
 #undef NUMERICS_SCENE_KEYS
 
 }  // namespace num::app

@@ -1,11 +1,13 @@
 // The keys of the scene sections that are objects of values (particles, time, numerics,
-// materials, physics, output), each declared once: name, type, range, default, unit and
-// meaning. The reader reads and checks them from these tables, and docs/scenes.md's tables of
-// these sections are made from them (tests/apps/test_scene_key_docs.cpp fails when the two
-// differ). Internal to numerics_app.
+// materials, physics, output) and of the elements of the arrays `emitters` and `probes`, each
+// declared once: name, type, range, default, unit and meaning. The reader reads and checks them
+// from these tables, and docs/scenes.md's tables of these sections are made from them
+// (tests/apps/test_scene_key_docs.cpp fails when the two differ). Internal to numerics_app.
 #pragma once
 
+#include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <variant>
 #include <vector>
@@ -37,11 +39,35 @@ struct SceneKey {
     bool required = false;
     const char* defaultNote = "";  ///< after the default in the docs ("(no limit)")
     void (*read)(const detail::At& value, Spec& spec) = nullptr;  ///< CUSTOM
-    const char* shownDefault = "";                                ///< CUSTOM: the docs' default
+    /// The docs' default: a CUSTOM key's; another's where given, shown instead of the
+    /// fallback ("forever" for 1e300)
+    const char* shownDefault = "";
 };
 
 template <class Spec>
 using KeyTable = std::vector<SceneKey<Spec>>;
+
+/// An emitter as its keys are read: the emitter, and the materials its `material` must name.
+template <int Dim>
+struct EmitterInput : Emitter<Dim> {
+    const std::map<std::string, MaterialSpec>* materials = nullptr;
+};
+
+/// A probe as its keys are read: the probe, the names of the probes before it (a name is
+/// unique) and the probe's object.
+template <int Dim>
+struct ProbeInput : Probe<Dim> {
+    std::set<std::string>* names = nullptr;
+    const detail::At* at = nullptr;
+
+    /// A probe is exactly one of a point, a body, a wall or a side: checked before any of them or
+    /// the fields (whose choices depend on it) is read, and after all of them (none given).
+    void checkOneKind() const {
+        int kinds = 0;
+        for (const char* key : {"point", "body", "wall", "side"}) kinds += int(at->has(key));
+        if (kinds != 1) at->fail("one of a \"point\", a \"body\", a \"wall\" or a \"side\"");
+    }
+};
 
 const KeyTable<ParticleSpec>& particleKeys();
 const KeyTable<TimeSpec>& timeKeys();
@@ -49,6 +75,14 @@ const KeyTable<NumericsSpec>& numericsKeys();
 const KeyTable<MaterialSpec>& materialKeys();
 const KeyTable<PhysicsSpec>& physicsKeys();
 const KeyTable<OutputSpec>& outputKeys();
+template <int Dim>
+const KeyTable<EmitterInput<Dim>>& emitterKeys();  ///< each element of `emitters`
+template <int Dim>
+const KeyTable<ProbeInput<Dim>>& probeKeys();  ///< each element of `probes`
+
+/// The name of a material defined under "materials"; else fails, listing them (and the one
+/// likely meant).
+std::string materialName(const detail::At& a, const std::map<std::string, MaterialSpec>& materials);
 
 /// Reads section `at` (an object of only these keys) into `spec`; an absent key gets its default.
 template <class Spec>

@@ -1,6 +1,5 @@
 // readScene: every key of the scene format (docs/scenes.md) with its type, unit and range.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -40,17 +39,6 @@ const char* initialVariables() {
 template <int Dim>
 std::string initialMeaning() {
     return Dim == 2 ? "a 2D scene has the coordinates x and y only" : "";
-}
-
-std::string materialName(const At& a, const std::map<std::string, MaterialSpec>& materials) {
-    const std::string name = a.string();
-    if (materials.count(name)) return name;
-    std::vector<std::string> names;
-    std::string list;
-    for (const auto& [n, m] : materials) names.push_back(n), list += (list.empty() ? "" : ", ") + n;
-    const std::string guess = detail::closest(name, names);
-    a.fail("the name of a material defined under \"materials\" (" + list + ")",
-           guess.empty() ? "" : "did you mean \"" + guess + "\"?");
 }
 
 MaterialSpec readMaterial(const At& a, const std::string& name) {
@@ -374,21 +362,10 @@ void readWalls(const At& f, Scene<Dim>& s) {
 template <int Dim>
 Emitter<Dim> readEmitter(const At& e, std::size_t i,
                          const std::map<std::string, MaterialSpec>& materials) {
-    e.object({"name", "position", "direction", "speed", "radius", "material", "temperature",
-              "start", "end"},
-             {"position", "direction", "speed", "radius", "material"});
-    Emitter<Dim> em;
-    em.name = e.has("name") ? e["name"].string() : "emitter" + std::to_string(i);
-    em.position = readVec<Dim>(e["position"], "m");
-    em.direction = readVec<Dim>(e["direction"], "-");
-    if (!(norm(em.direction) > 0)) e["direction"].fail("a non-zero direction vector");
-    em.direction = em.direction / norm(em.direction);
-    em.speed = e["speed"].number(0, 1e4, true, "m/s");
-    em.radius = e["radius"].number(0, 1e300, true, "m");
-    em.material = materialName(e["material"], materials);
-    em.temperature = e.number("temperature", em.temperature, -273.15, 1e4, false, "degC");
-    em.start = e.number("start", 0, 0, 1e300, false, "s");
-    em.end = e.number("end", 1e300, 0, 1e300, false, "s");
+    EmitterInput<Dim> em;
+    em.materials = &materials;
+    em.name = "emitter" + std::to_string(i);
+    readKeys(e, emitterKeys<Dim>(), em);
     if (!(em.end > em.start)) e["end"].fail("an end time after the start time");
     return em;
 }
@@ -400,57 +377,20 @@ void readEmitters(const At& f, Scene<Dim>& s) {
         s.emitters.push_back(readEmitter<Dim>(f[i], i, s.materials));
 }
 
-/// Names only: they are checked against the writers once the plugins have added theirs
-/// (checkOutputFormats). A repeated name is kept once.
-/// A side's name ("x_min", ...) as 2 axis + high.
-template <int Dim>
-int sideIndex(const At& a) {
-    std::vector<std::string> names;
-    for (int k = 0; k < 2 * Dim; ++k) names.push_back(sideName(k / 2, k % 2));
-    const std::string name = a.choice(names);
-    return int(std::find(names.begin(), names.end(), name) - names.begin());
-}
-
 /// A probe; `names` holds those of the probes before it (a name must be unique).
 template <int Dim>
 Probe<Dim> readProbe(const At& e, std::set<std::string>& names) {
-    e.object({"name", "point", "body", "wall", "side", "fields"}, {"name"});
-    Probe<Dim> pr;
-    pr.name = e["name"].string();
-    // Column names of probes.csv: letters, digits, '_' and '-' only (no separator,
-    // quote, line break or control character can reach the file).
-    const bool plain = !pr.name.empty() && pr.name.size() <= 64 &&
-                       std::all_of(pr.name.begin(), pr.name.end(), [](char c) {
-                           return std::isalnum((unsigned char)c) || c == '_' || c == '-';
-                       });
-    if (!plain) e["name"].fail("a name of 1 to 64 letters, digits, '_' or '-'");
-    if (!names.insert(pr.name).second) e["name"].fail("a name no other probe has");
-    if (int(e.has("point")) + int(e.has("body")) + int(e.has("wall")) + int(e.has("side")) != 1)
-        e.fail("one of a \"point\", a \"body\", a \"wall\" or a \"side\"");
-    const bool onBody = e.has("body") || e.has("wall");
-    if (e.has("body"))
-        pr.body = int(e["body"].integer(0, 1 << 30));
-    else if (e.has("wall"))
-        pr.wall = int(e["wall"].integer(0, 1 << 30));
-    else if (e.has("side"))
-        pr.side = sideIndex<Dim>(e["side"]);
-    else
-        pr.point = readVec<Dim>(e["point"], "m");
-    // The fields each kind of probe may record; by default a body's or side's one, a point's
-    // all but density.
-    const std::vector<std::string> choices =
-        onBody         ? std::vector<std::string>{"force"}
-        : pr.side >= 0 ? std::vector<std::string>{"flow_rate"}
-                       : std::vector<std::string>{"velocity", "density", "pressure", "temperature"};
-    if (e.has("fields")) {
-        const At fl = e["fields"];
-        if (!fl.v.is_array() || fl.v.empty()) fl.fail("a non-empty array of field names");
-        for (std::size_t k = 0; k < fl.v.size(); ++k) pr.fields.push_back(fl[k].choice(choices));
-    } else {
-        pr.fields = onBody || pr.side >= 0
-                        ? std::vector<std::string>{choices.front()}
+    ProbeInput<Dim> pr;
+    pr.names = &names;
+    pr.at = &e;
+    readKeys(e, probeKeys<Dim>(), pr);
+    pr.checkOneKind();
+    // By default a body's, wall's or side's one field, a point's all but density.
+    if (!e.has("fields"))
+        pr.fields = pr.body >= 0 || pr.wall >= 0 ? std::vector<std::string>{"force"}
+                    : pr.side >= 0
+                        ? std::vector<std::string>{"flow_rate"}
                         : std::vector<std::string>{"velocity", "pressure", "temperature"};
-    }
     return pr;
 }
 

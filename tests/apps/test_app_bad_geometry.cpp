@@ -143,11 +143,13 @@ TEST(BadGeometry, ShapeInOtherUnitsIsAWarning) {
 
 TEST(BadGeometry, CudaBackendRefusesMeshShapesByTheirKey) {
     json j = tiny3d();
-    j["walls"] =
-        json::array({{{"shape", "mesh"}, {"file", "t.stl"}, {"translate", {0.1, 0.04, 0.04}}}});
+    j["bodies"] = json::array({{{"shape", "mesh"},
+                                {"file", "t.stl"},
+                                {"scale", 1.6},
+                                {"translate", {0.08, 0.02, 0.04}}}});
     expectMessage(
         runScene("cuda_mesh", j, "--quiet --backend cuda", {{"t.stl", tetrahedron(true)}}),
-        {"--backend cuda", "walls[0].shape", "a mesh shape", "CPU back end only"});
+        {"--backend cuda", "bodies[0].shape", "a mesh shape", "CPU back end only"});
 }
 
 TEST(BadGeometry, EmitterNozzleInsideAWall) {

@@ -1,10 +1,14 @@
-// docs/scenes.md's tables of the sections of plain values are the reader's key tables
-// (src/scene/scene_keys.hpp), and the reader gives each absent key the table's default.
+// docs/scenes.md's tables of the sections of plain values and of the elements of `emitters` and
+// `probes` are the reader's key tables (src/scene/scene_keys.hpp), and the reader gives each
+// absent key the table's default.
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "app/scene.hpp"
 #include "scene/scene_keys.hpp"
@@ -34,7 +38,7 @@ void expectDocumented(const std::string& section, const num::app::KeyTable<Spec>
     const std::string made = num::app::keyTableMarkdown(keys);
     EXPECT_EQ(docTable(scenesDoc(), section), made)
         << "docs/scenes.md's table of `" << section
-        << "` differs from the reader's keys (src/scene/scene_keys.cpp); its table is:\n"
+        << "` differs from the reader's keys (src/scene/scene_key_tables*.cpp); its table is:\n"
         << made;
 }
 
@@ -46,21 +50,58 @@ TEST(SceneKeyDocs, TheTablesAreTheReadersKeys) {
     expectDocumented("physics", physicsKeys());
     expectDocumented("numerics", numericsKeys());
     expectDocumented("output", outputKeys());
+    expectDocumented("emitters", emitterKeys<2>());
+    expectDocumented("probes", probeKeys<2>());
 }
 
-/// An absent key gets the table's default, which is the section struct's own (sections without
-/// required keys).
+TEST(SceneKeyDocs, TheArraysTablesAreTheSameIn2DAnd3D) {
+    using namespace num::app;
+    EXPECT_EQ(keyTableMarkdown(emitterKeys<3>()), keyTableMarkdown(emitterKeys<2>()));
+    EXPECT_EQ(keyTableMarkdown(probeKeys<3>()), keyTableMarkdown(probeKeys<2>()));
+}
+
+/// An absent key gets the table's default, which is the section struct's own: `read` is read
+/// from `given`, an object of the section's required keys (and what they need), then its keys
+/// that are neither required nor CUSTOM are compared with a plain struct's. Returns what it read.
 template <class Spec>
-void expectTheStructsDefaults(const num::app::KeyTable<Spec>& keys) {
-    const nlohmann::json empty = nlohmann::json::object();
+Spec expectTheStructsDefaults(const num::app::KeyTable<Spec>& keys, Spec read = {},
+                              const nlohmann::json& given = nlohmann::json::object()) {
     const std::string file = "scene.json";
-    Spec read;
-    num::app::readKeys(num::app::detail::At{empty, file, "section"}, keys, read);
+    const num::app::detail::At at{given, file, "section"};
+    if constexpr (requires { read.at; }) read.at = &at;
+    num::app::readKeys(at, keys, read);
     const Spec plain;
     for (const auto& k : keys)
-        if (k.type != num::app::KeyType::CUSTOM)  // a CUSTOM key is left alone when absent
+        if (k.type != num::app::KeyType::CUSTOM && !k.required)  // CUSTOM: left alone when absent
             std::visit([&](auto member) { EXPECT_EQ(read.*member, plain.*member) << k.name; },
                        k.field);
+    return read;
+}
+
+template <int Dim>
+void expectTheArraysDefaults() {
+    using namespace num::app;
+    const std::map<std::string, MaterialSpec> materials{{"water", MaterialSpec{}}};
+    EmitterInput<Dim> emitter;
+    emitter.materials = &materials;
+    const nlohmann::json vector(std::vector<double>(Dim, 1.0));
+    expectTheStructsDefaults(emitterKeys<Dim>(), emitter,
+                             {{"position", vector},
+                              {"direction", vector},
+                              {"speed", 1},
+                              {"radius", 0.1},
+                              {"material", "water"}});
+    std::set<std::string> names;
+    ProbeInput<Dim> probe;
+    probe.names = &names;
+    // A CUSTOM key left alone when absent: a point probe's are the struct's (the reader then
+    // gives it its default fields).
+    const Probe<Dim> point =
+        expectTheStructsDefaults(probeKeys<Dim>(), probe, {{"name", "p"}, {"point", vector}});
+    EXPECT_EQ(point.body, -1);
+    EXPECT_EQ(point.wall, -1);
+    EXPECT_EQ(point.side, -1);
+    EXPECT_TRUE(point.fields.empty());
 }
 
 TEST(SceneKeyDocs, AbsentKeysGetTheStructsDefaults) {
@@ -69,6 +110,8 @@ TEST(SceneKeyDocs, AbsentKeysGetTheStructsDefaults) {
     expectTheStructsDefaults(physicsKeys());
     expectTheStructsDefaults(numericsKeys());
     expectTheStructsDefaults(outputKeys());
+    expectTheArraysDefaults<2>();
+    expectTheArraysDefaults<3>();
 }
 
 }  // namespace

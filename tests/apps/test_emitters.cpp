@@ -94,8 +94,11 @@ TEST(Emitters, NozzleInsideWaterLeavesOutTheOccupiedPoints) {
     // A layer later, with the emitted particles not moved, the new layer (0.2 dx ahead of them)
     // falls on them and on the water: nothing is added, and the layer counts as done.
     const std::size_t afterFirst = storage.size();
+    EXPECT_FALSE(emitters.anyDue(0.5 * dx));  // what the GPU's engine asks before copying back
     EXPECT_EQ(emitters.emit(storage, 0.5 * dx, occupied), 0u);  // no layer due yet
+    EXPECT_TRUE(emitters.anyDue(1.2 * dx));
     EXPECT_EQ(emitters.emit(storage, 1.2 * dx, occupied), 0u);
+    EXPECT_FALSE(emitters.anyDue(1.2 * dx));  // the layer is done, though blocked
     EXPECT_EQ(emitters.blocked(), 6u);
     EXPECT_EQ(emitters.warnings().size(), 1u);
     // Once they have moved on by two spacings, as the flow carries them, the next layer enters.

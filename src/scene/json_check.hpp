@@ -2,6 +2,7 @@
 // file, the key path, what was expected and what was found (internal to numerics_app).
 #pragma once
 
+#include <array>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -76,6 +77,16 @@ Vec<double, Dim> readVec(const At& a, const std::string& unit) {
     Vec<double, Dim> v;
     for (int k = 0; k < Dim; ++k) v[k] = a[std::size_t(k)].number(-1e300, 1e300, false, unit);
     return v;
+}
+
+/// A vector of Dim numbers or expressions in the variables `allowed` (At::expression).
+template <int Dim>
+std::array<Expression, Dim> readField(const At& a, const std::string& allowed,
+                                      const std::string& meaning) {
+    a.array(Dim, "numbers or expressions (one per axis of the " + std::to_string(Dim) + "D scene)");
+    std::array<Expression, Dim> f;
+    for (int k = 0; k < Dim; ++k) f[k] = a[std::size_t(k)].expression(allowed, meaning);
+    return f;
 }
 
 }  // namespace num::app::detail

@@ -17,6 +17,35 @@ namespace d = sph::defaults;
 
 namespace {
 
+template <int Dim>
+void readDomainMin(const At& a, DomainInput<Dim>& d) {
+    d.min = detail::readVec<Dim>(a, "m");
+}
+
+/// Read after min: max > min on every axis.
+template <int Dim>
+void readDomainMax(const At& a, DomainInput<Dim>& d) {
+    d.max = detail::readVec<Dim>(a, "m");
+    for (int k = 0; k < Dim; ++k)
+        if (!(d.max[k] > d.min[k])) a.fail("max > min on every axis");
+}
+
+template <int Dim>
+const KeyTable<DomainInput<Dim>> kDomainKeys{
+    {.name = "min",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "the lowest corner of the box the fluid lives in",
+     .required = true,
+     .read = readDomainMin<Dim>},
+    {.name = "max",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "its highest corner: `max > min` on every axis, every axis at least 2 spacings",
+     .required = true,
+     .read = readDomainMax<Dim>},
+};
+
 const KeyTable<ParticleSpec> kParticleKeys{
     {.name = "spacing",
      .type = KeyType::NUMBER,
@@ -386,6 +415,13 @@ const KeyTable<OutputSpec> kOutputKeys{
 };
 
 }  // namespace
+
+template <int Dim>
+const KeyTable<DomainInput<Dim>>& domainKeys() {
+    return kDomainKeys<Dim>;
+}
+template const KeyTable<DomainInput<2>>& domainKeys<2>();
+template const KeyTable<DomainInput<3>>& domainKeys<3>();
 
 const KeyTable<ParticleSpec>& particleKeys() { return kParticleKeys; }
 const KeyTable<TimeSpec>& timeKeys() { return kTimeKeys; }

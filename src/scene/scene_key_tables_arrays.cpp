@@ -1,16 +1,18 @@
-// The key tables of the elements of the scene's arrays `emitters` and `probes`
+// The key tables of the elements of the scene's arrays `fluids`, `bodies`, `emitters` and `probes`
 // (scene/scene_keys.hpp): one entry per key, with the readers of the keys that are more than a
 // value (vectors, checked names, indices). What involves several keys at once is checked by the
 // reader after readKeys (scene_reader.cpp).
 #include <algorithm>
 #include <cctype>
 
+#include "scene/body_motion_reader.hpp"
 #include "scene/scene_keys.hpp"
 #include "sph/defaults.hpp"
 
 namespace num::app {
 
 using detail::At;
+using detail::readField;
 using detail::readVec;
 namespace d = sph::defaults;
 
@@ -26,6 +28,116 @@ std::string materialName(const At& a, const std::map<std::string, MaterialSpec>&
 }
 
 namespace {
+
+/// The variables of an initial field: the position's coordinates (x, y in 2D; x, y, z in 3D)
+/// and t, which is 0 when the field is set.
+template <int Dim>
+const char* initialVariables() {
+    return Dim == 2 ? "xyt" : "xyzt";
+}
+template <int Dim>
+std::string initialMeaning() {
+    return Dim == 2 ? "a 2D scene has the coordinates x and y only" : "";
+}
+
+template <int Dim>
+void readFluidMaterial(const At& a, FluidInput<Dim>& b) {
+    b.material = materialName(a, *b.materials);
+}
+
+template <int Dim>
+void readFluidTemperature(const At& a, FluidInput<Dim>& b) {
+    b.temperature = a.expression(initialVariables<Dim>(), initialMeaning<Dim>());
+}
+
+template <int Dim>
+void readFluidPressure(const At& a, FluidInput<Dim>& b) {
+    b.pressure = a.expression(initialVariables<Dim>(), initialMeaning<Dim>());
+}
+
+/// Read after the pressure, as the scenes before the table were.
+template <int Dim>
+void readFluidVelocity(const At& a, FluidInput<Dim>& b) {
+    if (b.at->has("pressure")) readFluidPressure((*b.at)["pressure"], b);
+    b.velocity = readField<Dim>(a, initialVariables<Dim>(), initialMeaning<Dim>());
+}
+
+template <int Dim>
+const KeyTable<FluidInput<Dim>> kFluidKeys{
+    {.name = "material",
+     .type = KeyType::CUSTOM,
+     .meaning = "a name from `materials`",
+     .required = true,
+     .read = readFluidMaterial<Dim>},
+    {.name = "shape",
+     .type = KeyType::CUSTOM,
+     .meaning = "`box` (`min`, `max`), `circle` (2D) or `sphere` (3D) (`center`, `radius`), or "
+                "any [shape](#shapes) with its keys",
+     .required = true,
+     .read = readBefore<FluidInput<Dim>>},
+    {.name = "temperature",
+     .type = KeyType::CUSTOM,
+     .unit = "degC",
+     .meaning = "number or expression in x, y, z",
+     .read = readFluidTemperature<Dim>,
+     .shownDefault = "20"},
+    {.name = "velocity",
+     .type = KeyType::CUSTOM,
+     .unit = "m/s",
+     .meaning = "vector of numbers or expressions",
+     .read = readFluidVelocity<Dim>,
+     .shownDefault = "zero"},
+    {.name = "pressure",
+     .type = KeyType::CUSTOM,
+     .unit = "Pa",
+     .meaning = "number or expression; the density follows from the equation of state",
+     .read = readFluidPressure<Dim>,
+     .shownDefault = "0"},
+};
+
+template <int Dim>
+void readBodyMaterial(const At& a, BodyInput<Dim>& b) {
+    b.material = materialName(a, *b.materials);
+}
+
+template <int Dim>
+void readBodyMotionKey(const At& a, BodyInput<Dim>& b) {
+    b.motion = readBodyMotion<Dim>(a);
+}
+
+template <int Dim>
+const KeyTable<BodyInput<Dim>> kBodyKeys{
+    {.name = "shape",
+     .type = KeyType::CUSTOM,
+     .meaning = "`circle`/`sphere` (`center`, `radius`), `box` (`min`, `max`), or any "
+                "[shape](#shapes) with its keys",
+     .required = true,
+     .read = readBefore<BodyInput<Dim>>},
+    {.name = "temperature",
+     .type = KeyType::NUMBER,
+     .field = &BodyInput<Dim>::temperature,
+     .fallback = d::temperature,
+     .unit = "degC",
+     .lo = -273.15,
+     .hi = 1e4,
+     .meaning = "initial temperature; held fixed unless `material` is given"},
+    {.name = "material",
+     .type = KeyType::CUSTOM,
+     .meaning = "a conducting body of that material (its temperature evolves)",
+     .read = readBodyMaterial<Dim>,
+     .shownDefault = "absent"},
+    {.name = "name",
+     .type = KeyType::TEXT,
+     .field = &BodyInput<Dim>::name,
+     .fallback = std::string(),
+     .meaning = "its name in `bodies.csv`, messages and Python",
+     .shownDefault = "`bodies[i]`"},
+    {.name = "motion",
+     .type = KeyType::CUSTOM,
+     .meaning = "`\"fixed\"`, or an object with `type` `fixed`, `free` or `prescribed`",
+     .read = readBodyMotionKey<Dim>,
+     .shownDefault = "`\"fixed\"`"},
+};
 
 template <int Dim>
 void readEmitterName(const At& a, EmitterInput<Dim>& e) {
@@ -211,6 +323,16 @@ const KeyTable<ProbeInput<Dim>> kProbeKeys{
 }  // namespace
 
 template <int Dim>
+const KeyTable<FluidInput<Dim>>& fluidKeys() {
+    return kFluidKeys<Dim>;
+}
+
+template <int Dim>
+const KeyTable<BodyInput<Dim>>& bodyKeys() {
+    return kBodyKeys<Dim>;
+}
+
+template <int Dim>
 const KeyTable<EmitterInput<Dim>>& emitterKeys() {
     return kEmitterKeys<Dim>;
 }
@@ -220,6 +342,10 @@ const KeyTable<ProbeInput<Dim>>& probeKeys() {
     return kProbeKeys<Dim>;
 }
 
+template const KeyTable<FluidInput<2>>& fluidKeys<2>();
+template const KeyTable<FluidInput<3>>& fluidKeys<3>();
+template const KeyTable<BodyInput<2>>& bodyKeys<2>();
+template const KeyTable<BodyInput<3>>& bodyKeys<3>();
 template const KeyTable<EmitterInput<2>>& emitterKeys<2>();
 template const KeyTable<EmitterInput<3>>& emitterKeys<3>();
 template const KeyTable<ProbeInput<2>>& probeKeys<2>();

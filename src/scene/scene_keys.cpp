@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include "scene/boundary_types.hpp"
+#include "scene/shape_reader.hpp"
+
 namespace num::app {
 
 using detail::At;
@@ -111,6 +114,11 @@ void readKeys(const At& at, const KeyTable<Spec>& table, Spec& spec) {
         if (k.required) required.push_back(k.name);
     }
     at.object(names, required);
+    readKeyValues(at, table, spec);
+}
+
+template <class Spec>
+void readKeyValues(const At& at, const KeyTable<Spec>& table, Spec& spec) {
     for (const SceneKey<Spec>& k : table) readKey(at, k, spec);
 }
 
@@ -123,19 +131,30 @@ std::string keyTableMarkdown(const KeyTable<Spec>& table) {
     return md;
 }
 
-#define NUMERICS_SCENE_KEYS(Spec)                                          \
-    template void readKeys<Spec>(const At&, const KeyTable<Spec>&, Spec&); \
+#define NUMERICS_SCENE_KEYS(Spec)                                               \
+    template void readKeys<Spec>(const At&, const KeyTable<Spec>&, Spec&);      \
+    template void readKeyValues<Spec>(const At&, const KeyTable<Spec>&, Spec&); \
     template std::string keyTableMarkdown<Spec>(const KeyTable<Spec>&);
+NUMERICS_SCENE_KEYS(DomainInput<2>)
+NUMERICS_SCENE_KEYS(DomainInput<3>)
 NUMERICS_SCENE_KEYS(ParticleSpec)
 NUMERICS_SCENE_KEYS(TimeSpec)
 NUMERICS_SCENE_KEYS(NumericsSpec)
 NUMERICS_SCENE_KEYS(MaterialSpec)
 NUMERICS_SCENE_KEYS(PhysicsSpec)
 NUMERICS_SCENE_KEYS(OutputSpec)
+NUMERICS_SCENE_KEYS(FluidInput<2>)
+NUMERICS_SCENE_KEYS(FluidInput<3>)
+NUMERICS_SCENE_KEYS(BodyInput<2>)
+NUMERICS_SCENE_KEYS(BodyInput<3>)
 NUMERICS_SCENE_KEYS(EmitterInput<2>)
 NUMERICS_SCENE_KEYS(EmitterInput<3>)
 NUMERICS_SCENE_KEYS(ProbeInput<2>)
 NUMERICS_SCENE_KEYS(ProbeInput<3>)
+NUMERICS_SCENE_KEYS(SideInput<2>)
+NUMERICS_SCENE_KEYS(SideInput<3>)
+NUMERICS_SCENE_KEYS(TransformInput<2>)
+NUMERICS_SCENE_KEYS(TransformInput<3>)
 #undef NUMERICS_SCENE_KEYS
 
 }  // namespace num::app

@@ -1,8 +1,10 @@
-// The keys of the scene sections that are objects of values (particles, time, numerics,
-// materials, physics, output) and of the elements of the arrays `emitters` and `probes`, each
-// declared once: name, type, range, default, unit and meaning. The reader reads and checks them
-// from these tables, and docs/scenes.md's tables of these sections are made from them
-// (tests/apps/test_scene_key_docs.cpp fails when the two differ). Internal to numerics_app.
+// The keys of the scene sections that are objects of values (domain, particles, time, numerics,
+// materials, physics, output), of the elements of the arrays `fluids`, `bodies`, `emitters` and
+// `probes`, of each boundary type and interior walls (scene/boundary_types.hpp) and of shapes'
+// transformations (scene/shape_reader.hpp), each declared once: name, type, range, default, unit
+// and meaning. The reader reads and checks them from these tables, and docs/scenes.md's tables
+// of these sections are made from them (tests/apps/test_scene_key_docs.cpp fails when the two
+// differ). Internal to numerics_app.
 #pragma once
 
 #include <map>
@@ -47,6 +49,32 @@ struct SceneKey {
 template <class Spec>
 using KeyTable = std::vector<SceneKey<Spec>>;
 
+/// The reader of a key read before the table's others: a placed shape's `shape`, read with its
+/// shape's keys (scene_reader.cpp's readPlacedShape).
+template <class Spec>
+void readBefore(const detail::At&, Spec&) {}
+
+/// The domain box as its keys are read.
+template <int Dim>
+struct DomainInput {
+    SceneVec<Dim> min{}, max{};
+};
+
+/// A fluid block as its keys (beside its shape's) are read: the block, the materials its
+/// `material` must name and its object.
+template <int Dim>
+struct FluidInput : FluidBlock<Dim> {
+    const std::map<std::string, MaterialSpec>* materials = nullptr;
+    const detail::At* at = nullptr;
+};
+
+/// A body as its keys (beside its shape's) are read: the body and the materials its `material`
+/// must name.
+template <int Dim>
+struct BodyInput : Body<Dim> {
+    const std::map<std::string, MaterialSpec>* materials = nullptr;
+};
+
 /// An emitter as its keys are read: the emitter, and the materials its `material` must name.
 template <int Dim>
 struct EmitterInput : Emitter<Dim> {
@@ -69,12 +97,18 @@ struct ProbeInput : Probe<Dim> {
     }
 };
 
+template <int Dim>
+const KeyTable<DomainInput<Dim>>& domainKeys();
 const KeyTable<ParticleSpec>& particleKeys();
 const KeyTable<TimeSpec>& timeKeys();
 const KeyTable<NumericsSpec>& numericsKeys();
 const KeyTable<MaterialSpec>& materialKeys();
 const KeyTable<PhysicsSpec>& physicsKeys();
 const KeyTable<OutputSpec>& outputKeys();
+template <int Dim>
+const KeyTable<FluidInput<Dim>>& fluidKeys();  ///< each element of `fluids`
+template <int Dim>
+const KeyTable<BodyInput<Dim>>& bodyKeys();  ///< each element of `bodies`
 template <int Dim>
 const KeyTable<EmitterInput<Dim>>& emitterKeys();  ///< each element of `emitters`
 template <int Dim>
@@ -87,6 +121,11 @@ std::string materialName(const detail::At& a, const std::map<std::string, Materi
 /// Reads section `at` (an object of only these keys) into `spec`; an absent key gets its default.
 template <class Spec>
 void readKeys(const detail::At& at, const KeyTable<Spec>& table, Spec& spec);
+
+/// Reads the keys of `table` that `at` has, as readKeys but without checking which keys the
+/// object has (its owner does: a boundary's type, an interior wall's shape).
+template <class Spec>
+void readKeyValues(const detail::At& at, const KeyTable<Spec>& table, Spec& spec);
 
 /// docs/scenes.md's table of these keys (key, unit, default, meaning), lines ending in '\n'.
 template <class Spec>

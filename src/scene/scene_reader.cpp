@@ -8,7 +8,6 @@
 #include "app/nozzle.hpp"
 #include "app/scene_loader.hpp"
 #include "geometry/scale_check.hpp"
-#include "scene/body_motion_reader.hpp"
 #include "scene/boundary_types.hpp"
 #include "scene/json_check.hpp"
 #include "scene/scene_keys.hpp"
@@ -20,26 +19,8 @@ using detail::At;
 
 namespace {
 
+using detail::readField;
 using detail::readVec;
-
-template <int Dim>
-VectorField<Dim> readField(const At& a, const std::string& allowed, const std::string& meaning) {
-    a.array(Dim, "numbers or expressions (one per axis of the " + std::to_string(Dim) + "D scene)");
-    VectorField<Dim> f;
-    for (int k = 0; k < Dim; ++k) f[k] = a[std::size_t(k)].expression(allowed, meaning);
-    return f;
-}
-
-/// The variables of an initial field: the position's coordinates (x, y in 2D; x, y, z in 3D)
-/// and t, which is 0 when the field is set.
-template <int Dim>
-const char* initialVariables() {
-    return Dim == 2 ? "xyt" : "xyzt";
-}
-template <int Dim>
-std::string initialMeaning() {
-    return Dim == 2 ? "a 2D scene has the coordinates x and y only" : "";
-}
 
 MaterialSpec readMaterial(const At& a, const std::string& name) {
     MaterialSpec m;
@@ -184,6 +165,19 @@ void readShape(const At& a, const std::vector<std::string>& keys,
     readGeneralShape(a, own, s);
 }
 
+/// The shape of a fluid block, body or wall, whose keys are `table`'s (a box's or ball's after
+/// `shape`; scene_keys.hpp). The table's other keys are read after it.
+template <int Dim, class Spec>
+void readPlacedShape(const At& a, const KeyTable<Spec>& table, SceneShape<Dim>& s) {
+    std::vector<std::string> keys, required;
+    for (const SceneKey<Spec>& k : table) {
+        keys.push_back(k.name);
+        if (keys.back() == "shape") keys.insert(keys.end(), {"min", "max", "center", "radius"});
+        if (k.required) required.push_back(k.name);
+    }
+    readShape<Dim>(a, keys, required, s);
+}
+
 /// Warns of open sides whose normal is perpendicular to gravity: fluid flows out through them
 /// sideways, which is rarely meant (an open top faces against gravity).
 template <int Dim>
@@ -261,11 +255,10 @@ void checkDimension(const At& root) {
 
 template <int Dim>
 void readDomain(const At& domain, Scene<Dim>& s) {
-    domain.object({"min", "max"}, {"min", "max"});
-    s.domainMin = readVec<Dim>(domain["min"], "m");
-    s.domainMax = readVec<Dim>(domain["max"], "m");
-    for (int k = 0; k < Dim; ++k)
-        if (!(s.domainMax[k] > s.domainMin[k])) domain["max"].fail("max > min on every axis");
+    DomainInput<Dim> d;
+    readKeys(domain, domainKeys<Dim>(), d);
+    s.domainMin = d.min;
+    s.domainMax = d.max;
 }
 
 template <int Dim>
@@ -301,17 +294,11 @@ void readMaterials(const At& mats, Scene<Dim>& s) {
 
 template <int Dim>
 FluidBlock<Dim> readFluidBlock(const At& b, const std::map<std::string, MaterialSpec>& materials) {
-    FluidBlock<Dim> blk;
-    readShape<Dim>(b,
-                   {"material", "shape", "min", "max", "center", "radius", "temperature",
-                    "velocity", "pressure"},
-                   {"material", "shape"}, blk);
-    blk.material = materialName(b["material"], materials);
-    const char* vars = initialVariables<Dim>();
-    const std::string meaning = initialMeaning<Dim>();
-    if (b.has("temperature")) blk.temperature = b["temperature"].expression(vars, meaning);
-    if (b.has("pressure")) blk.pressure = b["pressure"].expression(vars, meaning);
-    if (b.has("velocity")) blk.velocity = readField<Dim>(b["velocity"], vars, meaning);
+    FluidInput<Dim> blk;
+    blk.materials = &materials;
+    blk.at = &b;
+    readPlacedShape<Dim>(b, fluidKeys<Dim>(), blk);
+    readKeyValues(b, fluidKeys<Dim>(), blk);
     return blk;
 }
 
@@ -324,14 +311,10 @@ void readFluids(const At& f, Scene<Dim>& s) {
 
 template <int Dim>
 Body<Dim> readBody(const At& b, const std::map<std::string, MaterialSpec>& materials) {
-    Body<Dim> body;
-    readShape<Dim>(
-        b, {"shape", "min", "max", "center", "radius", "temperature", "material", "name", "motion"},
-        {"shape"}, body);
-    body.temperature = b.number("temperature", body.temperature, -273.15, 1e4, false, "degC");
-    if (b.has("material")) body.material = materialName(b["material"], materials);
-    if (b.has("name")) body.name = b["name"].string();
-    if (b.has("motion")) body.motion = readBodyMotion<Dim>(b["motion"]);
+    BodyInput<Dim> body;
+    body.materials = &materials;
+    readPlacedShape<Dim>(b, bodyKeys<Dim>(), body);
+    readKeyValues(b, bodyKeys<Dim>(), body);
     return body;
 }
 
@@ -346,8 +329,7 @@ void readBodies(const At& f, Scene<Dim>& s) {
 template <int Dim>
 Wall<Dim> readWall(const At& w) {
     Wall<Dim> wall;
-    readShape<Dim>(w, {"shape", "min", "max", "center", "radius", "slip", "velocity", "thermal"},
-                   {"shape"}, wall);
+    readPlacedShape<Dim>(w, interiorWallKeys<Dim>(), wall);
     wall.boundary = readWallKeys<Dim>(w);
     return wall;
 }

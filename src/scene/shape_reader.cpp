@@ -188,20 +188,51 @@ std::vector<std::string> namesIn() {
     return names;
 }
 
+template <int Dim>
+void readRotate(const At& a, TransformInput<Dim>& t) {
+    if constexpr (Dim == 2)
+        t.degrees[0] = a.number(-1e300, 1e300, false, "degrees");
+    else
+        t.degrees = detail::readVec<3>(a, "degrees");
+}
+
+template <int Dim>
+void readTranslate(const At& a, TransformInput<Dim>& t) {
+    t.translate = detail::readVec<Dim>(a, "m");
+}
+
+template <int Dim>
+const KeyTable<TransformInput<Dim>> kTransformKeys{
+    {.name = "scale",
+     .type = KeyType::NUMBER,
+     .field = &TransformInput<Dim>::scale,
+     .fallback = 1.0,
+     .lo = 0,
+     .loOpen = true,
+     .meaning = "about the origin, first"},
+    {.name = "rotate",
+     .type = KeyType::CUSTOM,
+     .unit = "degrees",
+     .meaning = "about the origin, then: in 2D one angle, counter-clockwise; in 3D `[ax, ay, az]`, "
+                "about x, then y, then z (the fixed axes)",
+     .read = readRotate<Dim>,
+     .shownDefault = "none"},
+    {.name = "translate",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "a vector, last",
+     .read = readTranslate<Dim>,
+     .shownDefault = "zero"},
+};
+
 /// The shape's "scale", "rotate" and "translate", when given.
 template <int Dim>
 SolidPtr<Dim> transform(const At& a, SolidPtr<Dim> solid) {
     if (!a.has("scale") && !a.has("rotate") && !a.has("translate")) return solid;
-    const double scale = a.number("scale", 1.0, 0, 1e300, true);
-    geometry::Angles<Dim> degrees{};
-    if (Dim == 2 && a.has("rotate"))
-        degrees[0] = a["rotate"].number(-1e300, 1e300, false, "degrees");
-    if (Dim == 3 && a.has("rotate"))
-        degrees = detail::readVec<geometry::Angles<Dim>::dim>(a["rotate"], "degrees");
-    const Point<Dim> translate =
-        a.has("translate") ? detail::readVec<Dim>(a["translate"], "m") : Point<Dim>{};
+    TransformInput<Dim> t;
+    readKeyValues(a, kTransformKeys<Dim>, t);
     return std::make_shared<geometry::Transformed<Dim>>(
-        solid, scale, geometry::Rotation<Dim>(degrees), translate);
+        solid, t.scale, geometry::Rotation<Dim>(t.degrees), t.translate);
 }
 
 }  // namespace
@@ -235,6 +266,13 @@ std::vector<std::string> shapeHelp() {
     return help;
 }
 
+template <int Dim>
+const KeyTable<TransformInput<Dim>>& transformKeys() {
+    return kTransformKeys<Dim>;
+}
+
+template const KeyTable<TransformInput<2>>& transformKeys<2>();
+template const KeyTable<TransformInput<3>>& transformKeys<3>();
 template SolidPtr<2> readSolid<2>(const At&, const std::string&);
 template SolidPtr<3> readSolid<3>(const At&, const std::string&);
 template std::vector<std::string> shapeHelp<2>();

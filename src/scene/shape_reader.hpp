@@ -6,10 +6,24 @@
 #include <string>
 #include <vector>
 
+#include "geometry/rotation.hpp"
 #include "geometry/solid.hpp"
 #include "scene/json_check.hpp"
+#include "scene/scene_keys.hpp"
 
 namespace num::app {
+
+/// A shape's transformation as its keys are read (every shape takes them).
+template <int Dim>
+struct TransformInput {
+    double scale = 1;
+    geometry::Angles<Dim> degrees{};
+    geometry::Point<Dim> translate{};
+};
+
+/// The keys "scale", "rotate" and "translate" of every shape, in the order they apply.
+template <int Dim>
+const KeyTable<TransformInput<Dim>>& transformKeys();
 
 /// The shape object at `at`: its "shape", the keys of that shape, and the optional "scale",
 /// "rotate" (degrees) and "translate" of every shape. Files are relative to `sceneDir`.

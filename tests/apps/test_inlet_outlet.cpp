@@ -121,5 +121,5 @@ TEST(InletOutlet, BadInletsAndOutletsAreRefusedByKey) {
 // The CUDA back end refuses inlets and outlets by name rather than running them as walls.
 TEST(InletOutlet, TheCudaBackEndRefusesThem) {
     const Result r = runText("cuda", sceneJson(2), "--backend cuda");
-    expectOneLine(r, kScene, {"--backend cuda", "inlets and outlets"});
+    expectOneLine(r, kScene, {"--backend cuda", "an inlet or outlet"});
 }

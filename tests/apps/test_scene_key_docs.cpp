@@ -1,6 +1,7 @@
-// docs/scenes.md's tables of the sections of plain values and of the elements of `emitters` and
-// `probes` are the reader's key tables (src/scene/scene_keys.hpp), and the reader gives each
-// absent key the table's default.
+// docs/scenes.md's tables of the domain, of the sections of plain values, of the elements of
+// `emitters` and `probes` and of each boundary type are the reader's key tables
+// (src/scene/scene_keys.hpp, src/scene/boundary_types.cpp), and the reader gives each absent key
+// the table's default.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -11,7 +12,9 @@
 #include <vector>
 
 #include "app/scene.hpp"
+#include "scene/boundary_types.hpp"
 #include "scene/scene_keys.hpp"
+#include "scene/shape_reader.hpp"
 
 namespace {
 
@@ -23,9 +26,9 @@ std::string scenesDoc() {
     return ss.str();
 }
 
-/// The first table after the heading "### `section`", its lines ending in '\n'.
-std::string docTable(const std::string& doc, const std::string& section) {
-    const std::size_t heading = doc.find("### `" + section + "`");
+/// The first table after the heading `title` ("### `particles`"), its lines ending in '\n'.
+std::string docTable(const std::string& doc, const std::string& title) {
+    const std::size_t heading = doc.find(title);
     if (heading == std::string::npos) return "";
     const std::size_t begin = doc.find("\n|", heading);
     std::size_t end = begin + 1;
@@ -33,12 +36,15 @@ std::string docTable(const std::string& doc, const std::string& section) {
     return doc.substr(begin + 1, end - begin - 1);
 }
 
+/// The table under "### `section`" (or the heading `title`) is that of `keys`.
 template <class Spec>
-void expectDocumented(const std::string& section, const num::app::KeyTable<Spec>& keys) {
+void expectDocumented(const std::string& section, const num::app::KeyTable<Spec>& keys,
+                      const std::string& title = "") {
     const std::string made = num::app::keyTableMarkdown(keys);
-    EXPECT_EQ(docTable(scenesDoc(), section), made)
+    EXPECT_EQ(docTable(scenesDoc(), title.empty() ? "### `" + section + "`" : title), made)
         << "docs/scenes.md's table of `" << section
-        << "` differs from the reader's keys (src/scene/scene_key_tables*.cpp); its table is:\n"
+        << "` differs from the reader's keys (src/scene/scene_key_tables*.cpp, "
+           "src/scene/boundary_types.cpp); its table is:\n"
         << made;
 }
 
@@ -52,12 +58,36 @@ TEST(SceneKeyDocs, TheTablesAreTheReadersKeys) {
     expectDocumented("output", outputKeys());
     expectDocumented("emitters", emitterKeys<2>());
     expectDocumented("probes", probeKeys<2>());
+    expectDocumented("domain", domainKeys<2>());
+    expectDocumented("fluids", fluidKeys<2>());
+    expectDocumented("bodies", bodyKeys<2>());
+    expectDocumented("walls", interiorWallKeys<2>());
+    expectDocumented("shapes' transformations", transformKeys<2>(), "### Shapes");
+}
+
+/// Each boundary type with keys beside "type" has its table, under "#### `type` sides".
+TEST(SceneKeyDocs, TheBoundaryTypesTablesAreTheReadersKeys) {
+    using namespace num::app;
+    const auto& types2 = boundaryTypes<2>();
+    const auto& types3 = boundaryTypes<3>();
+    ASSERT_EQ(types2.size(), types3.size());
+    for (std::size_t k = 0; k < types2.size(); ++k) {
+        EXPECT_EQ(keyTableMarkdown(types3[k].keys), keyTableMarkdown(types2[k].keys));
+        if (types2[k].keys.empty()) continue;
+        const std::string title = "#### `" + types2[k].name + "` sides";
+        expectDocumented("boundaries." + types2[k].name, types2[k].keys, title);
+    }
 }
 
 TEST(SceneKeyDocs, TheArraysTablesAreTheSameIn2DAnd3D) {
     using namespace num::app;
     EXPECT_EQ(keyTableMarkdown(emitterKeys<3>()), keyTableMarkdown(emitterKeys<2>()));
     EXPECT_EQ(keyTableMarkdown(probeKeys<3>()), keyTableMarkdown(probeKeys<2>()));
+    EXPECT_EQ(keyTableMarkdown(domainKeys<3>()), keyTableMarkdown(domainKeys<2>()));
+    EXPECT_EQ(keyTableMarkdown(fluidKeys<3>()), keyTableMarkdown(fluidKeys<2>()));
+    EXPECT_EQ(keyTableMarkdown(bodyKeys<3>()), keyTableMarkdown(bodyKeys<2>()));
+    EXPECT_EQ(keyTableMarkdown(interiorWallKeys<3>()), keyTableMarkdown(interiorWallKeys<2>()));
+    EXPECT_EQ(keyTableMarkdown(transformKeys<3>()), keyTableMarkdown(transformKeys<2>()));
 }
 
 /// An absent key gets the table's default, which is the section struct's own: `read` is read
@@ -91,6 +121,9 @@ void expectTheArraysDefaults() {
                               {"speed", 1},
                               {"radius", 0.1},
                               {"material", "water"}});
+    BodyInput<Dim> body;
+    body.materials = &materials;
+    expectTheStructsDefaults(bodyKeys<Dim>(), body, {{"shape", "box"}});
     std::set<std::string> names;
     ProbeInput<Dim> probe;
     probe.names = &names;

@@ -152,7 +152,7 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     quiet = ["-q", "--set", "output.images=false", "--set", "output.video=false",
-             "--set", 'output.formats=["csv"]']
+             "--set", 'output.formats=["csv"]', "--set", "output.plots=[]"]
     s2 = os.path.join(a.scenes, "validation", "dam_break_martin_moyce.json")
     s3 = os.path.join(a.scenes, "dam_break_3d.json")
     hot_cold = os.path.join(a.scenes, "dam_break_hot_cold_2d.json")  # fluid_sim's default

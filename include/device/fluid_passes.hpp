@@ -71,13 +71,6 @@ struct Gather {  // to[k] = from[order[k]]
 };
 
 template <class T>
-struct Fill {
-    T* to;
-    T value;
-    NUMERICS_HD void operator()(Index k) const { to[k] = value; }
-};
-
-template <class T>
 struct Scatter {  // to[origin[k]] = from[k]: back to the storage's order
     const T* from;
     T* to;

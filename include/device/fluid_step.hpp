@@ -136,11 +136,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             T_.upload(s.T), dT_.upload(s.dT), Tb_.upload(s.Tb), heatSource_.upload(s.heatSource);
             material_.upload(s.material), condition_.upload(s.condition), dTOld_.resize(n_);
         }
-        if (heat_ && c_.conduction) {
+        // The powers: written by every evaluation's heat pass before heatPowers() reads them.
+        if (heat_ && c_.conduction)
             maxima_[3].resize(n_), fixedPower_.resize(n_), sourcePower_.resize(n_);
-            exec_.forEach(n_, passes::Fill<double>{fixedPower_.data(), 0.0});
-            exec_.forEach(n_, passes::Fill<double>{sourcePower_.data(), 0.0});
-        }
     }
 
     void download(ParticleArrays<Dim>& s) override {

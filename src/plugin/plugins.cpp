@@ -25,6 +25,19 @@ namespace num::app {
 using detail::At;
 namespace fs = std::filesystem;
 
+/// What one library registered (its writers join the run's, ScenePlugins::writers).
+struct PluginLibrary {
+    std::string path;
+    std::map<std::string, plugin::TermFactory<2>> terms2;
+    std::map<std::string, plugin::TermFactory<3>> terms3;
+    std::map<std::string, sph::QuantityId> fields;
+    struct Range {
+        double lo, hi;
+        std::string unit;
+    };
+    std::map<std::string, Range> ranges;  ///< of fields, by name
+};
+
 namespace {
 
 /// Element i of an array, its path in the --set form ("plugins.0.terms.1").
@@ -46,18 +59,7 @@ std::string names(const std::vector<std::string>& list) {
     return text;
 }
 
-/// What one library registered (its writers join the run's, ScenePlugins::writers).
-struct Library {
-    std::string path;
-    std::map<std::string, plugin::TermFactory<2>> terms2;
-    std::map<std::string, plugin::TermFactory<3>> terms3;
-    std::map<std::string, sph::QuantityId> fields;
-    struct Range {
-        double lo, hi;
-        std::string unit;
-    };
-    std::map<std::string, Range> ranges;  ///< of fields, by name
-};
+using Library = PluginLibrary;
 
 class HostRegistry final : public plugin::Registry {
   public:
@@ -253,10 +255,9 @@ std::vector<std::string> outputFormats(const SceneDocument& doc) {
     return formats;
 }
 
-/// The fields of plugin `p` (of `lib`) the scene writes.
+/// The fields of a plugin of `lib` the scene writes.
 template <int Dim>
-void addFields(const At& p, const Library& lib, ScenePlugins<Dim>& out) {
-    const At fields = p["fields"];
+void addFields(const At& fields, const Library& lib, ScenePlugins<Dim>& out) {
     if (!fields.v.is_array()) fields.fail("an array of field names");
     for (std::size_t k = 0; k < fields.v.size(); ++k) {
         const At f = element(fields, k);
@@ -273,28 +274,67 @@ void addFields(const At& p, const Library& lib, ScenePlugins<Dim>& out) {
     }
 }
 
+template <int Dim>
+std::string programName() {
+    return Dim == 2 ? "fluid_sim" : "fluid_sim_3d";
+}
+
+/// Opens the plugin's library, read first: the other keys use it.
+template <int Dim>
+void readLibrary(const At& a, PluginInput<Dim>& in) {
+    const std::string path = absoluteLibrary(a.string(), *in.sceneFile);
+    in.library =
+        std::make_shared<const Library>(openLibrary(a, path, programName<Dim>(), in.out->writers));
+    const std::string key = "plugin " + std::to_string(in.index);
+    in.out->fingerprint += key + " library = " + path + "\n";
+    in.out->fingerprint += key + " library content (FNV-1a) = " + fileHash(path) + "\n";
+    for (const auto& [name, r] : in.library->ranges)
+        in.out->ranges.push_back({in.library->fields.at(name), name, r.unit,
+                                  fs::path(path).filename().string(), r.lo, r.hi});
+}
+
+template <int Dim>
+void readTerms(const At& terms, PluginInput<Dim>& in) {
+    if (!terms.v.is_array() || terms.v.empty())
+        terms.fail("a non-empty array of terms, each {\"term\": NAME, parameters...}");
+    for (std::size_t k = 0; k < terms.v.size(); ++k)
+        in.out->terms += sph::EquationHolder<Dim>(
+            makeTerm<Dim>(*in.library, element(terms, k), programName<Dim>(), in.out->failure));
+}
+
+template <int Dim>
+void readFields(const At& fields, PluginInput<Dim>& in) {
+    addFields(fields, *in.library, *in.out);
+}
+
+template <int Dim>
+const KeyTable<PluginInput<Dim>> kPluginKeys{
+    {.name = "library",
+     .type = KeyType::CUSTOM,
+     .meaning = "the plugin's file, relative to the scene file or absolute",
+     .required = true,
+     .read = readLibrary<Dim>},
+    {.name = "terms",
+     .type = KeyType::CUSTOM,
+     .meaning = "if given, a non-empty array (a plugin of writers only needs none): `term` names "
+                "a term the library provides for the scene's dimension, the other keys are its "
+                "parameters, checked by the plugin (`scene.json: plugins.0.terms.1.stiffness: "
+                "expected a positive number [N/m], found -3`)",
+     .read = readTerms<Dim>,
+     .shownDefault = "[]"},
+    {.name = "fields",
+     .type = KeyType::CUSTOM,
+     .meaning = "quantities of the plugin's terms written to the VTU and CSV outputs, by their "
+                "declared names; the others are not written",
+     .read = readFields<Dim>,
+     .shownDefault = "[]"},
+};
+
 /// Loads plugin number i of the scene (`p`) and adds its terms, fields and writers to `out`.
 template <int Dim>
 void loadPlugin(const At& p, const std::string& sceneFile, std::size_t i, ScenePlugins<Dim>& out) {
-    const std::string program = Dim == 2 ? "fluid_sim" : "fluid_sim_3d";
-    p.object({"library", "terms", "fields"}, {"library"});
-    const std::string path = absoluteLibrary(p["library"].string(), sceneFile);
-    const Library lib = openLibrary(p["library"], path, program, out.writers);
-    const std::string key = "plugin " + std::to_string(i);
-    out.fingerprint += key + " library = " + path + "\n";
-    out.fingerprint += key + " library content (FNV-1a) = " + fileHash(path) + "\n";
-    for (const auto& [name, r] : lib.ranges)
-        out.ranges.push_back(
-            {lib.fields.at(name), name, r.unit, fs::path(path).filename().string(), r.lo, r.hi});
-    if (p.has("terms")) {
-        const At terms = p["terms"];
-        if (!terms.v.is_array() || terms.v.empty())
-            terms.fail("a non-empty array of terms, each {\"term\": NAME, parameters...}");
-        for (std::size_t k = 0; k < terms.v.size(); ++k)
-            out.terms += sph::EquationHolder<Dim>(
-                makeTerm<Dim>(lib, element(terms, k), program, out.failure));
-    }
-    if (p.has("fields")) addFields(p, lib, out);
+    PluginInput<Dim> in{&out, &sceneFile, i, nullptr};
+    readKeys(p, kPluginKeys<Dim>, in);
 }
 
 }  // namespace
@@ -355,8 +395,15 @@ FieldNames pluginFieldNames(const ScenePlugins<Dim>& plugins, const sph::Storage
     return names;
 }
 
+template <int Dim>
+const KeyTable<PluginInput<Dim>>& pluginKeys() {
+    return kPluginKeys<Dim>;
+}
+
 template ScenePlugins<2> loadPlugins<2>(const SceneDocument&);
 template ScenePlugins<3> loadPlugins<3>(const SceneDocument&);
+template const KeyTable<PluginInput<2>>& pluginKeys<2>();
+template const KeyTable<PluginInput<3>>& pluginKeys<3>();
 template FieldNames pluginFieldNames<2>(const ScenePlugins<2>&, const sph::Storage<2>&, FieldNames,
                                         const std::string&);
 template FieldNames pluginFieldNames<3>(const ScenePlugins<3>&, const sph::Storage<3>&, FieldNames,

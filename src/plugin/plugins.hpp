@@ -11,6 +11,7 @@
 #include "app/scene_loader.hpp"
 #include "app/writer_registry.hpp"
 #include "plugin/plugin_term.hpp"
+#include "scene/scene_keys.hpp"
 #include "sph/equation_term.hpp"
 
 namespace num::app {
@@ -39,6 +40,25 @@ struct ScenePlugins {
     std::shared_ptr<PluginFailure> failure = std::make_shared<PluginFailure>();
     bool empty() const { return terms.size() == 0; }
 };
+
+/// What one plugin library registered (plugins.cpp).
+struct PluginLibrary;
+
+/// An element of the scene's "plugins" as its keys are read: what its library adds to, the scene
+/// file (a relative library is taken from its folder), the element's index and its library once
+/// opened (by "library", the first key read).
+template <int Dim>
+struct PluginInput {
+    ScenePlugins<Dim>* out = nullptr;
+    const std::string* sceneFile = nullptr;
+    std::size_t index = 0;
+    std::shared_ptr<const PluginLibrary> library;
+};
+
+/// The keys of each element of the scene's "plugins" (docs/scenes.md's table of them is made
+/// from it).
+template <int Dim>
+const KeyTable<PluginInput<Dim>>& pluginKeys();
 
 /// A copy of the document whose plugin library paths are absolute (relative paths are taken
 /// from the scene file's directory), so the scene a checkpoint stores finds them from anywhere.

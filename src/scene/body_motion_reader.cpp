@@ -44,19 +44,73 @@ VectorField<Dim> readMotionVelocity(const At& a, const char* vars) {
 }
 
 template <int Dim>
-SpringSpec<Dim> readSpring(const At& a) {
-    a.object({"anchor", "anchor_body", "point", "stiffness", "damping", "length", "mooring"},
-             {"anchor", "stiffness"});
-    SpringSpec<Dim> k;
-    k.anchor = readVec<Dim>(a["anchor"], "m");
-    if (a.has("anchor_body")) k.anchorBody = int(a["anchor_body"].integer(0, 1 << 30));
-    if (a.has("point")) k.point = readVec<Dim>(a["point"], "m");
-    k.stiffness = a["stiffness"].number(0, 1e15, true, "N/m");
-    k.damping = a.number("damping", 0, 0, 1e15, false, "N s/m");
-    if (a.has("length")) k.length = a["length"].number(0, 1e6, false, "m");
-    k.mooring = a.boolean("mooring", false);
-    return k;
+void readAnchor(const At& a, SpringSpec<Dim>& k) {
+    k.anchor = readVec<Dim>(a, "m");
 }
+
+template <int Dim>
+void readAnchorBody(const At& a, SpringSpec<Dim>& k) {
+    k.anchorBody = int(a.integer(0, 1 << 30));
+}
+
+template <int Dim>
+void readSpringPoint(const At& a, SpringSpec<Dim>& k) {
+    k.point = readVec<Dim>(a, "m");
+}
+
+template <int Dim>
+void readRestLength(const At& a, SpringSpec<Dim>& k) {
+    k.length = a.number(0, 1e6, false, "m");
+}
+
+template <int Dim>
+const KeyTable<SpringSpec<Dim>> kSpringKeys{
+    {.name = "anchor",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "the spring's far end at t = 0: fixed, or on `anchor_body`",
+     .required = true,
+     .read = readAnchor<Dim>},
+    {.name = "anchor_body",
+     .type = KeyType::CUSTOM,
+     .meaning = "the index of another body that holds the anchor (the spring pulls both)",
+     .read = readAnchorBody<Dim>,
+     .shownDefault = "none (fixed)"},
+    {.name = "point",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "the end on the body at t = 0",
+     .read = readSpringPoint<Dim>,
+     .shownDefault = "its centre of mass or hinge"},
+    {.name = "stiffness",
+     .type = KeyType::NUMBER,
+     .field = &SpringSpec<Dim>::stiffness,
+     .fallback = 0.0,
+     .unit = "N/m",
+     .lo = 0,
+     .hi = 1e15,
+     .loOpen = true,
+     .meaning = "in 2D per metre of depth",
+     .required = true},
+    {.name = "damping",
+     .type = KeyType::NUMBER,
+     .field = &SpringSpec<Dim>::damping,
+     .fallback = 0.0,
+     .unit = "N s/m",
+     .lo = 0,
+     .hi = 1e15},
+    {.name = "length",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "[0, 1e6]: the rest length",
+     .read = readRestLength<Dim>,
+     .shownDefault = "the distance at t = 0"},
+    {.name = "mooring",
+     .type = KeyType::FLAG,
+     .field = &SpringSpec<Dim>::mooring,
+     .fallback = false,
+     .meaning = "true: a mooring line, which pulls only when longer than its rest length"},
+};
 
 template <int Dim>
 std::vector<double> readInertia(const At& a) {
@@ -87,50 +141,207 @@ void readLocked(const At& a, BodyMotionSpec<Dim>& m) {
     for (std::size_t i = 0; i < a.v.size(); ++i) m.locked.push_back(a[i].choice(lockNames<Dim>()));
 }
 
+/// A free body's initial velocity (numbers).
 template <int Dim>
-void readFree(const At& a, BodyMotionSpec<Dim>& m) {
-    a.object({"type", "density", "mass", "velocity", "angular_velocity", "center_of_mass",
-              "inertia", "locked", "hinge", "hinge_body", "hinge_axis", "springs", "friction"});
-    if (a.has("density") == a.has("mass"))
-        a.fail("an object with one of \"density\" or \"mass\"",
-               "a free body's mass: give its density [kg/m^3] or its mass [kg]");
-    m.density = a.number("density", 0, 0, 1e6, true, "kg/m^3");
-    m.mass = a.number("mass", 0, 0, 1e300, true, Dim == 2 ? "kg/m" : "kg");
-    if (a.has("velocity")) {
-        const SceneVec<Dim> v = readVec<Dim>(a["velocity"], "m/s");
-        for (int k = 0; k < Dim; ++k) m.velocity[k] = v[k];
-    }
-    if (a.has("angular_velocity")) m.angularVelocity = readSpin<Dim>(a["angular_velocity"], "");
-    m.friction = a.number("friction", m.friction, 0, 10);
-    if (a.has("center_of_mass")) m.centerOfMass = readVec<Dim>(a["center_of_mass"], "m");
-    if (a.has("inertia")) m.inertia = readInertia<Dim>(a["inertia"]);
-    if (a.has("locked")) readLocked(a["locked"], m);
-    if (a.has("hinge")) m.hinge = readVec<Dim>(a["hinge"], "m");
-    if (a.has("hinge_body")) {
-        if (!m.hinge) a["hinge_body"].fail("a \"hinge\" point beside it (where the bodies turn)");
-        m.hingeBody = int(a["hinge_body"].integer(0, 1 << 30));
-    }
-    m.hingeAxis[BodyMotionSpec<Dim>::spinDim - 1] = 1;
-    if (a.has("hinge_axis")) {
-        if (Dim == 2) a["hinge_axis"].fail("no hinge_axis in 2D (a hinge turns about z)");
-        m.hingeAxis = readVec<BodyMotionSpec<Dim>::spinDim>(a["hinge_axis"], "");
-        if (!(norm(m.hingeAxis) > 0)) a["hinge_axis"].fail("a direction that is not zero");
-        m.hingeAxis /= norm(m.hingeAxis);
-    }
-    if (a.has("springs")) {
-        const At s = a["springs"];
-        if (!s.v.is_array()) s.fail("an array of springs");
-        for (std::size_t i = 0; i < s.v.size(); ++i) m.springs.push_back(readSpring<Dim>(s[i]));
+void readInitialVelocity(const At& a, BodyMotionSpec<Dim>& m) {
+    const SceneVec<Dim> v = readVec<Dim>(a, "m/s");
+    for (int k = 0; k < Dim; ++k) m.velocity[k] = v[k];
+}
+
+template <int Dim>
+void readInitialSpin(const At& a, BodyMotionSpec<Dim>& m) {
+    m.angularVelocity = readSpin<Dim>(a, "");
+}
+
+template <int Dim>
+void readCenterOfMass(const At& a, BodyMotionSpec<Dim>& m) {
+    m.centerOfMass = readVec<Dim>(a, "m");
+}
+
+template <int Dim>
+void readInertiaKey(const At& a, BodyMotionSpec<Dim>& m) {
+    m.inertia = readInertia<Dim>(a);
+}
+
+template <int Dim>
+void readHinge(const At& a, BodyMotionSpec<Dim>& m) {
+    m.hinge = readVec<Dim>(a, "m");
+}
+
+/// Read after the hinge.
+template <int Dim>
+void readHingeBody(const At& a, BodyMotionSpec<Dim>& m) {
+    if (!m.hinge) a.fail("a \"hinge\" point beside it (where the bodies turn)");
+    m.hingeBody = int(a.integer(0, 1 << 30));
+}
+
+template <int Dim>
+void readHingeAxis(const At& a, BodyMotionSpec<Dim>& m) {
+    if (Dim == 2) a.fail("no hinge_axis in 2D (a hinge turns about z)");
+    m.hingeAxis = readVec<BodyMotionSpec<Dim>::spinDim>(a, "");
+    if (!(norm(m.hingeAxis) > 0)) a.fail("a direction that is not zero");
+    m.hingeAxis /= norm(m.hingeAxis);
+}
+
+template <int Dim>
+void readSprings(const At& s, BodyMotionSpec<Dim>& m) {
+    if (!s.v.is_array()) s.fail("an array of springs");
+    for (std::size_t i = 0; i < s.v.size(); ++i) {
+        SpringSpec<Dim> spring;
+        readKeys(s[i], kSpringKeys<Dim>, spring);
+        m.springs.push_back(spring);
     }
 }
 
 template <int Dim>
-void readPrescribed(const At& a, BodyMotionSpec<Dim>& m) {
-    a.object({"type", "velocity", "angular_velocity", "center"});
-    if (a.has("velocity")) m.velocity = readMotionVelocity<Dim>(a["velocity"], "t");
-    if (a.has("angular_velocity")) m.angularVelocity = readSpin<Dim>(a["angular_velocity"], "t");
-    if (a.has("center")) m.center = readVec<Dim>(a["center"], "m");
+const KeyTable<BodyMotionSpec<Dim>> kFreeKeys{
+    {.name = "type",
+     .type = KeyType::CUSTOM,
+     .meaning = "`\"free\"`",
+     .required = true,
+     .read = readBefore<BodyMotionSpec<Dim>>},
+    {.name = "density",
+     .type = KeyType::NUMBER,
+     .field = &BodyMotionSpec<Dim>::density,
+     .fallback = 0.0,
+     .unit = "kg/m^3",
+     .lo = 0,
+     .hi = 1e6,
+     .loOpen = true,
+     .meaning = "the mass is the density times the shape's volume (area in 2D)",
+     .shownDefault = "this or `mass`"},
+    {.name = "mass",
+     .type = KeyType::NUMBER,
+     .field = &BodyMotionSpec<Dim>::mass,
+     .fallback = 0.0,
+     .unit = Dim == 2 ? "kg/m" : "kg",
+     .lo = 0,
+     .loOpen = true,
+     .meaning = "the mass (2D: kg/m, per metre of depth)",
+     .shownDefault = "this or `density`"},
+    {.name = "velocity",
+     .type = KeyType::CUSTOM,
+     .unit = "m/s",
+     .meaning = "initial velocity (numbers)",
+     .read = readInitialVelocity<Dim>,
+     .shownDefault = "zero"},
+    {.name = "angular_velocity",
+     .type = KeyType::CUSTOM,
+     .unit = "rad/s",
+     .meaning = "initial: a number in 2D (about z), `[wx, wy, wz]` in 3D",
+     .read = readInitialSpin<Dim>,
+     .shownDefault = "zero"},
+    {.name = "center_of_mass",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "a point",
+     .read = readCenterOfMass<Dim>,
+     .shownDefault = "the shape's centroid"},
+    {.name = "inertia",
+     .type = KeyType::CUSTOM,
+     .unit = "kg m^2",
+     .meaning = "about the centre of mass: a number in 2D (kg m²/m); in 3D three principal "
+                "moments (body axes along x, y, z at t = 0) or a symmetric positive definite 3x3 "
+                "array. Default: exact for boxes, circles, spheres, cylinders, cones, polygons "
+                "(one outline) and meshes, also scaled, rotated or moved; else (unions, "
+                "differences, intersections, polygons with holes, polylines) by quadrature on a "
+                "lattice of dx/4 (2D) or dx/2 (3D); uniform density",
+     .read = readInertiaKey<Dim>,
+     .shownDefault = "the shape's"},
+    {.name = "locked",
+     .type = KeyType::CUSTOM,
+     .meaning = "degrees of freedom held at rest: `\"x\"`, `\"y\"` (`\"z\"`), and `\"rotation\"` "
+                "in 2D or `\"rx\"`, `\"ry\"`, `\"rz\"` (world axes) in 3D",
+     .read = readLocked<Dim>,
+     .shownDefault = "none"},
+    {.name = "hinge",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "a point (at t = 0) the body turns about and nothing else (a flap)",
+     .read = readHinge<Dim>,
+     .shownDefault = "none"},
+    {.name = "hinge_body",
+     .type = KeyType::CUSTOM,
+     .meaning = "the index of the body that holds the hinge (another body, which it moves with; "
+                "the two do not touch each other)",
+     .read = readHingeBody<Dim>,
+     .shownDefault = "none (the world)"},
+    {.name = "hinge_axis",
+     .type = KeyType::CUSTOM,
+     .meaning = "3D: the hinge's axis",
+     .read = readHingeAxis<Dim>,
+     .shownDefault = "`[0, 0, 1]`"},
+    {.name = "springs",
+     .type = KeyType::CUSTOM,
+     .meaning = "springs or mooring lines from an anchor to the body, each with the keys of a "
+                "spring (below)",
+     .read = readSprings<Dim>,
+     .shownDefault = "none"},
+    {.name = "friction",
+     .type = KeyType::NUMBER,
+     .field = &BodyMotionSpec<Dim>::friction,
+     .fallback = 0.3,
+     .lo = 0,
+     .hi = 10,
+     .meaning = "Coulomb coefficient of contacts with walls and other bodies"},
+};
+
+/// The keys a free motion's reader read first, before its table: the friction before the centre
+/// of mass.
+const std::vector<std::string> kFreeReadFirst{"density", "mass", "velocity", "angular_velocity",
+                                              "friction"};
+
+template <int Dim>
+void readFree(const At& a, BodyMotionSpec<Dim>& m) {
+    a.object(keyNames(kFreeKeys<Dim>), keyNames(kFreeKeys<Dim>, true));
+    if (a.has("density") == a.has("mass"))
+        a.fail("an object with one of \"density\" or \"mass\"",
+               "a free body's mass: give its density [kg/m^3] or its mass [kg]");
+    m.hingeAxis[BodyMotionSpec<Dim>::spinDim - 1] = 1;
+    readKeyValues(a, kFreeKeys<Dim>, m, kFreeReadFirst);
 }
+
+template <int Dim>
+void readPrescribedVelocity(const At& a, BodyMotionSpec<Dim>& m) {
+    m.velocity = readMotionVelocity<Dim>(a, "t");
+}
+
+template <int Dim>
+void readPrescribedSpin(const At& a, BodyMotionSpec<Dim>& m) {
+    m.angularVelocity = readSpin<Dim>(a, "t");
+}
+
+template <int Dim>
+void readCenter(const At& a, BodyMotionSpec<Dim>& m) {
+    m.center = readVec<Dim>(a, "m");
+}
+
+template <int Dim>
+const KeyTable<BodyMotionSpec<Dim>> kPrescribedKeys{
+    {.name = "type",
+     .type = KeyType::CUSTOM,
+     .meaning = "`\"prescribed\"`",
+     .required = true,
+     .read = readBefore<BodyMotionSpec<Dim>>},
+    {.name = "velocity",
+     .type = KeyType::CUSTOM,
+     .unit = "m/s",
+     .meaning = "vector of numbers or expressions in `t`, e.g. `[\"0.05*cos(2*_pi*t)\", 0]`",
+     .read = readPrescribedVelocity<Dim>,
+     .shownDefault = "zero"},
+    {.name = "angular_velocity",
+     .type = KeyType::CUSTOM,
+     .unit = "rad/s",
+     .meaning = "number or expression in `t` (2D), array of three (3D)",
+     .read = readPrescribedSpin<Dim>,
+     .shownDefault = "zero"},
+    {.name = "center",
+     .type = KeyType::CUSTOM,
+     .unit = "m",
+     .meaning = "the point it turns about at t = 0 (a hinge)",
+     .read = readCenter<Dim>,
+     .shownDefault = "the shape's centroid"},
+};
 
 }  // namespace
 
@@ -150,12 +361,33 @@ BodyMotionSpec<Dim> readBodyMotion(const At& m) {
         readFree(m, spec);
     } else {
         spec.type = sph::MotionType::PRESCRIBED;
-        readPrescribed(m, spec);
+        readKeys(m, kPrescribedKeys<Dim>, spec);
     }
     return spec;
 }
 
+template <int Dim>
+const KeyTable<BodyMotionSpec<Dim>>& freeMotionKeys() {
+    return kFreeKeys<Dim>;
+}
+
+template <int Dim>
+const KeyTable<BodyMotionSpec<Dim>>& prescribedMotionKeys() {
+    return kPrescribedKeys<Dim>;
+}
+
+template <int Dim>
+const KeyTable<SpringSpec<Dim>>& springKeys() {
+    return kSpringKeys<Dim>;
+}
+
 template BodyMotionSpec<2> readBodyMotion<2>(const At&);
 template BodyMotionSpec<3> readBodyMotion<3>(const At&);
+template const KeyTable<BodyMotionSpec<2>>& freeMotionKeys<2>();
+template const KeyTable<BodyMotionSpec<3>>& freeMotionKeys<3>();
+template const KeyTable<BodyMotionSpec<2>>& prescribedMotionKeys<2>();
+template const KeyTable<BodyMotionSpec<3>>& prescribedMotionKeys<3>();
+template const KeyTable<SpringSpec<2>>& springKeys<2>();
+template const KeyTable<SpringSpec<3>>& springKeys<3>();
 
 }  // namespace num::app

@@ -17,17 +17,39 @@ namespace {
 template <int Dim>
 using SideKeys = KeyTable<SideInput<Dim>>;
 
-/// A wall's "thermal": exactly one of temperature [degC] or heat_flux [W/m^2]; adiabatic
-/// without it.
+const KeyTable<ThermalInput> kThermalKeys{
+    {.name = "temperature",
+     .type = KeyType::NUMBER,
+     .field = &ThermalInput::temperature,
+     .fallback = 0.0,
+     .unit = "degC",
+     .lo = -273.15,
+     .hi = 1e4,
+     .meaning = "held fixed",
+     .shownDefault = "this or `heat_flux`"},
+    {.name = "heat_flux",
+     .type = KeyType::NUMBER,
+     .field = &ThermalInput::heatFlux,
+     .fallback = 0.0,
+     .unit = "W/m^2",
+     .lo = -1e9,
+     .hi = 1e9,
+     .meaning = "into the fluid, delivered by the wall layer next to it",
+     .shownDefault = "this or `temperature`"},
+};
+
+/// A wall's "thermal": exactly one of its keys; adiabatic without it.
 template <int Dim>
 void readWallThermal(const At& t, SideInput<Dim>& in) {
-    t.object({"temperature", "heat_flux"});
+    t.object(keyNames(kThermalKeys));
     if (t.has("temperature") == t.has("heat_flux"))
         t.fail("an object with exactly one of \"temperature\" [degC] or \"heat_flux\" [W/m^2]");
-    in.thermal.condition = t.has("temperature") ? sph::ThermalCondition::FIXED_TEMPERATURE
-                                                : sph::ThermalCondition::HEAT_FLUX;
-    in.thermal.value = t.has("temperature") ? t["temperature"].number(-273.15, 1e4, false, "degC")
-                                            : t["heat_flux"].number(-1e9, 1e9, false, "W/m^2");
+    ThermalInput values;
+    readKeyValues(t, kThermalKeys, values);
+    const bool fixed = t.has("temperature");
+    in.thermal.condition =
+        fixed ? sph::ThermalCondition::FIXED_TEMPERATURE : sph::ThermalCondition::HEAT_FLUX;
+    in.thermal.value = fixed ? values.temperature : values.heatFlux;
 }
 
 template <int Dim>
@@ -52,9 +74,8 @@ const SideKeys<Dim>& wallKeys() {
          .shownDefault = "zero"},
         {.name = "thermal",
          .type = KeyType::CUSTOM,
-         .meaning = "exactly one of `temperature` [°C, [-273.15, 1e4]] (held fixed) or "
-                    "`heat_flux` [W/m², [-1e9, 1e9], into the fluid, delivered by the wall layer "
-                    "next to it]",
+         .meaning = "exactly one of `temperature` and `heat_flux` (a wall's `thermal`, under "
+                    "[`wall` sides](#wall-sides))",
          .read = readWallThermal<Dim>,
          .shownDefault = "absent: adiabatic"},
     };
@@ -226,6 +247,8 @@ void refuseOtherTypesKeys(const At& b, const std::string& name,
 }
 
 }  // namespace
+
+const KeyTable<ThermalInput>& wallThermalKeys() { return kThermalKeys; }
 
 template <int Dim>
 std::shared_ptr<const sph::WallBoundary<Dim>> readWallKeys(const At& b) {

@@ -30,6 +30,14 @@ struct SideInput {
     const detail::At* at = nullptr;
 };
 
+/// A wall's "thermal" as its keys are read: exactly one of them is given.
+struct ThermalInput {
+    double temperature = 0, heatFlux = 0;
+};
+
+/// The keys of a wall's "thermal" (a side's or an interior wall's).
+const KeyTable<ThermalInput>& wallThermalKeys();
+
 template <int Dim>
 struct BoundaryType {
     std::string name;               ///< the value of "type"

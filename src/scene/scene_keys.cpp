@@ -2,8 +2,11 @@
 // docs (scene/scene_keys.hpp; the tables: scene_key_tables.cpp, scene_key_tables_arrays.cpp).
 #include "scene/scene_keys.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
+#include "plugin/plugins.hpp"
 #include "scene/boundary_types.hpp"
 #include "scene/shape_reader.hpp"
 
@@ -123,6 +126,19 @@ void readKeyValues(const At& at, const KeyTable<Spec>& table, Spec& spec) {
 }
 
 template <class Spec>
+void readKeyValues(const At& at, const KeyTable<Spec>& table, Spec& spec,
+                   const std::vector<std::string>& first) {
+    const auto named = [&](const std::string& name) {
+        for (const SceneKey<Spec>& k : table)
+            if (name == k.name) return &k;
+        throw std::logic_error("no scene key \"" + name + "\" in the table of " + at.path);
+    };
+    for (const std::string& name : first) readKey(at, *named(name), spec);
+    for (const SceneKey<Spec>& k : table)
+        if (std::find(first.begin(), first.end(), k.name) == first.end()) readKey(at, k, spec);
+}
+
+template <class Spec>
 std::string keyTableMarkdown(const KeyTable<Spec>& table) {
     std::string md = "| key | unit | default | meaning |\n| --- | --- | --- | --- |\n";
     for (const SceneKey<Spec>& k : table)
@@ -134,6 +150,8 @@ std::string keyTableMarkdown(const KeyTable<Spec>& table) {
 #define NUMERICS_SCENE_KEYS(Spec)                                               \
     template void readKeys<Spec>(const At&, const KeyTable<Spec>&, Spec&);      \
     template void readKeyValues<Spec>(const At&, const KeyTable<Spec>&, Spec&); \
+    template void readKeyValues<Spec>(const At&, const KeyTable<Spec>&, Spec&,  \
+                                      const std::vector<std::string>&);         \
     template std::string keyTableMarkdown<Spec>(const KeyTable<Spec>&);
 NUMERICS_SCENE_KEYS(DomainInput<2>)
 NUMERICS_SCENE_KEYS(DomainInput<3>)
@@ -155,6 +173,15 @@ NUMERICS_SCENE_KEYS(SideInput<2>)
 NUMERICS_SCENE_KEYS(SideInput<3>)
 NUMERICS_SCENE_KEYS(TransformInput<2>)
 NUMERICS_SCENE_KEYS(TransformInput<3>)
+NUMERICS_SCENE_KEYS(ShapeInput<2>)
+NUMERICS_SCENE_KEYS(ShapeInput<3>)
+NUMERICS_SCENE_KEYS(BodyMotionSpec<2>)
+NUMERICS_SCENE_KEYS(BodyMotionSpec<3>)
+NUMERICS_SCENE_KEYS(SpringSpec<2>)
+NUMERICS_SCENE_KEYS(SpringSpec<3>)
+NUMERICS_SCENE_KEYS(ThermalInput)
+NUMERICS_SCENE_KEYS(PluginInput<2>)
+NUMERICS_SCENE_KEYS(PluginInput<3>)
 #undef NUMERICS_SCENE_KEYS
 
 }  // namespace num::app

@@ -1,10 +1,12 @@
 // The keys of the scene sections that are objects of values (domain, particles, time, numerics,
 // materials, physics, output), of the elements of the arrays `fluids`, `bodies`, `emitters` and
-// `probes`, of each boundary type and interior walls (scene/boundary_types.hpp) and of shapes'
-// transformations (scene/shape_reader.hpp), each declared once: name, type, range, default, unit
-// and meaning. The reader reads and checks them from these tables, and docs/scenes.md's tables
-// of these sections are made from them (tests/apps/test_scene_key_docs.cpp fails when the two
-// differ). Internal to numerics_app.
+// `probes`, of each boundary type, interior walls and a wall's `thermal`
+// (scene/boundary_types.hpp), of a body's free and prescribed motions and their springs
+// (scene/body_motion_reader.hpp) and of each shape and the shapes' transformations
+// (scene/shape_reader.hpp), each declared once: name, type, range, default, unit and meaning.
+// The reader reads and checks them from these tables, and the tables of these keys in
+// docs/scenes.md and docs/geometry.md are made from them (tests/apps/test_scene_key_docs.cpp
+// fails when the two differ). Internal to numerics_app.
 #pragma once
 
 #include <map>
@@ -126,6 +128,22 @@ void readKeys(const detail::At& at, const KeyTable<Spec>& table, Spec& spec);
 /// object has (its owner does: a boundary's type, an interior wall's shape).
 template <class Spec>
 void readKeyValues(const detail::At& at, const KeyTable<Spec>& table, Spec& spec);
+
+/// As readKeyValues, but the keys named in `first` before the others, in that order: a section
+/// whose keys were read in another order than its messages list them in, before its table (a
+/// name not in the table is a std::logic_error).
+template <class Spec>
+void readKeyValues(const detail::At& at, const KeyTable<Spec>& table, Spec& spec,
+                   const std::vector<std::string>& first);
+
+/// The names of the table's keys (its required keys only with `requiredOnly`), in its order.
+template <class Spec>
+std::vector<std::string> keyNames(const KeyTable<Spec>& table, bool requiredOnly = false) {
+    std::vector<std::string> names;
+    for (const SceneKey<Spec>& k : table)
+        if (!requiredOnly || k.required) names.emplace_back(k.name);
+    return names;
+}
 
 /// docs/scenes.md's table of these keys (key, unit, default, meaning), lines ending in '\n'.
 template <class Spec>

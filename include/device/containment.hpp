@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/flat_solid_view.hpp"
+#include "sph/bodies/body_frame.hpp"
 #include "sph/formulas/post_step.hpp"
 #include "sph/setup/shapes.hpp"
 
@@ -20,6 +21,7 @@ struct ContainmentSolid {
     int firstNode = -1;  ///< -1: `shape`; else the solid's nodes [firstNode, + nodeCount)
     int nodeCount = 0, firstValue = 0, valueCount = 0;
     geometry::Bounds<Dim> bounds;  ///< PlacedShape::solidBounds: outside it, surely outside
+    int moving = -1;  ///< a moving body's index (its frame; shape and bounds at t = 0), or -1
 
     NUMERICS_HD bool mayContain(const sph::Vector<Dim>& x) const {
         for (int k = 0; k < Dim; ++k)
@@ -36,22 +38,38 @@ struct ContainmentSolids {
     std::vector<double> values;
 };
 
+/// One solid with its flat data, in the pose of its shape (for a moving body: at t = 0).
+template <int Dim>
+struct SolidInPose {
+    const ContainmentSolid<Dim>* s;
+    const geometry::FlatNode* nodes;
+    const double* values;
+    NUMERICS_HD bool mayContain(const sph::Vector<Dim>& x) const { return s->mayContain(x); }
+    NUMERICS_HD void contain(sph::Vector<Dim>& x, sph::Vector<Dim>& v) const {
+        if (s->firstNode < 0) {
+            sph::formulas::containOutsideBody<Dim>(x, v, s->shape);
+        } else {
+            const geometry::FlatSolidView<Dim> flat{nodes + s->firstNode, s->nodeCount,
+                                                    values + s->firstValue, s->valueCount};
+            sph::formulas::containOutsideBody<Dim>(x, v, flat);
+        }
+    }
+};
+
 /// Reflects x (and removes the velocity into it) out of every solid that may hold it
-/// (sph::formulas::containOutsideBody, as ParticleContainment on the CPU).
+/// (sph::formulas::containOutsideBody, as ParticleContainment on the CPU); a moving body's in
+/// its frame (frames: the bodies', null when none moves; sph::containInBodyFrame).
 template <int Dim>
 NUMERICS_HD void containOutsideSolids(sph::Vector<Dim>& x, sph::Vector<Dim>& v,
                                       const ContainmentSolid<Dim>* solids, int count,
-                                      const geometry::FlatNode* nodes, const double* values) {
+                                      const geometry::FlatNode* nodes, const double* values,
+                                      const sph::BodyFrame<Dim>* frames) {
     for (int b = 0; b < count; ++b) {
-        const ContainmentSolid<Dim>& s = solids[b];
-        if (!s.mayContain(x)) continue;
-        if (s.firstNode < 0) {
-            sph::formulas::containOutsideBody<Dim>(x, v, s.shape);
-        } else {
-            const geometry::FlatSolidView<Dim> flat{nodes + s.firstNode, s.nodeCount,
-                                                    values + s.firstValue, s.valueCount};
-            sph::formulas::containOutsideBody<Dim>(x, v, flat);
-        }
+        const SolidInPose<Dim> solid{solids + b, nodes, values};
+        if (frames && solids[b].moving >= 0)
+            sph::containInBodyFrame<Dim>(x, v, frames[solids[b].moving], solid);
+        else if (solid.mayContain(x))
+            solid.contain(x, v);
     }
 }
 

@@ -9,6 +9,7 @@
 
 #include "device/containment.hpp"
 #include "geometry/flat_solid.hpp"
+#include "sph/bodies/moving_bodies.hpp"
 #include "sph/setup/fluid_geometry.hpp"
 
 namespace num::device {
@@ -27,10 +28,12 @@ std::string firstSolidNotOnDevice(const sph::FluidGeometry<Dim>& g) {
     return "";
 }
 
-/// The bodies, then the walls inside the domain, in the CPU containment's order. Throws
-/// std::invalid_argument for a solid flatten() does not take (check firstSolidNotOnDevice).
+/// The bodies, then the walls inside the domain, in the CPU containment's order; a body that
+/// moving->moves() kept out in its frame. Throws std::invalid_argument for a solid flatten()
+/// does not take (check firstSolidNotOnDevice).
 template <int Dim>
-ContainmentSolids<Dim> containmentSolids(const sph::FluidGeometry<Dim>& g) {
+ContainmentSolids<Dim> containmentSolids(const sph::FluidGeometry<Dim>& g,
+                                         const sph::MovingBodies<Dim>* moving = nullptr) {
     ContainmentSolids<Dim> out;
     const auto add = [&](const sph::PlacedShape<Dim>& p) {
         ContainmentSolid<Dim> s;
@@ -45,7 +48,10 @@ ContainmentSolids<Dim> containmentSolids(const sph::FluidGeometry<Dim>& g) {
         }
         out.solids.push_back(s);
     };
-    for (const sph::SolidBody<Dim>& body : g.bodies) add(body);
+    for (std::size_t b = 0; b < g.bodies.size(); ++b) {
+        add(g.bodies[b]);
+        if (moving && moving->moves(int(b))) out.solids.back().moving = int(b);
+    }
     for (const sph::InteriorWall<Dim>& wall : g.interiorWalls) add(wall);
     return out;
 }

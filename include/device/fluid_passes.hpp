@@ -196,7 +196,7 @@ struct InputsPass {
         const bool isFluid = d.kind[i] == fluid;
         const Float volume = sph::formulas::particleVolume(d.m[i], d.rho[i]);
         d.volume[i] = volume;
-        if (isFluid) d.u[i] = d.v[i];
+        if (isFluid || sph::isBuffer(d.kind[i])) d.u[i] = d.v[i];  // a buffer: its own
         d.pOverRho2[i] = sph::formulas::pressureOverDensity2(d.p[i], d.rho[i]);
         d.mu[i] = sph::formulas::dynamicViscosity(d.rho[i], d.nu[i]);
         d.active[i] = isFluid || d.slip[i] == noSlip;
@@ -246,9 +246,10 @@ struct FluidGather {
             const Float w = kernelValue.value(r);
             const bool fluidj = d.kind[j] == fluid;
             const Float vj = d.volume[j], rhoj = d.rho[j];
-            // Continuity (+ delta-SPH between fluid particles).
-            continuity += f::continuityRate(
-                rhoi, vj, f::continuityDivergence<Dim>(vi, fluidj ? d.v[j] : Vec{}, grad));
+            // Continuity with every neighbour's own velocity (a held wall's is zero; a buffer's
+            // and a moving body's are not), delta-SPH between fluid particles.
+            continuity +=
+                f::continuityRate(rhoi, vj, f::continuityDivergence<Dim>(vi, d.v[j], grad));
             if (deltaCoefficient != 0 && fluidj)
                 diffusion += f::deltaSphFlux<Dim>(deltaCoefficient, rhoi, rhoj, gravityTerm, dx,
                                                   grad, inverseR2) *
@@ -367,6 +368,8 @@ struct PostStep {
     int solidCount;
     const geometry::FlatNode* flatNodes;
     const double* flatValues;
+    sph::formulas::OutletOpening<Dim> openings[Dim][2];  // fluid passes through an outlet
+    const sph::BodyFrame<Dim>* frames = nullptr;         // the bodies' (null: none moves)
     NUMERICS_HD void operator()(Index i) const {
         if (d.kind[i] != fluid) return;
         if (shifting && !sph::atFreeSurface(d.kernelSum[i], d.volume[i], w0) &&
@@ -380,9 +383,12 @@ struct PostStep {
         }
         if (contain) {
             for (int k = 0; k < Dim; ++k)
-                sph::formulas::containInWalls(d.x[i][k], d.v[i][k], lo[k], hi[k], wallLow[k],
-                                              wallHigh[k]);
-            containOutsideSolids<Dim>(d.x[i], d.v[i], solids, solidCount, flatNodes, flatValues);
+                sph::formulas::containInWalls(
+                    d.x[i][k], d.v[i][k], lo[k], hi[k],
+                    wallLow[k] && !openings[k][0].letsThrough(d.x[i], k),
+                    wallHigh[k] && !openings[k][1].letsThrough(d.x[i], k));
+            containOutsideSolids<Dim>(d.x[i], d.v[i], solids, solidCount, flatNodes, flatValues,
+                                      frames);
         }
     }
 };

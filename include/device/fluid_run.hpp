@@ -3,7 +3,8 @@
 // and the device step, and DeviceRun, sph::Run's step (timestepping.hpp) over a device step:
 // the adaptive step from the same criteria (sph/formulas/time_step.hpp, from maxima reduced on
 // the device, offered in the CPU solver's order, the diffusion limit of conduction last), the
-// leapfrog (sph/formulas/leapfrog.hpp), the post-step phase. The apps' step loop is Simulation's
+// leapfrog (sph/formulas/leapfrog.hpp), the post-step phase with the moving bodies advanced on
+// the host (device/body_run.hpp). The apps' step loop is Simulation's
 // (src/run/engine.hpp: the device engine). The heat books of thermal_walls.hpp (heat delivered by
 // fixed temperatures and sources) are not kept on the device.
 #pragma once
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "device/body_run.hpp"
 #include "device/containment_setup.hpp"
 #include "device/device_terms.hpp"
 #include "device/fluid_step_on.hpp"
@@ -41,6 +43,27 @@ std::string unsupported(const sph::FluidModel<Dim>& model, const sph::FluidGeome
         sph::Evaluation::SYMMETRIC)
         return "symmetric evaluation";
     return "";
+}
+
+/// The outlets' openings and pressure (inlets need nothing: the host sets their particles'
+/// velocity and temperature after every step, FlowBoundaries::exchange).
+template <int Dim>
+void setFlowSides(FluidStepConfig<Dim>& c, const sph::FluidModel<Dim>& model,
+                  const sph::FluidGeometry<Dim>& geometry) {
+    const std::shared_ptr<const sph::FlowBoundaries<Dim>> flow = model.flowBoundaries;
+    if (!flow) return;
+    bool outlets = false;
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) {
+            const sph::WallSide<Dim>& side = geometry.walls[k][hi];
+            if (!geometry.hasWall(k, hi) || side.layers != sph::ParticleKind::OUTLET) continue;
+            c.outlets[k][hi] = {true, side.openFrom, side.openTo};
+            outlets = true;
+        }
+    if (outlets)
+        c.outletPressure = [flow](const Vector<Dim>& x, Float t) {
+            return flow->sides[flow->sideOf(x, sph::ParticleKind::OUTLET)].pressure(x, t);
+        };
 }
 
 template <int Dim>
@@ -77,7 +100,10 @@ FluidStepConfig<Dim> makeFluidStepConfig(const sph::FluidModel<Dim>& model,
     c.shiftingCoefficient = model.shiftingCoefficient;
     c.shiftingNormalToWalls = model.shiftingNormalToWalls;
     c.contain = model.containParticles && boundaries;
-    c.solids = containmentSolids(geometry);
+    if (model.movingBodies && model.movingBodies->anyMoves())
+        c.movingBodies = model.movingBodies, c.spacing = geometry.spacing;
+    c.solids = containmentSolids(geometry, c.movingBodies.get());
+    setFlowSides(c, model, geometry);
     c.bodyForce = model.bodyForce;
     c.conduction = model.heat.conduction;
     c.buoyancy = model.heat.buoyancy && bool(model.bodyForce);  // as makeHeatEquations
@@ -178,6 +204,7 @@ void copyBack(const ParticleArrays<Dim>& p, sph::Storage<Dim>& s) {
     detail::store(s, FluidId::SURFACE_NEIGHBOURS, p.surfaceNeighbours);
     detail::store(s, FluidId::VOLUME, p.volume);
     detail::store(s, FluidId::PAIR_VELOCITY, p.pairVelocity);
+    if (!p.wallVelocity.empty()) detail::store(s, QuantityId::WALL_VELOCITY, p.wallVelocity);
     detail::store(s, FluidId::KERNEL_SUM_GRADIENT, p.kernelSumGradient);
     detail::store(s, FluidId::DENSITY_GRADIENT, p.densityGradient);
     detail::store(s, FluidId::WALL_DIRECTION, p.wallDirection);
@@ -203,12 +230,18 @@ class DeviceRun : public sph::StepClock {
     using Size = sph::Size;
     DeviceRun(std::unique_ptr<IDeviceFluid<Dim>> fluid, const FluidStepConfig<Dim>& config,
               Float t0 = 0)
-        : sph::StepClock(t0), fluid_(std::move(fluid)), config_(config) {}
+        : sph::StepClock(t0), fluid_(std::move(fluid)), config_(config) {
+        if (config.movingBodies)
+            bodies_.emplace(config.movingBodies, config.bodyForce, config.eos.c0, config.spacing);
+    }
 
     /// Copies the storage's particles to the device. primed: its rates are those at the
     /// current time (a restart), so the first step needs no evaluation first.
     void upload(const sph::Storage<Dim>& s, bool primed) {
-        fluid_->upload(particleArrays(s));
+        ParticleArrays<Dim> p = particleArrays(s);
+        if (bodies_) bodies_->addParticles(s, p);
+        fluid_->upload(p);
+        if (bodies_) fluid_->setBodies(bodies_->deviceBodies());
         primed_ = primed;
         limits_.reset();
     }
@@ -220,6 +253,7 @@ class DeviceRun : public sph::StepClock {
     }
     void prime() {
         fluid_->evaluate(time());
+        takeBodyLoads();
         primed_ = true;
         limits_.reset();
     }
@@ -237,7 +271,12 @@ class DeviceRun : public sph::StepClock {
         const sph::PlannedStep planned = plan(timeStepLimits(), tEnd);
         limits_.reset();
         fluid_->advance(time(), planned.dt);
+        takeBodyLoads();
         count(planned, tEnd);
+        if (bodies_) {  // RigidBodyCoupling::postStep at the new time, after shifting
+            bodies_->advance(time(), planned.dt);
+            fluid_->setBodies(bodies_->deviceBodies());
+        }
         fluid_->postStep(planned.dt);
         return planned.dt;
     }
@@ -245,6 +284,13 @@ class DeviceRun : public sph::StepClock {
     IDeviceFluid<Dim>& fluid() { return *fluid_; }
 
   private:
+    /// The moving bodies' loads of the last evaluation (RigidBodyCoupling's finalize).
+    void takeBodyLoads() {
+        if (!bodies_) return;
+        fluid_->bodyLoads(loads_);
+        bodies_->takeLoads(loads_);
+    }
+
     sph::TimeStepLimits computeLimits() {
         sph::TimeStepLimits limits(sequential_);
         if (config_.dtFixed > 0) {
@@ -273,6 +319,8 @@ class DeviceRun : public sph::StepClock {
     sph::SequentialScheduler sequential_;
     bool primed_ = false;
     std::optional<sph::TimeStepLimits> limits_;  ///< of the current state
+    std::optional<DeviceBodyRun<Dim>> bodies_;   ///< moving bodies (none: empty)
+    BodyLoads<Dim> loads_;
 };
 
 }  // namespace num::device

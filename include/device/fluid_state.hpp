@@ -7,11 +7,14 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <vector>
 
+#include "device/body_state.hpp"
 #include "device/containment.hpp"
 #include "sph/formulas/equation_of_state.hpp"
 #include "sph/formulas/fluid_particles.hpp"
+#include "sph/formulas/post_step.hpp"
 #include "sph/kernel_choice.hpp"
 #include "sph/setup/shapes.hpp"
 #include "sph/types.hpp"
@@ -55,6 +58,15 @@ struct FluidStepConfig {
     bool wallLow[Dim] = {}, wallHigh[Dim] = {};   ///< which box sides are walls
     ContainmentSolids<Dim> solids;                ///< the bodies and interior walls (containment)
     std::function<Vector<Dim>(Float)> bodyForce;  ///< empty: none
+    // Moving bodies (host side, device/body_run.hpp: null when none moves): the run's bodies,
+    // which the host advances, and the particle spacing of their contacts.
+    std::shared_ptr<sph::MovingBodies<Dim>> movingBodies;
+    Float spacing = 0;
+    // Inlets and outlets (boundary/flow_boundaries.hpp): each side's outlet opening, which the
+    // containment lets fluid through, and the outlets' pressure p_out(x, t), an expression of
+    // the scene evaluated on the host (empty: no outlet).
+    sph::formulas::OutletOpening<Dim> outlets[Dim][2] = {};
+    std::function<Float(const Vector<Dim>&, Float)> outletPressure;
     // Heat (terms/heat_model.hpp).
     bool conduction = false;  ///< conduction with the thermal conditions of walls and bodies
     bool buoyancy = false;    ///< Boussinesq buoyancy with the body force as g
@@ -79,6 +91,10 @@ struct ParticleArrays {
     std::vector<Float> m, rho, drho, p, nu, kernelSum, surfaceNeighbours;
     std::vector<int> kind, slip;
     std::vector<Vec> wallVelocity;  ///< empty: every boundary is held
+    // Moving bodies (empty without): BODY_INDEX, BODY_OFFSET, and the particle's rank among the
+    // moving particles (-1: not moving), where the device leaves its load (device/body_step.hpp).
+    std::vector<int> body, bodySlot;
+    std::vector<Vec> bodyOffset;
     // Heat (empty without): temperature and its rate, the temperature shown to conduction
     // (heat_ids::BOUNDARY_TEMPERATURE), heat source [W/kg], material, thermal condition.
     std::vector<Float> T, dT, Tb, heatSource;
@@ -128,8 +144,14 @@ class IDeviceFluid {
     virtual sph::FluidExtent<Dim> fluidExtent() = 0;
     /// The leapfrog from t to t + dt: kick-drift, evaluate at t + dt, kick.
     virtual void advance(Float t, Float dt) = 0;
-    /// The post-step phase of a step of dt: shifting, containment.
+    /// The post-step phase of a step of dt: shifting, the moving bodies' particles placed,
+    /// containment.
     virtual void postStep(Float dt) = 0;
+    /// The moving bodies' frames and contact data (before the first evaluation, after each
+    /// advance of the bodies).
+    virtual void setBodies(const DeviceBodies<Dim>& bodies) = 0;
+    /// The moving particles' loads of the last evaluation (device/body_state.hpp).
+    virtual void bodyLoads(BodyLoads<Dim>& loads) = 0;
     virtual std::size_t size() const = 0;
     /// Memory the step holds in its execution [bytes].
     virtual std::size_t bytes() const = 0;

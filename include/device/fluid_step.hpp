@@ -12,17 +12,26 @@
 //   -> wall pass:   the wall condition of Adami et al. 2012 (boundary particles, walls and
 //                   bodies, gather fluid); with conduction the temperature a fixed-temperature
 //                   boundary particle shows
-//   -> inputs pass: V = m / rho, the pair velocity, p / rho^2, mu = rho nu, 1 / W(V^(1/Dim)),
-//                   the free-surface flags of the previous kernel sum
+//   -> outlet pass (outlets): p = p_out(x, t) (an expression, evaluated on the host), rho(p),
+//                   v the Shepard mean of the fluid's and outlets' (device/outlet_pass.hpp)
+//   -> inputs pass: V = m / rho, the pair velocity (a buffer particle's own velocity), p / rho^2,
+//                   mu = rho nu, 1 / W(V^(1/Dim)), the free-surface flags of the previous
+//                   kernel sum
 //   -> pair pass:   each fluid particle gathers its neighbours once: continuity + delta-SPH,
 //                   pressure gradient, artificial and laminar viscosity, kernel sums, the
 //                   shifting sums; then the body force and Boussinesq buoyancy. Boundary
 //                   particles' rates are zero.
 //   -> heat pass:   conduction: every particle that is not adiabatic gathers its neighbours;
 //                   then the thermal conditions (fixed temperature, heat sources)
+//   -> body pass:   moving bodies (the coupling's finalize, last): each moving body particle
+//                   gathers the fluid's force on it and its contacts (device/body_step.hpp);
+//                   the host sums them into each body's force and torque (device/body_run.hpp)
 // The leapfrog of sph/timestepping.hpp (kick-drift, evaluate, kick; Heun for the density and
-// the temperature) and the post-step phase (particle shifting, containment in the box's walls
-// and out of the bodies and interior walls, of any shape but a mesh) are passes too.
+// the temperature) and the post-step phase (particle shifting; the moving bodies advanced on the
+// host, their particles placed from their frames; containment in the box's walls and out of the
+// bodies, a moving one in its frame, and interior walls, of any shape but a mesh, letting fluid
+// through an outlet's opening) are passes too. Inlets and outlets exchange particles with the
+// fluid on the host after each step (FlowBoundaries::exchange).
 // Every formula is the shared one of sph/formulas/ (host and device).
 //
 // Order and round-off: a particle's neighbours come in the grid's order (device/
@@ -41,10 +50,12 @@
 #include <utility>
 #include <vector>
 
+#include "device/body_step.hpp"
 #include "device/execution.hpp"
 #include "device/fluid_passes.hpp"
 #include "device/fluid_state.hpp"
 #include "device/neighbour_grid.hpp"
+#include "device/outlet_pass.hpp"
 #include "sph/formulas/fluid_pairs.hpp"
 #include "sph/formulas/fluid_particles.hpp"
 #include "sph/formulas/heat_pairs.hpp"
@@ -107,7 +118,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
           condition_(exec),
           materials_(exec),
           fixedPower_(exec),
-          sourcePower_(exec) {
+          sourcePower_(exec),
+          outletP_(exec),
+          bodies_(exec) {
         for (int b = 0; b < Dim; ++b) gradV_.emplace_back(exec);
         if (!c_.solids.solids.empty()) solids_.upload(c_.solids.solids);
         if (!c_.solids.nodes.empty()) flatNodes_.upload(c_.solids.nodes);
@@ -122,6 +135,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         drho_.upload(s.drho), p_.upload(s.p), nu_.upload(s.nu), kernelSum_.upload(s.kernelSum);
         surfaceNeighbours_.upload(s.surfaceNeighbours), kind_.upload(s.kind), slip_.upload(s.slip);
         if (sliding_) wallVelocity_.upload(s.wallVelocity);
+        bodies_.upload(s);
         u_.upload(s.pairVelocity);
         std::vector<Index> origin(n_);
         std::iota(origin.begin(), origin.end(), Index(0));
@@ -154,6 +168,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         fetch(gradRho_, s.densityGradient), fetch(wallDirection_, s.wallDirection);
         for (int b = 0; b < Dim; ++b) fetch(gradV_[b], s.velocityGradient[b]);
         s.nu.resize(n_), fetch(nu_, s.nu);
+        if (sliding_) s.wallVelocity.resize(n_), fetch(wallVelocity_, s.wallVelocity);
         if (heat_) {
             s.T.resize(n_), s.dT.resize(n_), s.Tb.resize(n_);
             fetch(T_, s.T), fetch(dT_, s.dT), fetch(Tb_, s.Tb);
@@ -184,6 +199,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
                 exec_.forEach(
                     n_, passes::WallPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(), value,
                                                  c_.eos, g, heat_ && c_.conduction});
+            if (c_.outletPressure) imposeOutlets(d, value, t);
             exec_.forEach(n_, passes::InputsPass<Dim, K>{d, value, c_.w0});
             exec_.forEach(
                 n_, passes::FluidGather<Dim, K>{
@@ -194,6 +210,10 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
                 exec_.forEach(
                     n_, passes::HeatPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(),
                                                  sph::GradientFactor<K>(c_.h), c_.laplacianEta2});
+            // The moving bodies' loads (RigidBodyCoupling's finalize, in the last pass).
+            bodies_.template sumLoads<K>(d, grid_.grid(), grid_.start(), grid_.end(),
+                                         {true, c_.alphaC0h, c_.laplacianEta2, c_.inverseR2Eta2},
+                                         c_.h, n_);
         });
     }
 
@@ -236,6 +256,9 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     }
 
     void postStep(Float dt) override {
+        // The moving bodies' particles placed (RigidBodyCoupling::postStep, after shifting: it
+        // moves fluid particles only, these boundary particles only).
+        bodies_.place(arrays(), n_);
         if (!c_.shifting && !c_.contain) return;
         passes::PostStep<Dim> post{arrays(),
                                    c_.shifting,
@@ -252,11 +275,18 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
                                    solids_.data(),
                                    int(c_.solids.solids.size()),
                                    flatNodes_.data(),
-                                   flatValues_.data()};
-        for (int k = 0; k < Dim; ++k)
+                                   flatValues_.data(),
+                                   {},
+                                   bodies_.frames()};
+        for (int k = 0; k < Dim; ++k) {
             post.wallLow[k] = c_.wallLow[k], post.wallHigh[k] = c_.wallHigh[k];
+            post.openings[k][0] = c_.outlets[k][0], post.openings[k][1] = c_.outlets[k][1];
+        }
         exec_.forEach(n_, post);
     }
+
+    void setBodies(const DeviceBodies<Dim>& b) override { bodies_.set(b); }
+    void bodyLoads(BodyLoads<Dim>& loads) override { bodies_.loads(loads); }
 
     std::size_t size() const override { return n_; }
     std::size_t bytes() const override {
@@ -275,7 +305,7 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
         b += flatNodes_.bytes() + flatValues_.bytes();
         for (const auto* f : {&T_, &dT_, &dTOld_, &Tb_, &heatSource_}) b += f->bytes();
         b += material_.bytes() + condition_.bytes() + materials_.bytes();
-        b += fixedPower_.bytes() + sourcePower_.bytes();
+        b += fixedPower_.bytes() + sourcePower_.bytes() + outletP_.bytes() + bodies_.bytes();
         return b;
     }
     const char* execution() const override { return Exec::name(); }
@@ -341,7 +371,25 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
             for (auto* b : {&T_, &dT_, &dTOld_, &Tb_, &heatSource_}) permute(*b, tempFloat_);
             permute(material_, tempInt_), permute(condition_, tempInt_);
         }
+        bodies_.permute(permute, tempInt_, tempVec_);
         permute(origin_, tempIndex_);
+    }
+
+    /// The outlets' condition (outlet_pass.hpp): p_out(x, t) is an expression of the scene, so
+    /// the positions and kinds come to the host, which evaluates it at each outlet particle.
+    template <class K>
+    void imposeOutlets(const passes::Arrays<Dim>& d, const sph::KernelValue<K>& value, Float t) {
+        hostX_.resize(n_), hostKind_.resize(n_), hostP_.assign(n_, 0.0);
+        exec_.download(hostX_.data(), x_.data(), n_);
+        exec_.download(hostKind_.data(), kind_.data(), n_);
+        for (Index i = 0; i < n_; ++i)
+            if (hostKind_[i] == passes::outlet) hostP_[i] = c_.outletPressure(hostX_[i], t);
+        outletP_.upload(hostP_);
+        tempVec_.resize(n_);
+        exec_.forEach(n_,
+                      passes::OutletPass<Dim, K>{d, grid_.grid(), grid_.start(), grid_.end(), value,
+                                                 c_.eos, outletP_.data(), tempVec_.data()});
+        exec_.copy(v_.data(), tempVec_.data(), n_);
     }
 
     template <class T>
@@ -380,6 +428,11 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     Buffer<int, Exec> material_, condition_;
     Buffer<DeviceMaterial, Exec> materials_;
     Buffer<Float, Exec> fixedPower_, sourcePower_;  // each particle's, for the heat books
+    Buffer<Float, Exec> outletP_;                   // the outlets' pressure p_out (0 elsewhere)
+    BodyParticles<Dim, Exec> bodies_;               // the moving bodies' (device/body_step.hpp)
+    std::vector<Vec> hostX_;  // the positions and kinds the host evaluates p_out at
+    std::vector<int> hostKind_;
+    std::vector<Float> hostP_;
     std::vector<unsigned char> tempHost_;
     std::vector<Index> originHost_;
 };

@@ -26,6 +26,11 @@ class FluidStepOn final : public IDeviceFluid<Dim> {
     sph::FluidExtent<Dim> fluidExtent() override { return step_.fluidExtent(); }
     void advance(Float t, Float dt) override { step_.advance(t, dt); }
     void postStep(Float dt) override { step_.postStep(dt); }
+    void setBodies(const DeviceBodies<Dim>& b) override { step_.setBodies(b); }
+    void bodyLoads(BodyLoads<Dim>& loads) override {
+        exec_.synchronize();
+        step_.bodyLoads(loads);
+    }
     std::size_t size() const override { return step_.size(); }
     std::size_t bytes() const override { return step_.bytes(); }
     const char* execution() const override { return step_.execution(); }

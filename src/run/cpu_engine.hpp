@@ -42,6 +42,7 @@ class CpuEngine final : public IEngine<Dim> {
     }
     void takeWrittenParticles() override {}
     void takeNewParticleSet() override { run_.particlesChanged(); }
+    void takeImposedValues() override {}  // set in the storage the solver steps
     void setDecomposition(sph::IDecomposition<Dim>* d) override { solver_.setDecomposition(d); }
     void setAbandonCheck(std::function<bool()> check) override {
         solver_.setAbandonCheck(std::move(check));

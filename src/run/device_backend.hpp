@@ -42,17 +42,6 @@ std::pair<std::string, std::string> keyNotOnCuda(const Scene<Dim>& scene,
                                                  const SceneSetup<Dim>& setup) {
     if (const std::string solid = device::firstSolidNotOnDevice(setup.geometry); !solid.empty())
         return {solid + ".shape", "a mesh shape"};
-    for (int k = 0; k < Dim; ++k)
-        for (int hi = 0; hi < 2; ++hi) {
-            const std::string side = std::string("boundaries.") + sideName(k, hi) + ".type \"" +
-                                     scene.sides[k][hi]->type() + "\"";
-            if (setup.model.flowBoundaries && setup.geometry.hasWall(k, hi) &&
-                !setup.geometry.isSolidWall(k, hi))
-                return {side, "an inlet or outlet"};
-        }
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-        if (scene.bodies[i].motion.type != sph::MotionType::FIXED)
-            return {"bodies[" + std::to_string(i) + "].motion", "a moving body"};
     if (scene.integrator != "leapfrog")
         return {"time.integrator \"" + scene.integrator + "\"", "this integrator"};
     if (sph::evaluationFromName(scene.evaluation) == sph::Evaluation::SYMMETRIC)
@@ -167,6 +156,7 @@ class DeviceEngine final : public IEngine<Dim> {
     void takeWrittenParticles() override { run_->upload(storage_, false); }
     // The host's rates are those of the current time (the CPU engine steps on with them too).
     void takeNewParticleSet() override { run_->upload(storage_, true); }
+    void takeImposedValues() override { run_->upload(storage_, true); }
     void setDecomposition(sph::IDecomposition<Dim>*) override {
         throw std::logic_error("the CUDA back end runs on one process");
     }

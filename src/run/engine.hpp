@@ -43,6 +43,9 @@ class IEngine {
     virtual void takeWrittenParticles() = 0;
     /// Particles were added or removed on the host (emitters, inlets, outlets, open sides).
     virtual void takeNewParticleSet() = 0;
+    /// The host set imposed values of the same particles between steps (the velocity and the
+    /// temperature of an inlet's buffer particles); the rates are still those of the time.
+    virtual void takeImposedValues() = 0;
     /// Several processes: the CPU engine's pair loops over each one's share and halo.
     virtual void setDecomposition(sph::IDecomposition<Dim>* decomposition) = 0;
     /// Abandons a step in progress when check() is true (Ctrl-C), where the engine can.

@@ -115,7 +115,10 @@ class ParticleFlowObserver final : public IStepObserver<Dim> {
         }
         changed = exchangeFlow(p, sim.time()) || changed;
         changed = emitParticles(p, sim.time()) > 0 || changed;
-        if (changed) p.engine->takeNewParticleSet();
+        if (changed)
+            p.engine->takeNewParticleSet();
+        else if (p.setup->model.flowBoundaries)
+            p.engine->takeImposedValues();  // the inlets' velocity and temperature of the time
         const auto& warnings = p.emitters->warnings();
         for (; printed_ < warnings.size(); ++printed_) p.warn(warnings[printed_]);
     }

@@ -66,6 +66,26 @@ TEST(DeviceRefusal, RunsDensityBySummation) {
     EXPECT_EQ(refusal(m), "");
 }
 
+/// Moving bodies (the rigid body coupling term): a free box and a prescribed paddle.
+TEST(DeviceRefusal, RunsMovingBodies) {
+    FluidGeometry<2> g = tank();
+    FluidModel<2> m = water();
+    m.movingBodies = std::make_shared<MovingBodies<2>>();
+    for (const double x : {0.6, 0.8}) {
+        SolidBody<2> body;
+        body.shape = BoxOrBall<2>::box({{x, 0.6}}, {{x + 0.1, 0.7}});
+        g.bodies.push_back(body);
+        MovingBody<2> moving;
+        moving.motion.type = x < 0.7 ? MotionType::FREE : MotionType::PRESCRIBED;
+        moving.motion.mass = 5, moving.motion.inertia.zz = 0.01;
+        moving.motion.velocity = [](Float) { return Vector<2>{{0.1, 0}}; };
+        moving.motion.spin = [](Float) { return Spin<2>{{1}}; };
+        moving.state.position = moving.initialPosition = Vector<2>{{x + 0.05, 0.65}};
+        m.movingBodies->bodies.push_back(moving);
+    }
+    EXPECT_EQ(refusal(m, g), "");
+}
+
 TEST(DeviceRefusal, RunsWallsInsideTheDomain) {
     FluidGeometry<2> g = tank();
     InteriorWall<2> wall;

@@ -168,6 +168,19 @@ double largestDifference(const std::vector<V>& a, const std::vector<V>& b) {
 
 /// Two evaluations (the second with the first's kernel sums: the tension limit and the surface
 /// flags act) by the CPU solver and by the device step, from the same particles.
+/// Boundary particles that conduct gather their neighbours in the CPU engine's fused pair pass,
+/// which then also leaves the fluid's kernel and shifting sums on them; nothing reads those (the
+/// free-surface test and shifting are the fluid's), and the device step leaves them zero.
+template <int Dim>
+void clearBoundarySums(ParticleArrays<Dim>& cpu) {
+    for (std::size_t i = 0; i < cpu.size(); ++i) {
+        if (cpu.kind[i] == int(ParticleKind::FLUID)) continue;
+        cpu.kernelSum[i] = 0, cpu.surfaceNeighbours[i] = 0;
+        cpu.kernelSumGradient[i] = {}, cpu.densityGradient[i] = {}, cpu.wallDirection[i] = {};
+        for (int b = 0; b < Dim; ++b) cpu.velocityGradient[b][i] = {};
+    }
+}
+
 template <int Dim>
 void compareOneEvaluation(const Case<Dim>& c) {
     const bool periodicX = c.geometry.domain.periodic[0];
@@ -187,18 +200,7 @@ void compareOneEvaluation(const Case<Dim>& c) {
     ParticleArrays<Dim> cpu = stateOf(storage);
     ParticleArrays<Dim> dev;
     step.download(dev);
-    if (c.model.heat.conduction) {
-        // Boundary particles that conduct gather their neighbours in the CPU engine's fused pair
-        // pass, which then also leaves the fluid's kernel and shifting sums on them; nothing
-        // reads those (the free-surface test and shifting are the fluid's), and the device step
-        // leaves them zero.
-        for (std::size_t i = 0; i < cpu.size(); ++i) {
-            if (cpu.kind[i] == int(ParticleKind::FLUID)) continue;
-            cpu.kernelSum[i] = 0, cpu.surfaceNeighbours[i] = 0;
-            cpu.kernelSumGradient[i] = {}, cpu.densityGradient[i] = {}, cpu.wallDirection[i] = {};
-            for (int b = 0; b < Dim; ++b) cpu.velocityGradient[b][i] = {};
-        }
-    }
+    if (c.model.heat.conduction) clearBoundarySums(cpu);
 
     EXPECT_GT(largest(cpu.a), 1.0);  // the case has accelerations to compare
     EXPECT_GT(largest(cpu.kernelSumGradient), 0.0);
@@ -272,6 +274,46 @@ TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithHeat3D) {
 
 /// The dam break with density by summation (no continuity, no delta-SPH; the shifting moves no
 /// density).
+/// The dam break's tank as a channel with an inlet and an outlet (boundary/flow_boundaries.hpp):
+/// water along the whole of it flowing along x, an inlet on x_min imposing 0.5 m/s and an outlet
+/// on x_max holding p = 50 + 200 y, an expression of the place that the device step evaluates on
+/// the host.
+template <int Dim>
+Case<Dim> channelWithInletAndOutlet() {
+    Case<Dim> c = damBreak<Dim>(true);
+    c.geometry.domain.periodic[0] = false;
+    const double dx = c.geometry.spacing;
+    const double depth = wallLayersFor(RunKernel<Dim>(c.settings).supportRadius(), dx) * dx;
+    FlowSide<Dim> inlet, outlet;
+    inlet.kind = ParticleKind::INLET, inlet.axis = 0, inlet.high = 0, inlet.depth = depth;
+    inlet.plane = c.geometry.domain.min[0];
+    inlet.velocity = [](const Vector<Dim>&, Float) {
+        Vector<Dim> v{};
+        v[0] = 0.5;
+        return v;
+    };
+    outlet.kind = ParticleKind::OUTLET, outlet.axis = 0, outlet.high = 1, outlet.depth = depth;
+    outlet.plane = c.geometry.domain.max[0];
+    outlet.pressure = [](const Vector<Dim>& x, Float) { return 50 + 200 * x[Dim - 1]; };
+    auto flow = std::make_shared<FlowBoundaries<Dim>>();
+    flow->sides = {inlet, outlet};
+    c.model.flowBoundaries = flow;
+    c.geometry.walls[0][0].layers = ParticleKind::INLET;
+    c.geometry.walls[0][1].layers = ParticleKind::OUTLET;
+    c.prepare = [flow](Storage<Dim>& s) {
+        const auto kind = s.template getValue<int>(QuantityId::KIND);
+        ASSERT_GT(std::count(kind.begin(), kind.end(), int(ParticleKind::OUTLET)), 0);
+        flow->prepare(s, 0.0);
+    };
+    return c;
+}
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithAnInletAndAnOutlet2D) {
+    compareOneEvaluation(channelWithInletAndOutlet<2>());
+}
+TEST(DeviceFluidStep, OneEvaluationMatchesTheCpuSolverWithAnInletAndAnOutlet3D) {
+    compareOneEvaluation(channelWithInletAndOutlet<3>());
+}
+
 template <int Dim>
 Case<Dim> summationDamBreak() {
     Case<Dim> c = damBreak<Dim>();

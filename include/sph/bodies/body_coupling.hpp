@@ -16,7 +16,8 @@
 // Dominguez et al. 2022, sec. 3.4).
 // Contacts: a particle j of a free body closer than the spacing dx to a particle k of another
 // solid (a wall, the box's walls, another body not hinged to it) is pushed back by a damped spring
-// and held by Coulomb friction (a linear spring-dashpot, Cundall & Strack 1979):
+// and held by Coulomb friction (a linear spring-dashpot, Cundall & Strack 1979;
+// sph/formulas/contact_law.hpp):
 //   F_n = max(0, k_n (dx - r) - c_n (v_jk . n)),  n = (x_j - x_k) / r,  v_jk = v_j - v_k,
 //   F_jk = F_n n - min(mu F_n, c_n |v_t|) v_t / |v_t|,  v_t = v_jk - (v_jk . n) n,
 //   k_n = m (c0 / dx)^2, c_n = sqrt(k_n m) (damping ratio 1/2), m = M / N the body's mass over
@@ -31,16 +32,43 @@
 #include <optional>
 #include <vector>
 
+#include "sph/bodies/body_frame.hpp"
 #include "sph/bodies/moving_bodies.hpp"
 #include "sph/decomposition.hpp"
 #include "sph/equation_term.hpp"
 #include "sph/formulas/boundary_force.hpp"
+#include "sph/formulas/contact_law.hpp"
 #include "sph/setup/fluid_geometry.hpp"
 
 namespace num::sph {
 
+/// The contact law of a body's particles (the file comment; none for a body that is not free):
+/// particles, the body's count of them; c0 the sound speed, dx the spacing.
 template <int Dim>
-struct ContactLaw;
+ContactLaw<Dim> bodyContactLaw(const MovingBody<Dim>& owner, std::size_t particles, Float c0,
+                               Float dx) {
+    if (owner.motion.type != MotionType::FREE) return {};
+    const Float m = owner.motion.mass / Float(particles);
+    const Float kn = m * (c0 / dx) * (c0 / dx);
+    return {kn, std::sqrt(kn * m), owner.motion.friction, dx};
+}
+
+/// Adds a particle's loads to its body's (the file comment): the fluid's force F_j and the
+/// contacts' C_j at the arm x_j - X, F_b += F_j, tau_b += (x_j - X) x F_j (the same for C_j).
+template <int Dim>
+void addParticleLoads(MovingBody<Dim>& b, const Vector<Dim>& arm, const Vector<Dim>& force,
+                      const Vector<Dim>& contact) {
+    b.fluidForce += force;
+    b.fluidTorque += cross(arm, force);
+    b.contactForce += contact;
+    b.contactTorque += cross(arm, contact);
+}
+
+template <int Dim>
+void clearLoads(MovingBodies<Dim>& bodies) {
+    for (MovingBody<Dim>& b : bodies.bodies)
+        b.fluidForce = b.contactForce = Vector<Dim>{}, b.fluidTorque = b.contactTorque = {};
+}
 
 template <int Dim>
 class RigidBodyCoupling : public IEquationTerm<Dim> {
@@ -144,27 +172,6 @@ void RigidBodyCoupling<Dim>::create(Storage<Dim>& s, IMaterial&) const {
     }
 }
 
-/// The contact law of a free body's particles (the file comment): spring k_n, dashpot c_n,
-/// Coulomb friction mu, at distances below the spacing dx.
-template <int Dim>
-struct ContactLaw {
-    Float kn = 0, cn = 0, mu = 0, dx = 0;
-
-    /// The force on particle j from particle k at dx = x_j - x_k, r2 = |dx|^2, vjk = v_j - v_k.
-    Vector<Dim> force(const Vector<Dim>& d, Float r2, const Vector<Dim>& vjk) const {
-        if (!(r2 < dx * dx)) return {};
-        const Float r = std::sqrt(r2);
-        const Vector<Dim> n = d / r;
-        const Float push = kn * (dx - r) - cn * dot(vjk, n);
-        if (!(push > 0)) return {};
-        const Vector<Dim> vt = vjk - n * dot(vjk, n);
-        const Float slide = norm(vt);
-        Vector<Dim> f = n * push;
-        if (slide > 0) f -= vt * (std::min(mu * push, cn * slide) / slide);
-        return f;
-    }
-};
-
 template <int Dim>
 void RigidBodyCoupling<Dim>::sumParticleForces(IScheduler& scheduler, const Storage<Dim>& s) {
     const auto kind = s.template getValue<int>(QuantityId::KIND);
@@ -206,11 +213,8 @@ void RigidBodyCoupling<Dim>::sumParticleForces(IScheduler& scheduler, const Stor
 
 template <int Dim>
 ContactLaw<Dim> RigidBodyCoupling<Dim>::contactLaw(int b) const {
-    const MovingBody<Dim>& owner = bodies_->bodies[std::size_t(b)];
-    if (owner.motion.type != MotionType::FREE) return {};
-    const Float m = owner.motion.mass / Float(particleCount_[std::size_t(b)]);
-    const Float kn = m * (c0_ / dx_) * (c0_ / dx_);
-    return {kn, std::sqrt(kn * m), owner.motion.friction, dx_};
+    return bodyContactLaw(bodies_->bodies[std::size_t(b)], particleCount_[std::size_t(b)], c0_,
+                          dx_);
 }
 
 template <int Dim>
@@ -237,8 +241,7 @@ std::vector<double> RigidBodyCoupling<Dim>::loadRecords(const Storage<Dim>& s) c
 
 template <int Dim>
 void RigidBodyCoupling<Dim>::sumBodyLoads(const Storage<Dim>& s) {
-    for (MovingBody<Dim>& b : bodies_->bodies)
-        b.fluidForce = b.contactForce = Vec{}, b.fluidTorque = b.contactTorque = {};
+    clearLoads(*bodies_);
     const std::vector<double> records = loadRecords(s);
     for (std::size_t r = 0; r < records.size(); r += kRecord) {
         MovingBody<Dim>& b = bodies_->bodies[std::size_t(records[r + 2])];
@@ -246,10 +249,7 @@ void RigidBodyCoupling<Dim>::sumBodyLoads(const Storage<Dim>& s) {
         for (int k = 0; k < Dim; ++k)
             arm[k] = records[r + 3 + k], force[k] = records[r + 3 + Dim + k],
             contact[k] = records[r + 3 + 2 * Dim + k];
-        b.fluidForce += force;
-        b.fluidTorque += cross(arm, force);
-        b.contactForce += contact;
-        b.contactTorque += cross(arm, contact);
+        addParticleLoads(b, arm, force, contact);
     }
 }
 
@@ -260,13 +260,14 @@ void RigidBodyCoupling<Dim>::placeParticles(IScheduler& scheduler, Storage<Dim>&
     auto wall = s.template getValue<Vec>(QuantityId::WALL_VELOCITY);
     const auto body = s.template getValue<int>(QuantityId::BODY_INDEX);
     const auto offset = s.template getValue<Vec>(QuantityId::BODY_OFFSET);
+    std::vector<BodyFrame<Dim>> frames;
+    for (const MovingBody<Dim>& b : bodies_->bodies)
+        frames.push_back(BodyFrame<Dim>::of(b.state, b.initialPosition));
     scheduler.parallelFor(s.size(), 4096, [&](Size b, Size e) {
         for (Size j = b; j < e; ++j) {
             if (!bodies_->moves(body[j])) continue;
-            const BodyState<Dim>& state = bodies_->bodies[body[j]].state;
-            const Vec d = state.offset(offset[j]);
-            x[j] = state.position + d;
-            v[j] = wall[j] = state.velocityAt(d);
+            placeBodyParticle<Dim>(frames[std::size_t(body[j])], offset[j], x[j], v[j]);
+            wall[j] = v[j];
         }
     });
 }

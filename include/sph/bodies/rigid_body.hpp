@@ -72,7 +72,9 @@ struct BodyState {
     /// World offset of a body-frame offset r.
     Vector<Dim> offset(const Vector<Dim>& r) const { return attitude.rotate(r); }
     /// Velocity of the body's material point at world offset d from X.
-    Vector<Dim> velocityAt(const Vector<Dim>& d) const { return velocity + spinVelocity(spin, d); }
+    NUMERICS_HD Vector<Dim> velocityAt(const Vector<Dim>& d) const {
+        return velocity + spinVelocity(spin, d);
+    }
     friend bool operator==(const BodyState&, const BodyState&) = default;
 };
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "spatial/cell_grid.hpp"
+#include "sph/bodies/body_frame.hpp"
 #include "sph/bodies/moving_bodies.hpp"
 #include "sph/formulas/post_step.hpp"
 #include "sph/setup/fluid_geometry.hpp"
@@ -102,14 +103,16 @@ class ParticleContainment : public IEquationTerm<Dim> {
             if (body.mayContain(x)) formulas::containOutsideBody<Dim>(x, v, body);
             return;
         }
-        Vec x0 = moving_->toInitialPose(b, x);
-        if (!body.mayContain(x0)) return;
-        const auto& state = moving_->bodies[b].state;
-        Vec v0 = state.attitude.rotateBack(v - moving_->velocityAt(b, x));
-        formulas::containOutsideBody<Dim>(x0, v0, body);
-        x = state.position + moving_->turned(b, x0 - moving_->bodies[b].initialPosition);
-        v = moving_->velocityAt(b, x) + moving_->turned(b, v0);
+        const MovingBody<Dim>& m = moving_->bodies[b];
+        containInBodyFrame<Dim>(x, v, BodyFrame<Dim>::of(m.state, m.initialPosition),
+                                InitialPose{body});
     }
+    /// A body's solid at t = 0, for containInBodyFrame.
+    struct InitialPose {
+        const SolidBody<Dim>& body;
+        bool mayContain(const Vec& x0) const { return body.mayContain(x0); }
+        void contain(Vec& x0, Vec& v0) const { formulas::containOutsideBody<Dim>(x0, v0, body); }
+    };
 
     FluidGeometry<Dim> geometry_;
     std::shared_ptr<const MovingBodies<Dim>> moving_;

@@ -9,11 +9,13 @@
 // The pair terms are antisymmetric, so -m_i a_ij is the force of fluid i on boundary particle j
 // (Newton's third law): summed over a body's particles, the fluid's force on the body.
 // Reads the storage as the last evaluation left it (pressures, densities, pair velocities).
+// The per-pair formula is boundary_pair.hpp's, shared with the device step.
 #pragma once
 
 #include <cmath>
 
 #include "sph/defaults.hpp"
+#include "sph/formulas/boundary_pair.hpp"
 #include "sph/formulas/fluid_pairs.hpp"
 #include "sph/formulas/pair_geometry.hpp"
 #include "sph/kernel_choice.hpp"
@@ -48,28 +50,17 @@ class BoundaryPairForce {
     }
     /// The same with the kernel's dW/dr at r given (a loop that holds the kernel's type).
     Vec onBoundary(Size i, Size j, const Vec& dx, Float r, Float dWdr) const {
-        const Vec grad = dx * (dWdr / r);
-        Vec a = -pressureGradientForce(grad, pressureOverDensity2(p_[i], rho_[i]),
-                                       pressureOverDensity2(p_[j], rho_[j])) *
-                m_[j];
         const bool noSlip = slip_.empty() || slip_[j] == int(WallSlip::NO_SLIP);
-        if (!nu_.empty() && noSlip) {
-            const Float factor = laminarViscosityFactor(dynamicViscosity(rho_[i], nu_[i]),
-                                                        dynamicViscosity(rho_[j], nu_[j]),
-                                                        pairLaplacian(dx, grad, r, laplacianEta2_));
-            a +=
-                laminarViscosityAcceleration(v_[i] - v_[j], factor, m_[j] / rho_[j], 1.0 / rho_[i]);
-        }
-        const Float vr = approachRate(v_[i], v_[j], dx);
-        if (alphaC0h_ > 0 && vr < 0)
-            a -= grad *
-                 artificialViscosityPi(alphaC0h_, vr, pairInverseR2(r, inverseR2Eta2_), rho_[i],
-                                       rho_[j]) *
-                 m_[j];
-        return -a * m_[i];
+        const BoundaryPairTerms terms{!nu_.empty() && noSlip, alphaC0h_, laplacianEta2_,
+                                      inverseR2Eta2_};
+        return boundaryPairForce<Dim>(side(i), side(j), terms, dx, r, dWdr);
     }
 
   private:
+    PairSide<Dim> side(Size i) const {
+        return {m_[i], rho_[i], p_[i], nu_.empty() ? 0.0 : nu_[i], v_[i]};
+    }
+
     RunKernel<Dim> kernel_;
     Float alphaC0h_, laplacianEta2_, inverseR2Eta2_;
     ArrayView<const Float> m_, rho_, p_, nu_;

@@ -24,6 +24,27 @@ NUMERICS_HD void shiftParticle(Vector<Dim>& x, Vector<Dim>& v, Float& rho, bool 
 
 // --- Containment (boundary/particle_containment.hpp) ---------------------------------------
 
+/// Whether x lies across the opening [from, to] of a side on `axis`: its coordinates along the
+/// side within it (the side's own axis ignored).
+template <int Dim>
+NUMERICS_HD bool acrossOpening(const Vector<Dim>& x, int axis, const Vector<Dim>& from,
+                               const Vector<Dim>& to) {
+    for (int k = 0; k < Dim; ++k)
+        if (k != axis && (x[k] < from[k] || x[k] > to[k])) return false;
+    return true;
+}
+
+/// An outlet's opening on a side of the box (boundary/flow_boundaries.hpp): fluid across it
+/// passes through the side, which reflects it elsewhere; `present` false: no outlet there.
+template <int Dim>
+struct OutletOpening {
+    bool present = false;
+    Vector<Dim> from{}, to{};
+    NUMERICS_HD bool letsThrough(const Vector<Dim>& x, int axis) const {
+        return present && acrossOpening<Dim>(x, axis, from, to);
+    }
+};
+
 /// One axis of a fluid particle against the box's walls [lo, hi]: reflected back inside, the
 /// velocity component into the wall removed.
 NUMERICS_HD_INLINE void containInWalls(Float& x, Float& v, Float lo, Float hi, bool wallLow,

@@ -12,6 +12,7 @@
 
 #include "spatial/cell_grid.hpp"
 #include "sph/defaults.hpp"
+#include "sph/formulas/post_step.hpp"
 #include "sph/setup/placed_shape.hpp"
 #include "sph/terms/fluid_quantities.hpp"
 
@@ -35,9 +36,7 @@ struct WallSide {
 
     /// Whether x lies across the opening (its coordinates along the side within it).
     bool inOpening(const Vector<Dim>& x, int axis) const {
-        for (int k = 0; k < Dim; ++k)
-            if (k != axis && (x[k] < openFrom[k] || x[k] > openTo[k])) return false;
-        return true;
+        return formulas::acrossOpening<Dim>(x, axis, openFrom, openTo);
     }
 };
 

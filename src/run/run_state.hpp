@@ -51,6 +51,30 @@ class FiniteCheck {
     sph::ArrayView<const sph::Vector<Dim>> vector_;
 };
 
+/// "fluid particle 12": particle i's kind and id, for a message.
+template <int Dim>
+std::string particleName(const sph::Storage<Dim>& s, sph::Size i) {
+    static const char* kinds[] = {"fluid particle", "wall particle", "body particle",
+                                  "inlet particle", "outlet particle"};
+    const int kind = s.template getValue<int>(sph::QuantityId::KIND)[i];
+    return std::string(kind >= 0 && kind < sph::kParticleKinds ? kinds[kind] : "particle") + " " +
+           std::to_string(s.template getValue<int>(sph::QuantityId::PARTICLE_ID)[i]);
+}
+
+/// The wall a fluid particle at x left the domain through (more than a spacing beyond it), as
+/// (axis, side); (-1, 0) where it did not, or is not fluid.
+template <int Dim>
+std::pair<int, int> wallLeftThrough(const Scene<Dim>& scene, int kind, const sph::Vector<Dim>& x) {
+    if (kind != int(sph::ParticleKind::FLUID)) return {-1, 0};
+    for (int k = 0; k < Dim; ++k)
+        for (int hi = 0; hi < 2; ++hi) {
+            if (!scene.sides[k][hi]->closes()) continue;
+            const double beyond = hi ? x[k] - scene.domainMax[k] : scene.domainMin[k] - x[k];
+            if (beyond > scene.spacing) return {k, hi};
+        }
+    return {-1, 0};
+}
+
 /// Stops the run (AppError UNSTABLE) on a non-finite value in any written field, a density that
 /// is not positive, fluid beyond a wall, or a collapsed time step, naming the time, the step,
 /// the field and the likely cause. The first problem is reported: the fields in the order
@@ -67,33 +91,15 @@ void checkHealth(sph::IScheduler& scheduler, const sph::Storage<Dim>& s, const S
     const std::string cause =
         ". Likely cause: the time step is too large or the sound speed too low for this flow; "
         "lower time.cfl, raise the material's sound_speed, or refine particles.spacing";
-    const auto kind = s.template getValue<int>(QuantityId::KIND);
-    const auto id = s.template getValue<int>(QuantityId::PARTICLE_ID);
-    auto particle = [&](long i) {
-        static const char* kinds[] = {"fluid particle", "wall particle", "body particle",
-                                      "inlet particle", "outlet particle"};
-        return std::string(kind[i] >= 0 && kind[i] < sph::kParticleKinds ? kinds[kind[i]]
-                                                                         : "particle") +
-               " " + std::to_string(id[i]);
-    };
+    const auto particle = [&](long i) { return particleName(s, sph::Size(i)); };
     std::vector<OutputField> fields = outputFields(s, names);
     fields.insert(fields.begin(), {"position", QuantityId::POSITION, OutputField::Type::VECTOR});
     std::vector<FiniteCheck<Dim>> finite;
     for (const OutputField& f : fields) finite.emplace_back(s, f);
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
     const auto x = s.template getValue<sph::Vector<Dim>>(QuantityId::POSITION);
     const auto rho = s.template getValue<double>(QuantityId::DENSITY);
-    // The wall a fluid particle left the domain through, as (axis, side), or (-1, 0).
-    const auto leftThrough = [&](sph::Size i) -> std::pair<int, int> {
-        if (kind[i] != int(sph::ParticleKind::FLUID)) return {-1, 0};
-        for (int k = 0; k < Dim; ++k)
-            for (int hi = 0; hi < 2; ++hi) {
-                if (!scene.sides[k][hi]->closes()) continue;
-                const double beyond =
-                    hi ? x[i][k] - scene.domainMax[k] : scene.domainMin[k] - x[i][k];
-                if (beyond > scene.spacing) return {k, hi};
-            }
-        return {-1, 0};
-    };
+    const auto leftThrough = [&](sph::Size i) { return wallLeftThrough(scene, kind[i], x[i]); };
     // The first particle of each check (every field's finiteness, then density and walls), -1
     // where none fails.
     const std::size_t checks = finite.size() + 1;

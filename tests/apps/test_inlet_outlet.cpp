@@ -1,6 +1,6 @@
 // Inlets and outlets through the apps (boundaries of type "inlet" and "outlet"): the books of
-// summary.json close, runs are bitwise for any thread count and from a restart, and bad inlets
-// and outlets are refused in one line naming the key.
+// summary.json close, runs are bitwise for any thread count and from a restart, bad inlets and
+// outlets are refused in one line naming the key, and the CUDA back end runs them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -118,8 +118,22 @@ TEST(InletOutlet, BadInletsAndOutletsAreRefusedByKey) {
     expectOneLine(runText("no_velocity", j), kScene, {"boundaries.x_min", "velocity"});
 }
 
-// The CUDA back end refuses inlets and outlets by name rather than running them as walls.
-TEST(InletOutlet, TheCudaBackEndRefusesThem) {
-    const Result r = runText("cuda", sceneJson(2), "--backend cuda");
-    expectOneLine(r, kScene, {"--backend cuda", "an inlet or outlet"});
+// The CUDA back end (its device step on the host execution) runs them as the CPU back end: the
+// same steps, the same mass through the inlet and the outlet, the heat books to round-off.
+TEST(InletOutlet, TheCudaBackEndRunsThemAsTheCpuBackEnd) {
+    setenv("NUMERICS_TEST_DEVICE_EXECUTION", "host", 1);
+    const Result cuda = runText("cuda", sceneJson(2), "--backend cuda");
+    unsetenv("NUMERICS_TEST_DEVICE_EXECUTION");
+    ASSERT_EQ(cuda.code, 0) << cuda.output;
+    ASSERT_EQ(runText("cuda_cpu", sceneJson(2), "--backend cpu").code, 0);
+    const json a = summaryOf("cuda"), b = summaryOf("cuda_cpu");
+    EXPECT_EQ(a["backend"], "cuda");
+    EXPECT_EQ(a["steps"], b["steps"]);
+    const json &ma = a["conservation"]["mass"], &mb = b["conservation"]["mass"];
+    EXPECT_GT(mb["in"].get<double>(), 0.0);
+    for (const char* k : {"in", "out", "end"})
+        EXPECT_NEAR(ma[k].get<double>(), mb[k].get<double>(), 1e-12 * mb["end"].get<double>()) << k;
+    const json &ea = a["conservation"]["thermal_energy"], &eb = b["conservation"]["thermal_energy"];
+    for (const char* k : {"in", "out", "walls", "end"})
+        EXPECT_NEAR(ea[k].get<double>(), eb[k].get<double>(), 1e-6 * eb["end"].get<double>()) << k;
 }

@@ -15,6 +15,7 @@
 #include <memory>
 
 #include "device/fluid_run.hpp"
+#include "device_test_case.hpp"
 #include "sph/timestepping.hpp"
 
 namespace {
@@ -78,13 +79,7 @@ BodyCase<Dim> ballInATank(bool free) {
     }
     c.model.movingBodies = std::make_shared<MovingBodies<Dim>>();
     c.model.movingBodies->bodies.push_back(body);
-    Vector<Dim> g{};
-    g[Dim - 1] = -9.81;
-    c.model.bodyForce = constantForce(g);
-    c.model.maxVelocity = 2.5;
-    c.model.viscosity = 1e-6;
-    c.model.artificialViscosity = 0.02;
-    c.settings.set("kernel", std::string("wendland_c2")).set("smoothing_length", 1.5 * dx);
+    device_tests::setDamBreakNumerics(c.model, c.settings, dx);
     return c;
 }
 
@@ -107,18 +102,6 @@ BodyCase<Dim> withOwnBodies(BodyCase<Dim> c) {
     return c;
 }
 
-/// Sorts the storage's particles as the device grid sorts them (by cell, stably).
-template <int Dim>
-void sortAsTheDevice(Storage<Dim>& s, const device::FluidStepConfig<Dim>& c) {
-    device::HostExecution exec;
-    device::NeighbourGrid<Dim, device::HostExecution> grid(exec, c.supportRadius, c.domainMin,
-                                                           c.domainMax, c.periodic);
-    const auto x = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
-    grid.build(x.data(), device::Index(x.size()));
-    std::vector<Size> order(grid.order(), grid.order() + x.size());
-    s.reorder(order);
-}
-
 template <int N>
 double largestOf(const Vec<Float, N>& a) {
     double m = 0;
@@ -137,7 +120,7 @@ TEST(DeviceBodyStep, OneEvaluationsBodyLoadsAreTheCpus2D) {
     const auto config =
         device::makeFluidStepConfig(devCase.model, devCase.geometry, devCase.settings);
     Storage<2> storage = storageOf(cpuCase);
-    sortAsTheDevice(storage, config);
+    device_tests::sortAsTheDevice(storage, config);
     SequentialScheduler scheduler;
     Solver<2> solver(scheduler, cpuCase.settings,
                      makeFluidEquations(cpuCase.model, cpuCase.geometry), cpuCase.geometry.domain);

@@ -8,6 +8,7 @@
 
 #include "device/backend.hpp"
 #include "device/fluid_run.hpp"
+#include "device_test_case.hpp"
 
 #ifdef NUMERICS_HAVE_CUDA
 namespace {
@@ -36,13 +37,7 @@ Case<Dim> damBreak() {
     hi[0] = 0.32, hi[Dim - 1] = 0.32;
     c.geometry.fluid.push_back(
         FluidRegion<Dim>::filling(BoxOrBall<Dim>::box(c.geometry.domain.min, hi)));
-    Vector<Dim> g{};
-    g[Dim - 1] = -9.81;
-    c.model.bodyForce = constantForce(g);
-    c.model.maxVelocity = 2.5;
-    c.model.viscosity = 1e-6;
-    c.model.artificialViscosity = 0.02;
-    c.settings.set("kernel", std::string("wendland_c2")).set("smoothing_length", 1.5 * dx);
+    device_tests::setDamBreakNumerics(c.model, c.settings, dx);
     return c;
 }
 

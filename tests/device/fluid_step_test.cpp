@@ -17,6 +17,7 @@
 #include <numeric>
 
 #include "device/fluid_run.hpp"
+#include "device_test_case.hpp"
 #include "geometry/combination.hpp"
 #include "geometry/primitives.hpp"
 #include "sph/timestepping.hpp"
@@ -69,13 +70,7 @@ Case<Dim> damBreak(bool periodicX = false, bool body = false) {
             v[0] = 0.5 * x[Dim - 1];
             return v;
         };
-    Vector<Dim> g{};
-    g[Dim - 1] = -9.81;
-    c.model.bodyForce = constantForce(g);
-    c.model.maxVelocity = 2.5;
-    c.model.viscosity = 1e-6;
-    c.model.artificialViscosity = 0.02;
-    c.settings.set("kernel", std::string("wendland_c2")).set("smoothing_length", 1.5 * dx);
+    device_tests::setDamBreakNumerics(c.model, c.settings, dx);
     return c;
 }
 
@@ -134,18 +129,6 @@ ParticleArrays<Dim> stateOf(const Storage<Dim>& s) {
     return p;
 }
 
-/// Sorts the storage's particles as the device grid sorts them (by cell, stably).
-template <int Dim>
-void sortAsTheDevice(Storage<Dim>& s, const device::FluidStepConfig<Dim>& c) {
-    device::HostExecution exec;
-    device::NeighbourGrid<Dim, device::HostExecution> grid(exec, c.supportRadius, c.domainMin,
-                                                           c.domainMax, c.periodic);
-    const auto x = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
-    grid.build(x.data(), device::Index(x.size()));
-    std::vector<Size> order(grid.order(), grid.order() + x.size());
-    s.reorder(order);
-}
-
 #define EXPECT_SAME(a, b, what)                                                       \
     do {                                                                              \
         ASSERT_EQ((a).size(), (b).size()) << what;                                    \
@@ -187,7 +170,7 @@ void compareOneEvaluation(const Case<Dim>& c) {
     const auto config = device::makeFluidStepConfig(c.model, c.geometry, c.settings);
     ASSERT_EQ(device::unsupported(c.model, c.geometry, c.settings), "");
     Storage<Dim> storage = c.storage();
-    sortAsTheDevice(storage, config);
+    device_tests::sortAsTheDevice(storage, config);
     SequentialScheduler scheduler;
     Solver<Dim> solver(scheduler, c.settings, makeFluidEquations(c.model, c.geometry),
                        c.geometry.domain);

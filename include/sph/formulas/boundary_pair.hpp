@@ -1,7 +1,7 @@
 // The force of a fluid particle i on a boundary particle j (of a wall or body), -m_i a_ij, per
 // pair: the formula of sph/formulas/boundary_force.hpp (which states it), on host and device (the
 // CPU's RigidBodyCoupling through BoundaryPairForce, the device step's body loads in
-// device/body_passes.hpp).
+// device/body_step.hpp).
 #pragma once
 
 #include "sph/formulas/fluid_pairs.hpp"

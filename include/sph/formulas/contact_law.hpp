@@ -4,7 +4,7 @@
 //   F_n = max(0, k_n (dx - r) - c_n (v_jk . n)),  n = (x_j - x_k) / r,  v_jk = v_j - v_k,
 //   F_jk = F_n n - min(mu F_n, c_n |v_t|) v_t / |v_t|,  v_t = v_jk - (v_jk . n) n.
 // The body's law (k_n, c_n, mu) is set by the coupling (bodies/body_coupling.hpp); the CPU
-// engine and the device step (device/body_passes.hpp) evaluate it here.
+// engine and the device step (device/body_step.hpp) evaluate it here.
 #pragma once
 
 #include "sph/host_device.hpp"

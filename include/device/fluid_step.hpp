@@ -256,8 +256,8 @@ class DeviceFluidStep final : public IDeviceFluid<Dim> {
     }
 
     void postStep(Float dt) override {
-        // The moving bodies' particles placed (RigidBodyCoupling::postStep, after shifting: it
-        // moves fluid particles only, these boundary particles only).
+        // The moving bodies' particles placed (RigidBodyCoupling::postStep). The CPU places them
+        // after shifting; the order does not matter, shifting moves fluid particles only.
         bodies_.place(arrays(), n_);
         if (!c_.shifting && !c_.contain) return;
         passes::PostStep<Dim> post{arrays(),

@@ -62,22 +62,13 @@ Float pulseExact(const PulseSetup& s, const num::sph::Vector<Dim>& x, Float t) {
     return sum;
 }
 
+/// The particles of the pulse: a cell-centred lattice of s.perSide per side with the exact
+/// energy at t = 0; they stay where they are (no force moves them).
 template <int Dim>
-PulseResult runGaussianPulse(const PulseSetup& s) {
+num::sph::Storage<Dim> pulseLattice(const PulseSetup& s, const num::Domain<Dim>& domain,
+                                    num::sph::Float dx, num::sph::Float rho) {
     using namespace num::sph;
     using Vec = Vector<Dim>;
-    const Float length = 1, dx = length / s.perSide, rho = 1;
-
-    RunSettings settings;
-    settings.set("kernel", s.kernel)
-        .set("smoothing_length", s.hOverDx * dx)
-        .set("evaluation", s.evaluation)
-        .set("threads", s.threads);
-    num::Domain<Dim> domain;
-    for (int k = 0; k < Dim; ++k) domain.min[k] = -length / 2, domain.max[k] = length / 2;
-    domain.periodic.fill(true);
-
-    // A cell-centred lattice; particles stay where they are (no force moves them).
     std::size_t n = 1;
     for (int k = 0; k < Dim; ++k) n *= std::size_t(s.perSide);
     std::vector<Vec> x(n);
@@ -95,6 +86,36 @@ PulseResult runGaussianPulse(const PulseSetup& s) {
     storage.template insert<Float>(QuantityId::MASS, OrderEnum::ZERO, rho * std::pow(dx, Dim));
     storage.template insert<Float>(QuantityId::DENSITY, OrderEnum::ZERO, rho);
     storage.template insert<Float>(QuantityId::ENERGY, OrderEnum::FIRST, u);
+    return storage;
+}
+
+/// The sum of m u over the particles (of m |u| where `absolute`).
+template <int Dim>
+num::sph::Float pulseEnergy(const num::sph::Storage<Dim>& storage, bool absolute) {
+    using namespace num::sph;
+    const auto m = storage.template getValue<Float>(QuantityId::MASS);
+    const auto e = storage.template getValue<Float>(QuantityId::ENERGY);
+    Float sum = 0;
+    for (Size i = 0; i < storage.size(); ++i) sum += m[i] * (absolute ? std::abs(e[i]) : e[i]);
+    return sum;
+}
+
+template <int Dim>
+PulseResult runGaussianPulse(const PulseSetup& s) {
+    using namespace num::sph;
+    using Vec = Vector<Dim>;
+    const Float length = 1, dx = length / s.perSide, rho = 1;
+
+    RunSettings settings;
+    settings.set("kernel", s.kernel)
+        .set("smoothing_length", s.hOverDx * dx)
+        .set("evaluation", s.evaluation)
+        .set("threads", s.threads);
+    num::Domain<Dim> domain;
+    for (int k = 0; k < Dim; ++k) domain.min[k] = -length / 2, domain.max[k] = length / 2;
+    domain.periodic.fill(true);
+
+    Storage<Dim> storage = pulseLattice<Dim>(s, domain, dx, rho);
 
     auto scheduler = makeScheduler(s.threads > 1 ? "omp" : "seq", s.threads);
     Solver<Dim> solver(*scheduler, settings, makeTerm<HeatDiffusion<Dim>>(s.alpha), domain);
@@ -104,21 +125,14 @@ PulseResult runGaussianPulse(const PulseSetup& s) {
     Run<Dim> run(storage, solver, *integrator);
 
     PulseResult result;
-    const auto energy = [&](bool absolute) {
-        const auto m = storage.template getValue<Float>(QuantityId::MASS);
-        const auto e = storage.template getValue<Float>(QuantityId::ENERGY);
-        Float sum = 0;
-        for (Size i = 0; i < storage.size(); ++i) sum += m[i] * (absolute ? std::abs(e[i]) : e[i]);
-        return sum;
-    };
-    result.energyStart = energy(false);
-    result.energyAbs = energy(true);
+    result.energyStart = pulseEnergy(storage, false);
+    result.energyAbs = pulseEnergy(storage, true);
     while (run.time() < s.tEnd * (1 - 1e-14)) {
         run.step(s.tEnd);
         if (run.limitingCriterion() != "end time") result.criterion = run.limitingCriterion();
     }
     result.steps = run.steps();
-    result.energyEnd = energy(false);
+    result.energyEnd = pulseEnergy(storage, false);
     const auto xs = storage.template getValue<Vec>(QuantityId::POSITION);
     const auto us = storage.template getValue<Float>(QuantityId::ENERGY);
     for (Size i = 0; i < storage.size(); ++i) {

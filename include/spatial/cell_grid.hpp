@@ -68,44 +68,9 @@ class CellGrid {
         if (!(radius > 0)) throw std::invalid_argument("cell grid: radius must be positive");
         radius_ = radius;
         domain_ = domain;
-        const Index n = Index(x.size());
-        Vector lo = Vector::filled(0), hi = Vector::filled(0);
-        if (n > 0) lo = hi = x[0];
-        for (Index i = 0; i < n; ++i)
-            for (int k = 0; k < Dim; ++k) {
-                if (!std::isfinite(x[i][k]))
-                    throw std::invalid_argument("cell grid: particle " + std::to_string(i) +
-                                                " has a non-finite position");
-                lo[k] = std::min(lo[k], x[i][k]), hi[k] = std::max(hi[k], x[i][k]);
-            }
-        // Never more than about 8 cells per particle: a stray particle far away enlarges the
-        // cells rather than exhausting memory.
-        const double maxCells = 8.0 * std::max<Index>(n, 64);
-        // Cells are a hair larger than radius / reach so that rounding in the cell coordinate of a
-        // particle on a cell border can never put two neighbours two cells apart.
-        double cellSize = radius / reach * (1 + 1e-8);
-        for (;;) {
-            double total = 1;
-            for (int k = 0; k < Dim; ++k) {
-                if (domain.periodic[k]) {
-                    const double L = domain.length(k);
-                    if (L < 2 * radius)
-                        throw std::invalid_argument(
-                            "cell grid: periodic length is below twice the radius");
-                    cells_[k] = std::max(1, int(std::floor(L / cellSize)));
-                    if (L / cells_[k] < cellSize) cells_[k] = std::max(1, cells_[k] - 1);
-                    origin_[k] = domain.min[k];
-                    size_[k] = L / cells_[k];
-                } else {
-                    cells_[k] = std::max(1, int(std::floor((hi[k] - lo[k]) / cellSize)) + 1);
-                    origin_[k] = lo[k];
-                    size_[k] = cellSize;
-                }
-                total *= cells_[k];
-            }
-            if (total <= maxCells) break;
-            cellSize *= 2;
-        }
+        Vector lo, hi;
+        boundingBox(x, lo, hi);
+        layCells(Index(x.size()), lo, hi);
         Index total = 1;
         for (int k = 0; k < Dim; ++k) total *= Index(cells_[k]);
         anyPerPair_ = false;
@@ -113,34 +78,7 @@ class CellGrid {
             perPair_[k] = domain.periodic[k] && cells_[k] < 2 * reach + 1;
             anyPerPair_ |= perPair_[k];
         }
-
-        // Positions are copied in cell order, so that the search reads them contiguously. On
-        // periodic axes each particle is placed at the image whose cell it is sorted into, so
-        // that the image shift of a neighbour follows from the cell offset alone. The image is
-        // found again when copying (no array of them: less peak memory).
-        cellOf_.resize(n);
-        start_.assign(total + 1, 0);
-        for (Index i = 0; i < n; ++i) {
-            Vector placed = x[i];
-            std::array<int, Dim> c;
-            locate(placed, c);
-            cellOf_[i] = cellIndex(c);
-            ++start_[cellOf_[i] + 1];
-        }
-        for (Index c = 0; c < total; ++c) start_[c + 1] += start_[c];
-        sorted_.resize(n);
-        slot_.resize(n);
-        sortedX_.resize(n);
-        std::vector<Index> fill(start_.begin(), start_.end() - 1);
-        for (Index i = 0; i < n; ++i) {
-            const Index s = fill[cellOf_[i]]++;
-            sorted_[s] = i;
-            slot_[i] = s;
-            Vector placed = x[i];
-            std::array<int, Dim> c;
-            locate(placed, c);
-            sortedX_[s] = placed;
-        }
+        sortIntoCells(x, total);
     }
 
     /// Calls f(j, dx, r2) for every particle j (itself too, if xi is a particle's position)
@@ -203,6 +141,83 @@ class CellGrid {
     double radius() const { return radius_; }
 
   private:
+    /// The particles' bounding box (zero for none), refusing a non-finite position.
+    static void boundingBox(std::span<const Vector> x, Vector& lo, Vector& hi) {
+        const Index n = Index(x.size());
+        lo = hi = Vector::filled(0);
+        if (n > 0) lo = hi = x[0];
+        for (Index i = 0; i < n; ++i)
+            for (int k = 0; k < Dim; ++k) {
+                if (!std::isfinite(x[i][k]))
+                    throw std::invalid_argument("cell grid: particle " + std::to_string(i) +
+                                                " has a non-finite position");
+                lo[k] = std::min(lo[k], x[i][k]), hi[k] = std::max(hi[k], x[i][k]);
+            }
+    }
+
+    /// Sets the cells' count, origin and size on each axis for n particles in [lo, hi].
+    void layCells(Index n, const Vector& lo, const Vector& hi) {
+        // Never more than about 8 cells per particle: a stray particle far away enlarges the
+        // cells rather than exhausting memory.
+        const double maxCells = 8.0 * std::max<Index>(n, 64);
+        // Cells are a hair larger than radius / reach so that rounding in the cell coordinate of a
+        // particle on a cell border can never put two neighbours two cells apart.
+        double cellSize = radius_ / reach * (1 + 1e-8);
+        for (;;) {
+            double total = 1;
+            for (int k = 0; k < Dim; ++k) {
+                if (domain_.periodic[k]) {
+                    const double L = domain_.length(k);
+                    if (L < 2 * radius_)
+                        throw std::invalid_argument(
+                            "cell grid: periodic length is below twice the radius");
+                    cells_[k] = std::max(1, int(std::floor(L / cellSize)));
+                    if (L / cells_[k] < cellSize) cells_[k] = std::max(1, cells_[k] - 1);
+                    origin_[k] = domain_.min[k];
+                    size_[k] = L / cells_[k];
+                } else {
+                    cells_[k] = std::max(1, int(std::floor((hi[k] - lo[k]) / cellSize)) + 1);
+                    origin_[k] = lo[k];
+                    size_[k] = cellSize;
+                }
+                total *= cells_[k];
+            }
+            if (total <= maxCells) return;
+            cellSize *= 2;
+        }
+    }
+
+    /// Counts the particles per cell and copies their positions in cell order, so that the search
+    /// reads them contiguously. On periodic axes each particle is placed at the image whose cell
+    /// it is sorted into, so that the image shift of a neighbour follows from the cell offset
+    /// alone. The image is found again when copying (no array of them: less peak memory).
+    void sortIntoCells(std::span<const Vector> x, Index total) {
+        const Index n = Index(x.size());
+        cellOf_.resize(n);
+        start_.assign(total + 1, 0);
+        for (Index i = 0; i < n; ++i) {
+            Vector placed = x[i];
+            std::array<int, Dim> c;
+            locate(placed, c);
+            cellOf_[i] = cellIndex(c);
+            ++start_[cellOf_[i] + 1];
+        }
+        for (Index c = 0; c < total; ++c) start_[c + 1] += start_[c];
+        sorted_.resize(n);
+        slot_.resize(n);
+        sortedX_.resize(n);
+        std::vector<Index> fill(start_.begin(), start_.end() - 1);
+        for (Index i = 0; i < n; ++i) {
+            const Index s = fill[cellOf_[i]]++;
+            sorted_[s] = i;
+            slot_[i] = s;
+            Vector placed = x[i];
+            std::array<int, Dim> c;
+            locate(placed, c);
+            sortedX_[s] = placed;
+        }
+    }
+
     /// collect() over the candidates of slot >= firstSlot only (all of them on axes whose
     /// images are found per pair: keep must then do the filtering).
     template <class Keep>

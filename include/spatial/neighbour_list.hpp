@@ -356,40 +356,54 @@ class VerletList {
             CellGrid<Dim> grid;
             grid.build(x_, listRadius_, domain_);  // throws on a non-finite position
             parallelFor(chunks, [&](auto c0, auto c1) {
-                // The grid's branch-free search (a branch per candidate would be mispredicted
-                // often).
-                typename CellGrid<Dim>::Neighbours found;
-                SortBuffers sortBuffers;
-                // One chunk's slots, then copied into its array: sized exactly, not by the
-                // doubling of a growing vector.
-                std::vector<Slot> chunk;
-                for (std::size_t c = c0; c < std::size_t(c1); ++c) {
-                    chunk.clear();
-                    for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
-                        const Index m = grid.collect(
-                            Index(i), [](Index) { return true; }, found);
-                        sortCandidates(found.j.data(), m, sortBuffers);
-                        const std::size_t begin = chunk.size();
-                        start_[i] = Index(begin);
-                        first_[i] = found.j[0];  // i itself is a candidate: m >= 1
-                        Index self = 0;
-                        for (Index k = 1; k < m; ++k) {
-                            encodeGap(found.j[k - 1], found.j[k], chunk);
-                            if (found.j[k] == Index(i)) self = Index(chunk.size() - begin);
-                        }
-                        self_[i] = self;
-                    }
-                    std::vector<Slot>& part = parts_[c];
-                    // Kept when it is at most 1/16 too large (the counts change little between
-                    // builds), else reallocated to the exact size.
-                    if (part.capacity() < chunk.size() ||
-                        part.capacity() > chunk.size() + chunk.size() / 16)
-                        part = std::vector<Slot>(chunk.begin(), chunk.end());
-                    else
-                        part.assign(chunk.begin(), chunk.end());
-                }
+                listCandidates(grid, std::size_t(c0), std::size_t(c1));
             });
         }
+        storeBuiltPositions();
+        valid_ = true;
+        updates_ = 0;
+        ++builds_;
+    }
+
+    /// Lists the candidates of the particles of chunks [c0, c1), from the grid's branch-free
+    /// search (a branch per candidate would be mispredicted often).
+    void listCandidates(const CellGrid<Dim>& grid, std::size_t c0, std::size_t c1) {
+        const std::size_t n = x_.size();
+        typename CellGrid<Dim>::Neighbours found;
+        SortBuffers sortBuffers;
+        // One chunk's slots, then copied into its array: sized exactly, not by the doubling of a
+        // growing vector.
+        std::vector<Slot> chunk;
+        for (std::size_t c = c0; c < c1; ++c) {
+            chunk.clear();
+            for (std::size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+                const Index m = grid.collect(
+                    Index(i), [](Index) { return true; }, found);
+                sortCandidates(found.j.data(), m, sortBuffers);
+                const std::size_t begin = chunk.size();
+                start_[i] = Index(begin);
+                first_[i] = found.j[0];  // i itself is a candidate: m >= 1
+                Index self = 0;
+                for (Index k = 1; k < m; ++k) {
+                    encodeGap(found.j[k - 1], found.j[k], chunk);
+                    if (found.j[k] == Index(i)) self = Index(chunk.size() - begin);
+                }
+                self_[i] = self;
+            }
+            std::vector<Slot>& part = parts_[c];
+            // Kept when it is at most 1/16 too large (the counts change little between builds),
+            // else reallocated to the exact size.
+            if (part.capacity() < chunk.size() ||
+                part.capacity() > chunk.size() + chunk.size() / 16)
+                part = std::vector<Slot>(chunk.begin(), chunk.end());
+            else
+                part.assign(chunk.begin(), chunk.end());
+        }
+    }
+
+    /// Keeps the positions of the build in float and the displacement that a rebuild allows.
+    void storeBuiltPositions() {
+        const std::size_t n = x_.size();
         built_.resize(n);
         double extent = 0;
         for (std::size_t i = 0; i < n; ++i)
@@ -404,9 +418,6 @@ class VerletList {
         const double allowed =
             0.5 * (listRadius_ - radius_) - stored - 1e-10 * (listRadius_ + extent);
         allowed2_ = allowed > 0 ? allowed * allowed : 0;
-        valid_ = true;
-        updates_ = 0;
-        ++builds_;
     }
 
     double radius_ = 0, listRadius_ = 0, allowed2_ = 0;

@@ -80,19 +80,23 @@ inline bool listsAny(const std::vector<QuantityId>& ids, const std::vector<Quant
         if (std::find(ids.begin(), ids.end(), q) != ids.end()) return true;
     return false;
 }
-}  // namespace detail
 
-/// The schedule of terms with the given accesses (in the order the terms were added); names
-/// are for messages. Throws std::logic_error when no order of passes satisfies the declarations.
-inline EvaluationSchedule scheduleEvaluation(std::vector<TermAccess> access,
-                                             const std::vector<std::string>& names) {
-    const std::size_t n = access.size();
-    // What a term needs is read like the rest, once a term added before it prepares it.
-    for (std::size_t b = 0; b < n; ++b)
+[[noreturn]] inline void failSchedule(const std::string& what) {
+    throw std::logic_error(what + ": check what their access() declares");
+}
+
+inline bool placedEarliest(const TermAccess& access) {
+    return access.placement == PassPlacement::EARLIEST;
+}
+
+/// What a term needs is read like the rest, once a term added before it prepares it.
+inline void addPreparedReads(std::vector<TermAccess>& access,
+                             const std::vector<std::string>& names) {
+    for (std::size_t b = 0; b < access.size(); ++b)
         for (const PreparedInput& input : access[b].needs) {
             bool prepared = false;
             for (std::size_t a = 0; a < b; ++a)
-                prepared |= detail::listsAny(access[a].prepares, {input.id});
+                prepared |= listsAny(access[a].prepares, {input.id});
             if (!prepared)
                 throw std::logic_error("the term " + names[b] + " reads quantity " +
                                        std::to_string(int(input.id)) + ", which " +
@@ -100,50 +104,57 @@ inline EvaluationSchedule scheduleEvaluation(std::vector<TermAccess> access,
                                        input.preparedBy + " before it");
             access[b].reads.push_back(input.id);
         }
-    auto placed = [&](std::size_t t) { return access[t].placement == PassPlacement::EARLIEST; };
-    auto list = [&](const std::vector<std::size_t>& terms) {
-        std::string text;
-        for (std::size_t t : terms) text += (text.empty() ? "" : ", ") + names[t];
-        return text;
-    };
-    auto fail = [](const std::string& what) {
-        throw std::logic_error(what + ": check what their access() declares");
-    };
+}
+
+/// Refuses a term that reads what a term placed in the last pass or in every pass writes.
+inline void checkLatePlacedReads(const std::vector<TermAccess>& access,
+                                 const std::vector<std::string>& names) {
+    const std::size_t n = access.size();
     for (std::size_t b = 0; b < n; ++b)
         for (std::size_t a = 0; a < n; ++a)
-            if (a != b && !placed(a) &&
-                (detail::listsAny(access[a].produces, access[b].reads) ||
-                 (a < b && detail::listsAny(access[a].prepares, access[b].reads))))
-                fail("the term " + names[b] + " reads what " + names[a] +
-                     " writes, which is placed in the last pass or in every pass");
+            if (a != b && !placedEarliest(access[a]) &&
+                (listsAny(access[a].produces, access[b].reads) ||
+                 (a < b && listsAny(access[a].prepares, access[b].reads))))
+                failSchedule("the term " + names[b] + " reads what " + names[a] +
+                             " writes, which is placed in the last pass or in every pass");
+}
 
-    // The least pass of each term that satisfies its reads: a longest path, found by relaxing.
-    // After n + 1 rounds with changes, a chain of production has closed on itself.
+/// The least pass of each term placed earliest that satisfies its reads: a longest path, found
+/// by relaxing. After n + 1 rounds with changes, a chain of production has closed on itself.
+inline std::vector<std::size_t> leastPasses(const std::vector<TermAccess>& access,
+                                            const std::vector<std::string>& names) {
+    const std::size_t n = access.size();
     std::vector<std::size_t> pass(n, 0);
     for (std::size_t round = 0;; ++round) {
         bool changed = false;
         for (std::size_t b = 0; b < n; ++b)
             for (std::size_t a = 0; a < n; ++a) {
-                if (a == b || !placed(a) || !placed(b)) continue;
+                if (a == b || !placedEarliest(access[a]) || !placedEarliest(access[b])) continue;
                 std::size_t least = 0;
-                if (detail::listsAny(access[a].produces, access[b].reads)) least = pass[a] + 1;
-                if (a < b && detail::listsAny(access[a].prepares, access[b].reads))
+                if (listsAny(access[a].produces, access[b].reads)) least = pass[a] + 1;
+                if (a < b && listsAny(access[a].prepares, access[b].reads))
                     least = std::max(least, pass[a]);
                 if (least > pass[b]) pass[b] = least, changed = true;
             }
-        if (!changed) break;
+        if (!changed) return pass;
         if (round > n) {
-            std::vector<std::size_t> cycle;
+            std::string cycle;
             for (std::size_t t = 0; t < n; ++t)
-                if (pass[t] > n) cycle.push_back(t);
-            fail("the terms " + list(cycle) +
-                 " read what each other produce, so none can run first");
+                if (pass[t] > n) cycle += (cycle.empty() ? "" : ", ") + names[t];
+            failSchedule("the terms " + cycle +
+                         " read what each other produce, so none can run first");
         }
     }
+}
 
+/// The passes: each term in its least pass, a term placed last in the last, one placed in every
+/// pass in each (its derivatives too; the others' derivatives in their own pass).
+inline EvaluationSchedule assemblePasses(const std::vector<TermAccess>& access,
+                                         std::vector<std::size_t> pass) {
+    const std::size_t n = access.size();
     std::size_t last = 0;
     for (std::size_t t = 0; t < n; ++t)
-        if (placed(t)) last = std::max(last, pass[t]);
+        if (placedEarliest(access[t])) last = std::max(last, pass[t]);
     EvaluationSchedule schedule;
     schedule.passes.resize(last + 1);
     for (std::size_t t = 0; t < n; ++t) {
@@ -156,6 +167,16 @@ inline EvaluationSchedule scheduleEvaluation(std::vector<TermAccess> access,
         for (std::size_t t = 0; t < n; ++t)
             if (access[t].placement == PassPlacement::EVERY) p.derivatives.push_back(t);
     return schedule;
+}
+}  // namespace detail
+
+/// The schedule of terms with the given accesses (in the order the terms were added); names
+/// are for messages. Throws std::logic_error when no order of passes satisfies the declarations.
+inline EvaluationSchedule scheduleEvaluation(std::vector<TermAccess> access,
+                                             const std::vector<std::string>& names) {
+    detail::addPreparedReads(access, names);
+    detail::checkLatePlacedReads(access, names);
+    return detail::assemblePasses(access, detail::leastPasses(access, names));
 }
 
 }  // namespace num::sph

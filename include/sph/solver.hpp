@@ -283,83 +283,102 @@ class Solver {
                                   forRanges);
     }
 
+    /// The constants of a pass's pair geometry.
+    template <class Kernel>
+    struct PairConstants {
+        GradientFactor<Kernel> gradient;
+        KernelValue<Kernel> kernelValue;
+        Float laplacianEta2, inverseR2Eta2;
+        bool needsW;
+    };
+
     template <class Kernel>
     void pairLoop(Storage<Dim>& storage, Kernel, PairPass& pass) {
         const std::uint64_t n = storage.size();
         const std::uint64_t blocks = pass.holders.size();
-        const bool needsW = pass.needsW;
         const Float h = kernel_.h;
-        const Float laplacianEta2 = defaults::laplacianEta2 * h * h;
-        const Float inverseR2Eta2 = defaults::inverseR2Eta2 * h * h;
-        const GradientFactor<Kernel> sharedGradient(h);
-        const KernelValue<Kernel> sharedKernelValue(h);
+        const PairConstants<Kernel> constants{GradientFactor<Kernel>(h), KernelValue<Kernel>(h),
+                                              defaults::laplacianEta2 * h * h,
+                                              defaults::inverseR2Eta2 * h * h, pass.needsW};
         const char* owned = decomposition_ ? decomposition_->owned().data() : nullptr;
         // Gathering, a boundary particle is skipped unless a derivative adds anything for it.
         const int* kind = !symmetric_ && storage.has(QuantityId::KIND)
                               ? storage.template getValue<int>(QuantityId::KIND).data()
                               : nullptr;
         scheduler_.parallelFor(Size(blocks), 1, [&](Size b0, Size b1) {
-            // Copies local to the thread's function: no store of the loops below may alias them
-            // (else they are reloaded every pair), and their values are not constants there.
-            const GradientFactor<Kernel> gradient = sharedGradient;
-            const KernelValue<Kernel> kernelValue = sharedKernelValue;
-            for (Size b = b0; b < b1; ++b) {
-                Scratch& sc = scratch_[b];
-                sc.pairs = 0, sc.evaluated = 0;
-                const Size begin = Size(n * b / blocks), end = Size(n * (b + 1) / blocks);
-                for (Size i = begin; i < end; ++i) {
-                    if ((i - begin) % kAbandonCheckEvery == 0 && abandonCheck_ &&
-                        (abandoned_.load(std::memory_order_relaxed) || abandonCheck_())) {
-                        abandoned_.store(true, std::memory_order_relaxed);
-                        break;
-                    }
-                    if (owned && !owned[i]) continue;  // a halo copy: its owner evaluates it
-                    if (kind && !isFluid(kind[i]) && !pass.holders[b].gathersAtBoundary(i))
-                        continue;
-                    ++sc.evaluated;
-                    const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)
-                                              : neighbours_.collect(i, sc.found);
-                    sc.pairs += m;
-                    if (sc.r.size() < m) {
-                        sc.r.resize(2 * m), sc.gradientFactor.resize(2 * m), sc.grads.resize(2 * m);
-                        sc.laplacian.resize(2 * m), sc.inverseR2.resize(2 * m);
-                    }
-                    if (needsW && sc.w.size() < m) sc.w.resize(2 * m);  // passes differ in W
-                    const Vec* dx = sc.found.dx.data();
-                    const double* r2 = sc.found.r2.data();
-                    Float* r = sc.r.data();
-                    Float* gradientFactor = sc.gradientFactor.data();
-                    Vec* grads = sc.grads.data();
-                    Float* laplacian = sc.laplacian.data();
-                    Float* inverseR2 = sc.inverseR2.data();
-                    // The geometry of PairGeometry, in loops the compiler vectorises (the
-                    // scalar factors apart from the vectors they scale).
-                    for (Size k = 0; k < m; ++k) r[k] = std::sqrt(r2[k]);
-                    for (Size k = 0; k < m; ++k) gradientFactor[k] = gradient.factor(r[k]);
-                    for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradientFactor[k];
-                    for (Size k = 0; k < m; ++k)
-                        laplacian[k] =
-                            formulas::pairLaplacian(dx[k], grads[k], r[k], laplacianEta2);
-                    for (Size k = 0; k < m; ++k)
-                        inverseR2[k] = formulas::pairInverseR2(r[k], inverseR2Eta2);
-                    if (needsW) {
-                        Float* w = sc.w.data();
-                        for (Size k = 0; k < m; ++k) w[k] = kernelValue.value(r[k]);
-                    }
-                    const ArrayView<const Size> neighs(sc.found.j.data(), m);
-                    const ArrayView<const Vec> g(grads, m);
-                    const NeighbourGeometry<Dim> geo{
-                        ArrayView<const Vec>(dx, m), ArrayView<const Float>(r, m),
-                        ArrayView<const Float>(sc.w.data(), needsW ? m : 0),
-                        ArrayView<const Float>(laplacian, m), ArrayView<const Float>(inverseR2, m)};
-                    if (symmetric_)
-                        pass.holders[b].evalSymmetric(i, neighs, g, geo);
-                    else
-                        pass.holders[b].evalAsymmetric(i, neighs, g, geo);
-                }
-            }
+            for (Size b = b0; b < b1; ++b)
+                pairBlock(b, Size(n * b / blocks), Size(n * (b + 1) / blocks), constants, owned,
+                          kind, pass);
         });
         countNeighbours(owned != nullptr);
+    }
+
+    /// Evaluates block b's particles [begin, end) with their neighbours. The constants are a copy
+    /// local to the function (as in neighbourGeometry): no store of the loops may alias them.
+    template <class Kernel>
+    void pairBlock(Size b, Size begin, Size end, const PairConstants<Kernel> constants,
+                   const char* owned, const int* kind, PairPass& pass) {
+        Scratch& sc = scratch_[b];
+        sc.pairs = 0, sc.evaluated = 0;
+        DerivativeHolder<Dim>& holder = pass.holders[b];
+        for (Size i = begin; i < end; ++i) {
+            if ((i - begin) % kAbandonCheckEvery == 0 && abandonRequested()) break;
+            if (owned && !owned[i]) continue;  // a halo copy: its owner evaluates it
+            if (kind && !isFluid(kind[i]) && !holder.gathersAtBoundary(i)) continue;
+            ++sc.evaluated;
+            const Size m = symmetric_ ? neighbours_.collectAfter(i, sc.found)
+                                      : neighbours_.collect(i, sc.found);
+            sc.pairs += m;
+            const NeighbourGeometry<Dim> geo = neighbourGeometry(sc, m, constants);
+            const ArrayView<const Size> neighs(sc.found.j.data(), m);
+            const ArrayView<const Vec> g(sc.grads.data(), m);
+            if (symmetric_)
+                holder.evalSymmetric(i, neighs, g, geo);
+            else
+                holder.evalAsymmetric(i, neighs, g, geo);
+        }
+    }
+
+    /// Whether the evaluation is to be abandoned (asked of abandonCheck_ and remembered).
+    bool abandonRequested() {
+        if (!abandonCheck_ || !(abandoned_.load(std::memory_order_relaxed) || abandonCheck_()))
+            return false;
+        abandoned_.store(true, std::memory_order_relaxed);
+        return true;
+    }
+
+    /// The geometry of PairGeometry for the m neighbours in sc.found, in loops the compiler
+    /// vectorises (the scalar factors apart from the vectors they scale); the constants are a
+    /// copy local to the function, so that no store of the loops may alias them (else they are
+    /// reloaded every pair).
+    template <class Kernel>
+    static NeighbourGeometry<Dim> neighbourGeometry(Scratch& sc, Size m,
+                                                    const PairConstants<Kernel> c) {
+        if (sc.r.size() < m) {
+            sc.r.resize(2 * m), sc.gradientFactor.resize(2 * m), sc.grads.resize(2 * m);
+            sc.laplacian.resize(2 * m), sc.inverseR2.resize(2 * m);
+        }
+        if (c.needsW && sc.w.size() < m) sc.w.resize(2 * m);  // passes differ in W
+        const Vec* dx = sc.found.dx.data();
+        const double* r2 = sc.found.r2.data();
+        Float* r = sc.r.data();
+        Float* gradientFactor = sc.gradientFactor.data();
+        Vec* grads = sc.grads.data();
+        Float* laplacian = sc.laplacian.data();
+        Float* inverseR2 = sc.inverseR2.data();
+        for (Size k = 0; k < m; ++k) r[k] = std::sqrt(r2[k]);
+        for (Size k = 0; k < m; ++k) gradientFactor[k] = c.gradient.factor(r[k]);
+        for (Size k = 0; k < m; ++k) grads[k] = dx[k] * gradientFactor[k];
+        for (Size k = 0; k < m; ++k)
+            laplacian[k] = formulas::pairLaplacian(dx[k], grads[k], r[k], c.laplacianEta2);
+        for (Size k = 0; k < m; ++k) inverseR2[k] = formulas::pairInverseR2(r[k], c.inverseR2Eta2);
+        if (c.needsW) {
+            Float* w = sc.w.data();
+            for (Size k = 0; k < m; ++k) w[k] = c.kernelValue.value(r[k]);
+        }
+        return {ArrayView<const Vec>(dx, m), ArrayView<const Float>(r, m),
+                ArrayView<const Float>(sc.w.data(), c.needsW ? m : 0),
+                ArrayView<const Float>(laplacian, m), ArrayView<const Float>(inverseR2, m)};
     }
 
     /// The mean number of neighbours of the particles evaluated (over every process).

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/errors.hpp"
 #include "app/expression.hpp"
@@ -231,6 +232,40 @@ int reportingErrors(const std::string& program, F&& f, Alone&& alone) {
     }
 }
 
+/// Parses the command line; an exit code where it asked for --help or is bad.
+std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const std::string& name) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "%s: error: %s (run '%s --help' for the options and examples)\n",
+                     name.c_str(), e.what(), name.c_str());
+        return int(ExitCode::USAGE);
+    }
+    return std::nullopt;
+}
+
+/// --version and --list-scenes, answered without a scene: their exit code, where one was given.
+std::optional<int> answerVersionOrList(const CommandLine& c, int argc, const AppInfo& info) {
+    if (c.version) {
+        if (argc > 2) {
+            std::fprintf(stderr, "%s: error: --version takes no other option or argument\n",
+                         info.name.c_str());
+            return int(ExitCode::USAGE);
+        }
+        std::printf("%s (numerics) 0.1.0\nCUDA back end (--backend cuda): %s\n", info.name.c_str(),
+                    device::cudaBuilt() ? "built" : "not built (no CUDA compiler at build time)");
+        return 0;
+    }
+    if (c.list) {
+        std::error_code ec;
+        return listScenes(std::filesystem::is_directory("scenes", ec) ? "scenes" : info.scenesDir,
+                          info);
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 template <int Dim>
@@ -263,30 +298,8 @@ int runApp(int argc, char** argv, const AppInfo& info) {
     CommandLine c;
     addOptions(app, c, info);
     app.footer(examples(info.name, Dim));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "%s: error: %s (run '%s --help' for the options and examples)\n",
-                     info.name.c_str(), e.what(), info.name.c_str());
-        return int(ExitCode::USAGE);
-    }
-    if (c.version) {
-        if (argc > 2) {
-            std::fprintf(stderr, "%s: error: --version takes no other option or argument\n",
-                         info.name.c_str());
-            return int(ExitCode::USAGE);
-        }
-        std::printf("%s (numerics) 0.1.0\nCUDA back end (--backend cuda): %s\n", info.name.c_str(),
-                    device::cudaBuilt() ? "built" : "not built (no CUDA compiler at build time)");
-        return 0;
-    }
-    if (c.list) {
-        std::error_code ec;
-        return listScenes(std::filesystem::is_directory("scenes", ec) ? "scenes" : info.scenesDir,
-                          info);
-    }
+    if (const auto code = parseCommandLine(app, argc, argv, info.name)) return *code;
+    if (const auto code = answerVersionOrList(c, argc, info)) return *code;
     RunOptions& opt = c.options;
     opt.program = info.name, opt.communicator = comm.get(), opt.fieldNames = info.fieldNames;
     opt.backendGiven = app.count("--backend") > 0;

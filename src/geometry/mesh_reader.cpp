@@ -201,44 +201,30 @@ bool writeAll(int fd, const void* data, std::size_t n) {
     ::_exit(ok ? 0 : 3);
 }
 
-}  // namespace
-
-TriangleMesh readMesh(const std::string& path) {
-    checkMeshFile(path);
-    int fds[2];
-    if (::pipe(fds) != 0) return detail::readWithAssimp(path);  // no pipe: read here, checked
-    const pid_t child = ::fork();
-    if (child < 0) {
-        ::close(fds[0]), ::close(fds[1]);
-        return detail::readWithAssimp(path);
-    }
-    if (child == 0) {
-        ::close(fds[0]);
-        childReads(path, fds[1]);
-    }
-    ::close(fds[1]);
-    std::string got;
+/// Reads the child's answer from fd until it closes it or kMeshReaderSeconds pass; true when
+/// the time ran out.
+bool readAnswer(int fd, std::string& got) {
     const auto deadline =
         std::chrono::steady_clock::now() + std::chrono::seconds(kMeshReaderSeconds);
-    bool late = false;
     char buffer[65536];
     for (;;) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
             deadline - std::chrono::steady_clock::now());
-        if (left.count() <= 0) {
-            late = true;
-            break;
-        }
-        pollfd p{fds[0], POLLIN, 0};
+        if (left.count() <= 0) return true;
+        pollfd p{fd, POLLIN, 0};
         const int ready = ::poll(&p, 1, int(std::min<long long>(left.count(), 1000)));
-        if (ready < 0 && errno != EINTR) break;
+        if (ready < 0 && errno != EINTR) return false;
         if (ready <= 0) continue;
-        const ssize_t r = ::read(fds[0], buffer, sizeof buffer);
+        const ssize_t r = ::read(fd, buffer, sizeof buffer);
         if (r < 0 && errno == EINTR) continue;
-        if (r <= 0) break;
+        if (r <= 0) return false;
         got.append(buffer, std::size_t(r));
     }
-    ::close(fds[0]);
+}
+
+/// Reaps the child (killed first when late) and refuses the mesh when it was late, died of a
+/// signal or said nothing.
+void reapChild(pid_t child, bool late, bool saidNothing, const std::string& path) {
     if (late) ::kill(child, SIGKILL);
     int status = 0;
     while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
@@ -247,7 +233,7 @@ TriangleMesh readMesh(const std::string& path) {
         throw GeometryError(path + ": not a readable mesh (the reader took more than " +
                             std::to_string(kMeshReaderSeconds) +
                             " s on it): give an STL, OBJ or PLY file of triangles");
-    if (WIFSIGNALED(status) || got.empty())
+    if (WIFSIGNALED(status) || saidNothing)
         throw GeometryError(
             path + ": not a readable mesh (the reader failed on it" +
             (WIFSIGNALED(status) ? std::string(": ") + ::strsignal(WTERMSIG(status)) : "") +
@@ -255,6 +241,11 @@ TriangleMesh readMesh(const std::string& path) {
                  ? ", or it needed more than " + std::to_string(kMeshReaderMemory >> 30) + " GiB"
                  : "") +
             "): give an STL, OBJ or PLY file of triangles");
+}
+
+/// The mesh in the child's answer: 'E' and a message, or 'M', the vertex and triangle counts
+/// and their bytes.
+TriangleMesh decodeAnswer(const std::string& got, const std::string& path) {
     if (got[0] == 'E') throw GeometryError(got.substr(1));
     std::uint64_t counts[2] = {0, 0};
     if (got.size() >= 1 + sizeof counts) std::memcpy(counts, got.data() + 1, sizeof counts);
@@ -272,6 +263,29 @@ TriangleMesh readMesh(const std::string& path) {
     std::memcpy(mesh.triangles.data(), at + counts[0] * sizeof(Point<3>),
                 counts[1] * sizeof(std::array<int, 3>));
     return mesh;
+}
+
+}  // namespace
+
+TriangleMesh readMesh(const std::string& path) {
+    checkMeshFile(path);
+    int fds[2];
+    if (::pipe(fds) != 0) return detail::readWithAssimp(path);  // no pipe: read here, checked
+    const pid_t child = ::fork();
+    if (child < 0) {
+        ::close(fds[0]), ::close(fds[1]);
+        return detail::readWithAssimp(path);
+    }
+    if (child == 0) {
+        ::close(fds[0]);
+        childReads(path, fds[1]);
+    }
+    ::close(fds[1]);
+    std::string got;
+    const bool late = readAnswer(fds[0], got);
+    ::close(fds[0]);
+    reapChild(child, late, got.empty(), path);
+    return decodeAnswer(got, path);
 }
 
 }  // namespace num::geometry

@@ -153,43 +153,56 @@ void writeStorage(ByteWriter& w, const sph::Storage<Dim>& s) {
 
 namespace {
 
-/// The checks of a checkpoint's particles against the scene's (`initial`): every quantity the
-/// scene's particles have, with their value type; material indices within the material table,
-/// kinds known, positions finite. A checkpoint edited by hand (its checksum rewritten) is
-/// refused here rather than crash the run.
+[[noreturn]] void refuseInconsistent(const std::string& file, const std::string& why) {
+    throw AppError(ExitCode::CHECKPOINT,
+                   file + ": the checkpoint's particles are inconsistent: " + why +
+                       "; it cannot be used for --restart (was it edited?)");
+}
+
+/// Every quantity the scene's particles have, with their value type; positions, materials and
+/// kinds present.
 template <int Dim>
-void checkStorage(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
-                  const std::string& file) {
-    auto fail = [&](const std::string& why) {
-        throw AppError(ExitCode::CHECKPOINT,
-                       file + ": the checkpoint's particles are inconsistent: " + why +
-                           "; it cannot be used for --restart (was it edited?)");
-    };
+void checkQuantities(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
+                     const std::string& file) {
     initial.forEach([&](QuantityId id, const sph::Quantity<Dim>& q) {
         if (id == QuantityId::OWNER) return;  // assigned again on restart
-        if (!s.has(id)) fail("quantity " + std::to_string(int(id)) + " is missing");
+        if (!s.has(id))
+            refuseInconsistent(file, "quantity " + std::to_string(int(id)) + " is missing");
         q.visit([&](const auto& b) {
             using T = typename std::decay_t<decltype(b.value)>::value_type;
             if (!s.get(id).template holds<T>())
-                fail("quantity " + std::to_string(int(id)) + " has another value type");
+                refuseInconsistent(
+                    file, "quantity " + std::to_string(int(id)) + " has another value type");
         });
     });
     if (!s.has(QuantityId::POSITION) || !s.has(QuantityId::MATERIAL) || !s.has(QuantityId::KIND) ||
         !s.get(QuantityId::POSITION).template holds<sph::Vector<Dim>>() ||
         !s.get(QuantityId::MATERIAL).template holds<int>() ||
         !s.get(QuantityId::KIND).template holds<int>())
-        fail("positions, materials or kinds are missing or of another type");
+        refuseInconsistent(file, "positions, materials or kinds are missing or of another type");
+}
+
+/// Material indices within the material table, kinds known.
+template <int Dim>
+void checkIndices(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
+                  const std::string& file) {
     const auto material = s.template getValue<int>(QuantityId::MATERIAL);
     const auto kind = s.template getValue<int>(QuantityId::KIND);
     const int materials = int(initial.materials().size());
     for (sph::Size i = 0; i < s.size(); ++i) {
         if (material[i] < 0 || material[i] >= materials)
-            fail("particle " + std::to_string(i) + " has material " + std::to_string(material[i]) +
-                 " of " + std::to_string(materials));
+            refuseInconsistent(file, "particle " + std::to_string(i) + " has material " +
+                                         std::to_string(material[i]) + " of " +
+                                         std::to_string(materials));
         if (kind[i] < 0 || kind[i] >= sph::kParticleKinds)
-            fail("particle " + std::to_string(i) + " has kind " + std::to_string(kind[i]));
+            refuseInconsistent(
+                file, "particle " + std::to_string(i) + " has kind " + std::to_string(kind[i]));
     }
-    // Every value finite, at every derivative level.
+}
+
+/// Every value finite, at every derivative level.
+template <int Dim>
+void checkFinite(const sph::Storage<Dim>& s, const std::string& file) {
     s.forEach([&](QuantityId id, const sph::Quantity<Dim>& q) {
         q.visit([&](const auto& b) {
             using T = typename std::decay_t<decltype(b.value)>::value_type;
@@ -202,16 +215,23 @@ void checkStorage(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
                         else
                             for (int k = 0; k < Dim; ++k) finite &= std::isfinite(value[k]);
                         if (!finite)
-                            fail("quantity " + std::to_string(int(id)) +
-                                 " holds a value that is not finite");
+                            refuseInconsistent(file, "quantity " + std::to_string(int(id)) +
+                                                         " holds a value that is not finite");
                     }
         });
     });
-    // A state the run would stop at on its first step (physical_check.hpp): a fluid particle
-    // at or above its material's sound speed, or at a density beyond half or twice its rest.
+}
+
+/// A state the run would stop at on its first step (physical_check.hpp): a fluid particle at or
+/// above its material's sound speed, or at a density beyond half or twice its rest.
+template <int Dim>
+void checkPhysicalState(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
+                        const std::string& file) {
     if (!s.has(QuantityId::DENSITY) || !s.get(QuantityId::DENSITY).template holds<sph::Float>() ||
         s.order(QuantityId::POSITION) != sph::OrderEnum::SECOND)
         return;
+    const auto material = s.template getValue<int>(QuantityId::MATERIAL);
+    const auto kind = s.template getValue<int>(QuantityId::KIND);
     const auto v = s.template getDt<sph::Vector<Dim>>(QuantityId::POSITION);
     const auto rho = s.template getValue<sph::Float>(QuantityId::DENSITY);
     for (sph::Size i = 0; i < s.size(); ++i) {
@@ -220,14 +240,26 @@ void checkStorage(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
         const double rho0 = params.template get<double>("density");
         const double c0 = params.template get<double>("sound_speed");
         if (!(norm(v[i]) < c0))
-            fail("fluid particle " + std::to_string(i) + " moves at " +
-                 formatted("%.3g", norm(v[i])) + " m/s, at or above the sound speed " +
-                 formatted("%.3g", c0) + " m/s");
+            refuseInconsistent(file, "fluid particle " + std::to_string(i) + " moves at " +
+                                         formatted("%.3g", norm(v[i])) +
+                                         " m/s, at or above the sound speed " +
+                                         formatted("%.3g", c0) + " m/s");
         if (!(rho[i] >= 0.5 * rho0 && rho[i] <= 2 * rho0))
-            fail("fluid particle " + std::to_string(i) + " has the density " +
-                 formatted("%.3g", rho[i]) + " kg/m^3, its rest density " +
-                 formatted("%.3g", rho0));
+            refuseInconsistent(file, "fluid particle " + std::to_string(i) + " has the density " +
+                                         formatted("%.3g", rho[i]) + " kg/m^3, its rest density " +
+                                         formatted("%.3g", rho0));
     }
+}
+
+/// The checks of a checkpoint's particles against the scene's (`initial`). A checkpoint edited by
+/// hand (its checksum rewritten) is refused here rather than crash the run.
+template <int Dim>
+void checkStorage(const sph::Storage<Dim>& s, const sph::Storage<Dim>& initial,
+                  const std::string& file) {
+    checkQuantities(s, initial, file);
+    checkIndices(s, initial, file);
+    checkFinite(s, file);
+    checkPhysicalState(s, initial, file);
 }
 
 }  // namespace

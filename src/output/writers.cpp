@@ -52,71 +52,83 @@ std::vector<char> fieldBytes(const sph::Storage<Dim>& s, const OutputField& f) {
     return bytes;
 }
 
+/// The cells' indices: one vertex per particle (connectivity i, offsets i + 1), from `first`.
+std::vector<char> vertexIndices(std::uint64_t n, std::int64_t first) {
+    std::vector<char> bytes(n * 8);
+    for (std::uint64_t i = 0; i < n; ++i) {
+        const std::int64_t v = std::int64_t(i) + first;
+        std::memcpy(&bytes[i * 8], &v, 8);
+    }
+    return bytes;
+}
+
+/// A VTU file's arrays in its appended block, each as its byte count (UInt64) and its bytes:
+/// their sizes are known in advance, so the XML is written first and each array is made and
+/// written in turn (one array in memory at a time, not all of them).
+class AppendedArrays {
+  public:
+    /// Declares an array in the XML; `make` gives its bytes when the block is written.
+    void add(const std::string& name, const std::string& type, int components, std::uint64_t bytes,
+             std::function<std::vector<char>()> make) {
+        xml << "        <DataArray type=\"" << type << "\" Name=\"" << name
+            << "\" NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\""
+            << offset_ << "\"/>\n";
+        offset_ += sizeof(std::uint64_t) + bytes;
+        arrays_.emplace_back(bytes, std::move(make));
+    }
+    /// Writes the XML, then each array.
+    void write(OutFile& out) const {
+        out.write(xml.str());
+        for (const auto& [size, make] : arrays_) {
+            const std::vector<char> bytes = make();
+            if (bytes.size() != size)
+                throw std::logic_error("writeVtu: an array's size differs from its header's");
+            out.write(&size, sizeof size);
+            out.write(bytes.data(), bytes.size());
+        }
+    }
+    std::ostringstream xml;
+
+  private:
+    std::uint64_t offset_ = 0;
+    std::vector<std::pair<std::uint64_t, std::function<std::vector<char>()>>> arrays_;
+};
+
 }  // namespace
 
-// The arrays follow the XML in one appended block, each as its byte count (UInt64) and its
-// bytes. Their sizes are known in advance, so the XML is written first and each array is made
-// and written in turn: one array in memory at a time, not all of them.
 template <int Dim>
 void writeVtu(const std::string& path, const sph::Storage<Dim>& s,
               const std::vector<OutputField>& fields, double time) {
     const std::uint64_t n = s.size();
-    std::ostringstream xml;
-    std::uint64_t offset = 0;
-    // Each array's size as the XML gives it, and how to make its bytes, in the file's order.
-    std::vector<std::pair<std::uint64_t, std::function<std::vector<char>()>>> arrays;
-    auto array = [&](const std::string& name, const std::string& type, int components,
-                     std::uint64_t bytes, std::function<std::vector<char>()> make) {
-        xml << "        <DataArray type=\"" << type << "\" Name=\"" << name
-            << "\" NumberOfComponents=\"" << components << "\" format=\"appended\" offset=\""
-            << offset << "\"/>\n";
-        offset += sizeof(std::uint64_t) + bytes;
-        arrays.emplace_back(bytes, std::move(make));
-    };
-    // The cells: one vertex per particle (connectivity i, offsets i + 1).
-    auto indices = [n](std::int64_t first) {
-        std::vector<char> bytes(n * 8);
-        for (std::uint64_t i = 0; i < n; ++i) {
-            const std::int64_t v = std::int64_t(i) + first;
-            std::memcpy(&bytes[i * 8], &v, 8);
-        }
-        return bytes;
-    };
-    xml << "<?xml version=\"1.0\"?>\n"
-        << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-           "header_type=\"UInt64\">\n"
-        << "  <UnstructuredGrid>\n"
-        << "    <FieldData>\n"
-        << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
-           "format=\"ascii\">"
-        << formatted("%.17g", time) << "</DataArray>\n"
-        << "    </FieldData>\n"
-        << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
-        << "      <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n";
+    AppendedArrays block;
+    block.xml << "<?xml version=\"1.0\"?>\n"
+              << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                 "header_type=\"UInt64\">\n"
+              << "  <UnstructuredGrid>\n"
+              << "    <FieldData>\n"
+              << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+                 "format=\"ascii\">"
+              << formatted("%.17g", time) << "</DataArray>\n"
+              << "    </FieldData>\n"
+              << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
+              << "      <PointData Scalars=\"temperature\" Vectors=\"velocity\">\n";
     for (const OutputField& f : fields) {
         const FieldLayout l = layoutOf(f);
-        array(f.name, l.type, l.components, n * l.bytesPerParticle,
-              [&s, &f] { return fieldBytes(s, f); });
+        block.add(f.name, l.type, l.components, n * l.bytesPerParticle,
+                  [&s, &f] { return fieldBytes(s, f); });
     }
-    xml << "      </PointData>\n      <Points>\n";
+    block.xml << "      </PointData>\n      <Points>\n";
     const OutputField points{"Points", sph::QuantityId::POSITION, OutputField::Type::VECTOR};
-    array("Points", "Float64", 3, n * layoutOf(points).bytesPerParticle,
-          [&] { return fieldBytes(s, points); });
-    xml << "      </Points>\n      <Cells>\n";
-    array("connectivity", "Int64", 1, n * 8, [&] { return indices(0); });
-    array("offsets", "Int64", 1, n * 8, [&] { return indices(1); });
-    array("types", "UInt8", 1, n, [n] { return std::vector<char>(n, char(1)); });  // VTK_VERTEX
-    xml << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
-        << "  <AppendedData encoding=\"raw\">\n   _";
+    block.add("Points", "Float64", 3, n * layoutOf(points).bytesPerParticle,
+              [&] { return fieldBytes(s, points); });
+    block.xml << "      </Points>\n      <Cells>\n";
+    block.add("connectivity", "Int64", 1, n * 8, [n] { return vertexIndices(n, 0); });
+    block.add("offsets", "Int64", 1, n * 8, [n] { return vertexIndices(n, 1); });
+    block.add("types", "UInt8", 1, n, [n] { return std::vector<char>(n, char(1)); });  // VTK_VERTEX
+    block.xml << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+              << "  <AppendedData encoding=\"raw\">\n   _";
     OutFile out(path);
-    out.write(xml.str());
-    for (const auto& [size, make] : arrays) {
-        const std::vector<char> bytes = make();
-        if (bytes.size() != size)
-            throw std::logic_error("writeVtu: an array's size differs from its header's");
-        out.write(&size, sizeof size);
-        out.write(bytes.data(), bytes.size());
-    }
+    block.write(out);
     out.write("\n  </AppendedData>\n</VTKFile>\n");
     out.close();
 }

@@ -33,8 +33,9 @@ inline double availableMemory() {
 /// A count in full below a million, else in three digits ("1.23e+08").
 inline std::string count(double n) { return n < 1e6 ? formatted("%.0f", n) : formatted("%.3g", n); }
 
+/// Refuses a run that would write more than kMaxOutputs outputs or checkpoints.
 template <int Dim>
-void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, double checkpointEvery) {
+void checkOutputCounts(const Scene<Dim>& scene, double checkpointEvery) {
     const double outputs = scene.endTime / scene.output.every;
     if (outputs > kMaxOutputs)
         throw sceneError(
@@ -46,48 +47,71 @@ void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, doubl
         throw AppError(ExitCode::USAGE, "--checkpoint-every: at most " + count(kMaxOutputs) +
                                             " checkpoints per run, found " +
                                             count(scene.endTime / checkpointEvery));
+}
+
+/// A shape's volume in lattice cells; another shape than a box or ball by its bounding box
+/// within the domain.
+template <int Dim>
+double latticeCells(const SceneShape<Dim>& f, const Scene<Dim>& scene) {
+    const double dx = scene.spacing;
+    double v = 1;
+    const geometry::Bounds<Dim> b = f.placed().bounds();
+    for (int k = 0; k < Dim; ++k)
+        if (f.shape == ShapeKind::SOLID)
+            v *= std::max(0.0, std::min(b.max[k], scene.domainMax[k]) -
+                                   std::max(b.min[k], scene.domainMin[k])) /
+                 dx;
+        else if (f.shape == ShapeKind::BOX)
+            v *= (f.max[k] - f.min[k]) / dx;
+    if (f.shape == ShapeKind::CIRCLE || f.shape == ShapeKind::SPHERE)
+        v = Dim == 2 ? M_PI * f.radius * f.radius / (dx * dx)
+                     : 4.0 / 3 * M_PI * std::pow(f.radius / dx, 3);
+    return v;
+}
+
+/// The scene's particles, estimated before they are made.
+struct ParticleEstimate {
+    double lattice = 1, inside = 1;  ///< lattice points with and without the walls' layers
+    double fluid = 0, bodies = 0, emitted = 0;
+    double walls() const { return lattice - inside; }
+    double total() const { return fluid + walls() + bodies + emitted; }
+};
+
+template <int Dim>
+ParticleEstimate estimateParticles(const Scene<Dim>& scene, const SceneSetup<Dim>& setup) {
     const double dx = scene.spacing, layers = setup.wallLayers;
-    double lattice = 1, inside = 1;
+    ParticleEstimate e;
     for (int k = 0; k < Dim; ++k) {
         const double n = (scene.domainMax[k] - scene.domainMin[k]) / dx;
         int walls = 0;
         for (int hi = 0; hi < 2; ++hi) walls += setup.geometry.hasWall(k, hi);
-        lattice *= n + walls * layers, inside *= n;
+        e.lattice *= n + walls * layers, e.inside *= n;
     }
-    double fluid = 0, bodies = 0, emitted = 0;
-    // In lattice cells; another shape than a box or ball by its bounding box within the domain.
-    auto volume = [&](const SceneShape<Dim>& f) {
-        double v = 1;
-        const geometry::Bounds<Dim> b = f.placed().bounds();
-        for (int k = 0; k < Dim; ++k)
-            if (f.shape == ShapeKind::SOLID)
-                v *= std::max(0.0, std::min(b.max[k], scene.domainMax[k]) -
-                                       std::max(b.min[k], scene.domainMin[k])) /
-                     dx;
-            else if (f.shape == ShapeKind::BOX)
-                v *= (f.max[k] - f.min[k]) / dx;
-        if (f.shape == ShapeKind::CIRCLE || f.shape == ShapeKind::SPHERE)
-            v = Dim == 2 ? M_PI * f.radius * f.radius / (dx * dx)
-                         : 4.0 / 3 * M_PI * std::pow(f.radius / dx, 3);
-        return v;
-    };
-    for (const auto& f : scene.fluids) fluid += volume(f);
-    for (const auto& b : scene.bodies) bodies += volume(b);
-    for (const auto& e : scene.emitters) {
-        const double across = Dim == 2 ? 2 * e.radius / dx : M_PI * std::pow(e.radius / dx, 2);
-        const double seconds = std::max(0.0, std::min(e.end, scene.endTime) - e.start);
-        emitted += std::max(1.0, across) * (e.speed * seconds / dx + 1);
+    for (const auto& f : scene.fluids) e.fluid += latticeCells(f, scene);
+    for (const auto& b : scene.bodies) e.bodies += latticeCells(b, scene);
+    for (const auto& m : scene.emitters) {
+        const double across = Dim == 2 ? 2 * m.radius / dx : M_PI * std::pow(m.radius / dx, 2);
+        const double seconds = std::max(0.0, std::min(m.end, scene.endTime) - m.start);
+        e.emitted += std::max(1.0, across) * (m.speed * seconds / dx + 1);
     }
-    const double total = fluid + (lattice - inside) + bodies + emitted;
-    const std::string numbers = "about " + count(total) + " particles (fluid " + count(fluid) +
-                                ", walls " + count(lattice - inside) + ", bodies " + count(bodies) +
-                                ", emitted " + count(emitted) + ")";
+    return e;
+}
+
+/// Refuses a scene whose outputs, lattice, particles or memory exceed the limits.
+template <int Dim>
+void checkRunLimits(const Scene<Dim>& scene, const SceneSetup<Dim>& setup, double checkpointEvery) {
+    checkOutputCounts(scene, checkpointEvery);
+    const ParticleEstimate e = estimateParticles(scene, setup);
+    const double total = e.total();
+    const std::string numbers = "about " + count(total) + " particles (fluid " + count(e.fluid) +
+                                ", walls " + count(e.walls()) + ", bodies " + count(e.bodies) +
+                                ", emitted " + count(e.emitted) + ")";
     const char* hint = "increase particles.spacing, or shrink the domain, the blocks or emitters";
-    if (lattice > kMaxLatticePoints)
+    if (e.lattice > kMaxLatticePoints)
         throw sceneError(
             scene.file, "particles.spacing",
             "at most " + count(kMaxLatticePoints) + " lattice points over the domain and its walls",
-            count(lattice) + " (spacing " + formatted("%g", dx) + " m)", hint);
+            count(e.lattice) + " (spacing " + formatted("%g", scene.spacing) + " m)", hint);
     if (total > kMaxParticles)
         throw sceneError(scene.file, "particles.spacing",
                          "a scene of at most " + count(kMaxParticles) + " particles", numbers,

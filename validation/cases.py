@@ -440,6 +440,23 @@ def quadratic_reading(p, field, points, h):
     return np.array(values)
 
 
+def natural_convection_nusselt(run, L, alpha, dT):
+    """The mean Nusselt number of the last output of natural_convection's cavity."""
+    # Mean Nusselt number: the heat flux q_x = rho c (u T - alpha dT/dx), averaged over the fluid
+    # between its first and last column of particles (the conduction part from their mean
+    # temperatures), over alpha rho c dT / L.
+    p = run.particles()
+    dx = run.spacing
+    cols = np.clip(np.floor(p["x"] / dx).astype(int), 0, int(round(L / dx)) - 1)
+    first, last = cols.min(), cols.max()
+    t_first, t_last = p["temperature"][cols == first].mean(), p["temperature"][cols == last].mean()
+    x_first, x_last = p["x"][cols == first].mean(), p["x"][cols == last].mean()
+    conduction = (t_first - t_last) / (x_last - x_first) * L / dT
+    band = (p["x"] >= x_first) & (p["x"] <= x_last)
+    convection = np.mean(p["vx"][band] * (p["temperature"][band] - p["temperature"][band].mean())) * L / (alpha * dT)
+    return float(conduction + convection)
+
+
 def natural_convection(run, ra):
     mat = next(iter(run.scene["materials"].values()))
     alpha = mat["conductivity"] / (mat["density"] * mat["heat_capacity"])
@@ -472,19 +489,7 @@ def natural_convection(run, ra):
     ys = np.array([(i + 1) / (n + 1) for i in range(n)]) * L
     probe_u = peak(ys, np.array([pr[f"u{i:02d}.vx"][rows].mean() for i in range(n)]) * L / alpha)[0]
     probe_v = peak(ys, np.array([pr[f"v{i:02d}.vy"][rows].mean() for i in range(n)]) * L / alpha)[0]
-    # Mean Nusselt number: the heat flux q_x = rho c (u T - alpha dT/dx), averaged over the fluid
-    # between its first and last column of particles (the conduction part from their mean
-    # temperatures), over alpha rho c dT / L.
-    p = run.particles()
-    dx = run.spacing
-    cols = np.clip(np.floor(p["x"] / dx).astype(int), 0, int(round(L / dx)) - 1)
-    first, last = cols.min(), cols.max()
-    t_first, t_last = p["temperature"][cols == first].mean(), p["temperature"][cols == last].mean()
-    x_first, x_last = p["x"][cols == first].mean(), p["x"][cols == last].mean()
-    conduction = (t_first - t_last) / (x_last - x_first) * L / dT
-    band = (p["x"] >= x_first) & (p["x"] <= x_last)
-    convection = np.mean(p["vx"][band] * (p["temperature"][band] - p["temperature"][band].mean())) * L / (alpha * dT)
-    nu_mean = float(conduction + convection)
+    nu_mean = natural_convection_nusselt(run, L, alpha, dT)
     ref = DE_VAHL_DAVIS[ra]
     t, t0 = run.time(), run.time(frames[0])
     window = f"averaged over t = {t0:g} to {t:g} s ({k} outputs)"
@@ -1163,6 +1168,32 @@ def graetz_axial(peb, xh_end, nx=1200, ny=40):
 GRAETZ_WINDOW = 3.0
 
 
+def graetz_bulk_temperature(run, L, dx, t_in, t_w):
+    """graetz_2d's frames of its last GRAETZ_WINDOW s, its slices' centres x and their theta_b."""
+    edges = np.arange(0, L + dx, 2 * dx)
+    edges[-1] = L
+    n = len(edges) - 1
+    num, den, xsum, count = (np.zeros(n) for _ in range(4))
+    frames = steady_frames(run, GRAETZ_WINDOW)
+    for k in frames:
+        p = run.particles(k)
+        i = np.clip(np.digitize(p["x"], edges) - 1, 0, n - 1)
+        uv = p["vx"] * p["mass"] / p["density"]
+        num += np.bincount(i, uv * (p["temperature"] - t_w), n)
+        den += np.bincount(i, uv, n)
+        xsum += np.bincount(i, p["x"], n)
+        count += np.bincount(i, minlength=n)
+    return frames, xsum / count, num / den / (t_in - t_w)
+
+
+def graetz_series_developed_at(L, scale, lam, a):
+    """The series' points xs, its modes' decay there, and where it is developed (local Nu in 1 %)."""
+    xs = np.linspace(0, L, 2001)
+    decay = np.exp(-np.outer(xs * scale, lam))
+    local = 4 * (decay @ (a * lam)) / (decay @ a)
+    return xs, decay, float(xs[np.argmax(np.abs(local / (4 * lam[0]) - 1) < 0.01)])
+
+
 def graetz(run):
     """Hot water (T_in) entering with the parabolic profile of mean velocity U between walls held
     at T_w: the bulk (mixing-cup) temperature theta_b = sum u T V / sum u V over slices two
@@ -1182,28 +1213,12 @@ def graetz(run):
     U, b, dx = INLET_MEAN_VELOCITY, H / 2, run.spacing
     peb = U * b / alpha
     scale = alpha / (U * b * b)  # xh per metre
-    edges = np.arange(0, L + dx, 2 * dx)
-    edges[-1] = L
-    n = len(edges) - 1
-    num, den, xsum, count = (np.zeros(n) for _ in range(4))
-    frames = steady_frames(run, GRAETZ_WINDOW)
-    for k in frames:
-        p = run.particles(k)
-        i = np.clip(np.digitize(p["x"], edges) - 1, 0, n - 1)
-        uv = p["vx"] * p["mass"] / p["density"]
-        num += np.bincount(i, uv * (p["temperature"] - t_w), n)
-        den += np.bincount(i, uv, n)
-        xsum += np.bincount(i, p["x"], n)
-        count += np.bincount(i, minlength=n)
-    x, theta = xsum / count, num / den / (t_in - t_w)
+    frames, x, theta = graetz_bulk_temperature(run, L, dx, t_in, t_w)
     lam, a = graetz_plates()
     series = np.exp(-np.outer(x * scale, lam)) @ a
     err = np.abs(theta - series)
     # where the series is developed: its local Nu within 1 % of 4 lambda_1
-    xs = np.linspace(0, L, 2001)
-    decay = np.exp(-np.outer(xs * scale, lam))
-    local = 4 * (decay @ (a * lam)) / (decay @ a)
-    x_dev = float(xs[np.argmax(np.abs(local / (4 * lam[0]) - 1) < 0.01)])
+    xs, decay, x_dev = graetz_series_developed_at(L, scale, lam, a)
     fit = (x >= x_dev) & (x <= L - H / 2)
     lam_app = -float(np.polyfit(x[fit] * scale, np.log(theta[fit]), 1)[0])
     lam_pe, nu_pe, r = graetz_developed(peb)

@@ -121,6 +121,68 @@ def ci_line(c, n_checks):
     return text
 
 
+def case_section(name, c, doc, runs, rel_plot, png):
+    """The report's section of a case with a result at documentation resolution."""
+    run = [f"{doc['steps']} steps"]
+    if doc["threads"] != 2:
+        run.append(f"{doc['threads']} thread{'s' if doc['threads'] != 1 else ''}")
+    if c.get("shared_cores"):
+        run.append("cores shared with other work")
+    run.append(f"build {doc['app_build']}")
+    out = [f"## {name}\n", f"{c['setup']}. Run: `{doc['command']}` ({', '.join(run)}).\n",
+           f"Checks (gate: {c.get('gates', 'issue {}'.format(c.get('issue', 9)))}; "
+           f"{ci_line(c, len(doc['checks']))}):\n"]
+    for i, ch in enumerate(doc["checks"]):
+        out.append(f"{i + 1}. {ch['metric']}: {ch['value']:.4g}, gate {ch['gate']:g}, "
+                   f"{'pass' if ch['passed'] else '**MISSED**'}")
+    out.append("")
+    if c.get("details"):
+        out.append(f"Details: {doc['notes']}.\n")
+    if not doc["passed"] and c.get("miss_note"):
+        out.append(f"**Why it misses**: {c['miss_note']}\n")
+    if c.get("note"):
+        out.append(f"{c['note']}\n")
+    if c.get("doc_note"):
+        out.append(f"Resolution: {c['doc_note']}.\n")
+    out.append("| spacing | particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |")
+    out.append("|" + "---|" * (len(doc["checks"]) + 3))
+    for r in runs:
+        if "failed" in r:
+            out.append(f"| {r['spacing']:.4g} | run failed: {r['failed']} |")
+            continue
+        sp = f"{r['spacing']:.4g}"
+        out.append(f"| {f'**{sp}**' if r is doc else sp} | {r['fluid_particles']} | " +
+                   " | ".join(f"{ch['value']:.4g}" for ch in r["checks"]) + f" | {r['wall_seconds']:.0f} |")
+    out.append(f"\n![{name}]({rel_plot}/{os.path.basename(png)})\n")
+    return "\n".join(out)
+
+
+def report_head(span, passed, missed, absent):
+    """The report's introduction and the head of its table of cases."""
+    return f"""# Validation report
+
+Each case is a scene of `scenes/validation/` run by `fluid_sim` or `fluid_sim_3d` with the app's
+defaults (only the spacing changes, `--set particles.spacing=DX`) and compared with its reference
+([reference_solutions.md](reference_solutions.md), `validation/data/`) from the app's own outputs
+by `validation/cases.py`. A gate is never loosened: a case that misses it says **MISSED**.
+
+- One case: `/usr/bin/python3 validation/cases.py run CASE --spacing DX --bin build/release/apps`.
+- Every case with its convergence study, and this page: `validation/run.sh` (the figures of every
+  run are kept in `docs/validation/summary.json`).
+- CI (`ctest -L validation`) runs each case at a coarser spacing against its gate or, where the
+  case misses it or comes close, a regression bound (the error measured there plus 50 %).
+
+Wall times: 2 threads on 2 CPU cores (a KVM guest) unless a run says otherwise.
+App builds of {span}; each case's run names its build.
+Each case's table is its convergence study, the documentation resolution in bold.
+
+**{passed} of {len(cases.CASES)} cases meet their gates** at documentation resolution, {missed} miss them{f", {absent} have no result" if absent else ""}.
+
+| case | documentation spacing | measured (the check furthest from its gate) | its gate | result |
+|---|---|---|---|---|
+"""
+
+
 def main():
     results_dir, summary, report, plot_dir = sys.argv[1:5]
     os.makedirs(plot_dir, exist_ok=True)
@@ -149,61 +211,9 @@ def main():
         rows.append(f"| [{name}](#{name}) | {doc['spacing']:.4g} ({doc['fluid_particles']} particles) | "
                     f"{main_ch['value']:.3g} | {main_ch['gate']:g} | {'pass' if ok else '**MISSED**'} |")
         png = plot(name, doc, runs, plot_dir)
-        run = [f"{doc['steps']} steps"]
-        if doc["threads"] != 2:
-            run.append(f"{doc['threads']} thread{'s' if doc['threads'] != 1 else ''}")
-        if c.get("shared_cores"):
-            run.append("cores shared with other work")
-        run.append(f"build {doc['app_build']}")
-        out = [f"## {name}\n", f"{c['setup']}. Run: `{doc['command']}` ({', '.join(run)}).\n",
-               f"Checks (gate: {c.get('gates', 'issue {}'.format(c.get('issue', 9)))}; "
-               f"{ci_line(c, len(doc['checks']))}):\n"]
-        for i, ch in enumerate(doc["checks"]):
-            out.append(f"{i + 1}. {ch['metric']}: {ch['value']:.4g}, gate {ch['gate']:g}, "
-                       f"{'pass' if ch['passed'] else '**MISSED**'}")
-        out.append("")
-        if c.get("details"):
-            out.append(f"Details: {doc['notes']}.\n")
-        if not ok and c.get("miss_note"):
-            out.append(f"**Why it misses**: {c['miss_note']}\n")
-        if c.get("note"):
-            out.append(f"{c['note']}\n")
-        if c.get("doc_note"):
-            out.append(f"Resolution: {c['doc_note']}.\n")
-        out.append("| spacing | particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |")
-        out.append("|" + "---|" * (len(doc["checks"]) + 3))
-        for r in runs:
-            if "failed" in r:
-                out.append(f"| {r['spacing']:.4g} | run failed: {r['failed']} |")
-                continue
-            sp = f"{r['spacing']:.4g}"
-            out.append(f"| {f'**{sp}**' if r is doc else sp} | {r['fluid_particles']} | " +
-                       " | ".join(f"{ch['value']:.4g}" for ch in r["checks"]) + f" | {r['wall_seconds']:.0f} |")
-        out.append(f"\n![{name}]({rel_plot}/{os.path.basename(png)})\n")
-        sections.append("\n".join(out))
+        sections.append(case_section(name, c, doc, runs, rel_plot, png))
     span = (f"{min(dates)} to {max(dates)}" if len(dates) > 1 else min(dates) if dates else "dates unknown")
-    head = f"""# Validation report
-
-Each case is a scene of `scenes/validation/` run by `fluid_sim` or `fluid_sim_3d` with the app's
-defaults (only the spacing changes, `--set particles.spacing=DX`) and compared with its reference
-([reference_solutions.md](reference_solutions.md), `validation/data/`) from the app's own outputs
-by `validation/cases.py`. A gate is never loosened: a case that misses it says **MISSED**.
-
-- One case: `/usr/bin/python3 validation/cases.py run CASE --spacing DX --bin build/release/apps`.
-- Every case with its convergence study, and this page: `validation/run.sh` (the figures of every
-  run are kept in `docs/validation/summary.json`).
-- CI (`ctest -L validation`) runs each case at a coarser spacing against its gate or, where the
-  case misses it or comes close, a regression bound (the error measured there plus 50 %).
-
-Wall times: 2 threads on 2 CPU cores (a KVM guest) unless a run says otherwise.
-App builds of {span}; each case's run names its build.
-Each case's table is its convergence study, the documentation resolution in bold.
-
-**{passed} of {len(cases.CASES)} cases meet their gates** at documentation resolution, {missed} miss them{f", {absent} have no result" if absent else ""}.
-
-| case | documentation spacing | measured (the check furthest from its gate) | its gate | result |
-|---|---|---|---|---|
-"""
+    head = report_head(span, passed, missed, absent)
     with open(report, "w") as f:
         f.write(head + "\n".join(rows) + "\n\n" + "\n".join(sections))
 

@@ -266,7 +266,8 @@ def check_size(a, env, name, dx, steps, budget):
                scaling_figure(*figures, fluid=summaries[1].get("fluid_particles")), seconds)
 
 
-def main(argv=None):
+def parse_args(argv):
+    """The command line (see the module's docstring), with the work folder made."""
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--host", action="store_true",
                     help="no GPU: the host execution, what runs without one")
@@ -280,14 +281,25 @@ def main(argv=None):
         import tempfile
         a.work = tempfile.mkdtemp(prefix="numerics_gpu_check_")
     os.makedirs(a.work, exist_ok=True)
-    only = set(x for x in a.only.split(",") if x)
-    wanted = lambda part: not only or part in only
+    return a
 
+
+def run_env(a):
+    """The environment of every run (--host: the host execution; --debug: NUMERICS_CUDA_DEBUG=1)."""
     env = dict(os.environ)
     env["NUMERICS_TEST_DEVICE_EXECUTION"] = "host" if a.host else ""
     if a.debug:
         env["NUMERICS_CUDA_DEBUG"] = "1"
     env.setdefault("OMP_WAIT_POLICY", "PASSIVE")
+    return env
+
+
+def main(argv=None):
+    a = parse_args(argv)
+    only = set(x for x in a.only.split(",") if x)
+    wanted = lambda part: not only or part in only
+
+    env = run_env(a)
     start = time.monotonic()
     mode = "host execution (--host: no GPU figures)" if a.host else "GPU"
     say(f"gpu_check: {mode}{', debug mode' if a.debug else ''}; runs in {a.work}")

@@ -206,7 +206,8 @@ def shipped_scenes(a, work, env, quiet):
     return ok
 
 
-def main():
+def parse_args():
+    """The command line (see the module's docstring)."""
     ap = argparse.ArgumentParser()
     ap.add_argument("fluid_sim")
     ap.add_argument("fluid_sim_3d")
@@ -214,7 +215,112 @@ def main():
     ap.add_argument("work")
     ap.add_argument("--mode", choices=["host", "gpu"], required=True)
     ap.add_argument("--short", action="store_true", help="--mode gpu: runs a fifth as long")
-    a = ap.parse_args()
+    return ap.parse_args()
+
+
+def gpu_missing(a, work, env, quiet, s2):
+    """--mode gpu: SKIP (the reason printed) without a CUDA back end or a GPU, else None."""
+    version = run(a.fluid_sim, ["--version"]).stdout
+    if "back end (--backend cuda): built" not in version:
+        print("skipped: no GPU test possible: this build has no CUDA back end (" + version.strip().splitlines()[-1] + ")")
+        return SKIP
+    probe = run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", "1e-4", "--out",
+                              os.path.join(work, "probe")] + quiet, env, check=False)
+    if probe.returncode == 12:
+        print("skipped: no GPU: " + probe.stderr.strip())
+        return SKIP
+    if probe.returncode != 0:
+        sys.exit(f"FAILED: the probe run exited {probe.returncode}: {probe.stderr}")
+    return None
+
+
+def dam_breaks(a, work, env, quiet, scenes, host, gpu_time, tolerance):
+    """The 2D and 3D dam breaks and the 2D default scene: cuda against cpu; True where all agree."""
+    s2, s3, hot_cold = scenes
+    ok = True
+    # 2D and 3D dam breaks: cuda against cpu. On the host execution the order of operations is
+    # the CPU's up to round-off, so the figures agree to many digits and the steps are the same;
+    # on the GPU (its own pow and libm) within 1 %.
+    cases = [("2D dam break (Martin & Moyce)", a.fluid_sim, s2, "0.05" if host else gpu_time("0.5"), []),
+             ("3D dam break", a.fluid_sim_3d, s3, "0.05" if host else gpu_time("0.5"),
+              ["--set", "particles.spacing=0.08"] if host else []),
+             ("2D default scene (bodies, heat)", a.fluid_sim, hot_cold,
+              "0.01" if host else gpu_time("0.2"), [])]
+    for name, app, scene, end, extra in cases:
+        print(name + ", t = " + end + " s:")
+        tag = name.split(" ")[0] + ("_default" if "default" in name else "")
+        g, c = os.path.join(work, tag + "_cuda"), os.path.join(work, tag + "_cpu")
+        run(app, [scene, "--backend", "cuda", "--end-time", end, "--out", g] + quiet + extra, env)
+        run(app, [scene, "--backend", "cpu", "--end-time", end, "--out", c] + quiet + extra)
+        ok &= compare_runs(g, c, tolerance, same_steps=host)
+    return ok
+
+
+def two_runs_bitwise(a, work, env, quiet, s2, host, gpu_time):
+    """Two cuda runs: bitwise identical (their checkpoints byte for byte); True where they are."""
+    print("two cuda runs, bitwise:")
+    end = "0.02" if host else gpu_time("0.2")
+    dirs = [os.path.join(work, f"repeat{k}") for k in (1, 2)]
+    for d in dirs:
+        run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", end, "--checkpoint-every", end,
+                          "--out", d] + quiet, env)
+    same = filecmp.cmp(os.path.join(dirs[0], "checkpoint_0001.chk"),
+                       os.path.join(dirs[1], "checkpoint_0001.chk"), shallow=False)
+    print(f"  {'ok  ' if same else 'FAIL'} checkpoint_0001.chk identical")
+    return same
+
+
+def restart_cpu_cuda_cpu(a, work, env, quiet, s2, host, gpu_time, tolerance):
+    """Restart CPU -> cuda -> CPU against the CPU all the way; True where they agree."""
+    print("restart cpu -> cuda -> cpu:")
+    t1, t2, t3 = ("0.01", "0.02", "0.03") if host else tuple(gpu_time(t) for t in ("0.1", "0.2", "0.3"))
+    r1, r2, r3, ref = (os.path.join(work, n) for n in ("r_cpu1", "r_cuda", "r_cpu2", "r_ref"))
+    run(a.fluid_sim, [s2, "--backend", "cpu", "--end-time", t1, "--checkpoint-every", t1, "--out", r1] + quiet)
+    run(a.fluid_sim, ["--restart", os.path.join(r1, "checkpoint_0001.chk"), "--backend", "cuda",
+                      "--end-time", t2, "--checkpoint-every", t1, "--out", r2] + quiet, env)
+    run(a.fluid_sim, ["--restart", os.path.join(r2, "checkpoint_0002.chk"), "--backend", "cpu",
+                      "--end-time", t3, "--out", r3] + quiet)
+    run(a.fluid_sim, [s2, "--backend", "cpu", "--end-time", t3, "--out", ref] + quiet)
+    return compare_runs(r3, ref, tolerance, same_steps=False)
+
+
+def open_side_and_refusals(a, work, env, quiet, s2, tolerance):
+    """--mode host: water leaving through an open side, and the refusals; True where all pass."""
+    ok = True
+    # Water leaving through an open side (the dam break's tank shortened to 0.12 m, its far
+    # wall opened): the same particles removed.
+    print("an open side that water leaves through, t = 0.15 s:")
+    g, c = os.path.join(work, "open_cuda"), os.path.join(work, "open_cpu")
+    opened = ["--end-time", "0.15", "--set", "boundaries.x_max.type=open", "--set",
+              "domain.max=[0.12,0.2286]", "--set", "particles.spacing=0.0057", "--set",
+              "probes=[]"] + quiet
+    run(a.fluid_sim, [s2, "--backend", "cuda", "--out", g] + opened, env)
+    run(a.fluid_sim, [s2, "--backend", "cpu", "--out", c] + opened)
+    ok &= compare_runs(g, c, tolerance, same_steps=True)
+    removed = summary(g)["removed_particles"], summary(c)["removed_particles"]
+    good = removed[0] == removed[1] > 0
+    print(f"  {'ok  ' if good else 'FAIL'} removed particles {removed[0]}, the cpu run {removed[1]}")
+    ok &= good
+    # What the back end does not run: one line naming the scene key, exit 5.
+    print("refusals:")
+    sym = run(a.fluid_sim, [s2, "--backend", "cuda", "--set", "particles.evaluation=symmetric",
+                            "--out", os.path.join(work, "sym")] + quiet, env, check=False)
+    good = sym.returncode == 5 and "particles.evaluation" in sym.stderr
+    print(f"  {'ok  ' if good else 'FAIL'} symmetric: exit {sym.returncode}: {sym.stderr.strip()}")
+    ok &= good
+    # Without the test hook, on a build without CUDA or a machine without a GPU: exit 12.
+    plain = run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", "1e-4", "--out",
+                              os.path.join(work, "plain")] + quiet,
+                {"NUMERICS_TEST_DEVICE_EXECUTION": ""}, check=False)
+    good = plain.returncode in (0, 12) and (plain.returncode == 0 or "cuda" in plain.stderr)
+    print(f"  {'ok  ' if good else 'FAIL'} without the hook: exit {plain.returncode} "
+          f"(0 with a GPU, 12 without): {plain.stderr.strip()}")
+    ok &= good
+    return ok
+
+
+def main():
+    a = parse_args()
     host = a.mode == "host"
     # The GPU's end times; --short: a fifth of them.
     gpu_time = (lambda t: f"{float(t) / 5:g}") if a.short else (lambda t: t)
@@ -229,91 +335,18 @@ def main():
     hot_cold = os.path.join(a.scenes, "dam_break_hot_cold_2d.json")  # fluid_sim's default
 
     if not host:
-        version = run(a.fluid_sim, ["--version"]).stdout
-        if "back end (--backend cuda): built" not in version:
-            print("skipped: no GPU test possible: this build has no CUDA back end (" + version.strip().splitlines()[-1] + ")")
-            return SKIP
-        probe = run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", "1e-4", "--out",
-                                  os.path.join(work, "probe")] + quiet, env, check=False)
-        if probe.returncode == 12:
-            print("skipped: no GPU: " + probe.stderr.strip())
-            return SKIP
-        if probe.returncode != 0:
-            sys.exit(f"FAILED: the probe run exited {probe.returncode}: {probe.stderr}")
+        skipped = gpu_missing(a, work, env, quiet, s2)
+        if skipped is not None:
+            return skipped
 
     ok = True
-    # 2D and 3D dam breaks: cuda against cpu. On the host execution the order of operations is
-    # the CPU's up to round-off, so the figures agree to many digits and the steps are the same;
-    # on the GPU (its own pow and libm) within 1 %.
-    cases = [("2D dam break (Martin & Moyce)", a.fluid_sim, s2, "0.05" if host else gpu_time("0.5"), []),
-             ("3D dam break", a.fluid_sim_3d, s3, "0.05" if host else gpu_time("0.5"),
-              ["--set", "particles.spacing=0.08"] if host else []),
-             ("2D default scene (bodies, heat)", a.fluid_sim, hot_cold,
-              "0.01" if host else gpu_time("0.2"), [])]
     tolerance = 1e-6 if host else 1e-2
-    for name, app, scene, end, extra in cases:
-        print(name + ", t = " + end + " s:")
-        tag = name.split(" ")[0] + ("_default" if "default" in name else "")
-        g, c = os.path.join(work, tag + "_cuda"), os.path.join(work, tag + "_cpu")
-        run(app, [scene, "--backend", "cuda", "--end-time", end, "--out", g] + quiet + extra, env)
-        run(app, [scene, "--backend", "cpu", "--end-time", end, "--out", c] + quiet + extra)
-        ok &= compare_runs(g, c, tolerance, same_steps=host)
-
-    # Two cuda runs: bitwise identical (their checkpoints byte for byte).
-    print("two cuda runs, bitwise:")
-    end = "0.02" if host else gpu_time("0.2")
-    dirs = [os.path.join(work, f"repeat{k}") for k in (1, 2)]
-    for d in dirs:
-        run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", end, "--checkpoint-every", end,
-                          "--out", d] + quiet, env)
-    same = filecmp.cmp(os.path.join(dirs[0], "checkpoint_0001.chk"),
-                       os.path.join(dirs[1], "checkpoint_0001.chk"), shallow=False)
-    print(f"  {'ok  ' if same else 'FAIL'} checkpoint_0001.chk identical")
-    ok &= same
-
-    # Restart CPU -> cuda -> CPU against the CPU all the way.
-    print("restart cpu -> cuda -> cpu:")
-    t1, t2, t3 = ("0.01", "0.02", "0.03") if host else tuple(gpu_time(t) for t in ("0.1", "0.2", "0.3"))
-    r1, r2, r3, ref = (os.path.join(work, n) for n in ("r_cpu1", "r_cuda", "r_cpu2", "r_ref"))
-    run(a.fluid_sim, [s2, "--backend", "cpu", "--end-time", t1, "--checkpoint-every", t1, "--out", r1] + quiet)
-    run(a.fluid_sim, ["--restart", os.path.join(r1, "checkpoint_0001.chk"), "--backend", "cuda",
-                      "--end-time", t2, "--checkpoint-every", t1, "--out", r2] + quiet, env)
-    run(a.fluid_sim, ["--restart", os.path.join(r2, "checkpoint_0002.chk"), "--backend", "cpu",
-                      "--end-time", t3, "--out", r3] + quiet)
-    run(a.fluid_sim, [s2, "--backend", "cpu", "--end-time", t3, "--out", ref] + quiet)
-    ok &= compare_runs(r3, ref, tolerance, same_steps=False)
-
+    ok &= dam_breaks(a, work, env, quiet, (s2, s3, hot_cold), host, gpu_time, tolerance)
+    ok &= two_runs_bitwise(a, work, env, quiet, s2, host, gpu_time)
+    ok &= restart_cpu_cuda_cpu(a, work, env, quiet, s2, host, gpu_time, tolerance)
     if host:
         ok &= shipped_scenes(a, work, env, quiet)
-        # Water leaving through an open side (the dam break's tank shortened to 0.12 m, its far
-        # wall opened): the same particles removed.
-        print("an open side that water leaves through, t = 0.15 s:")
-        g, c = os.path.join(work, "open_cuda"), os.path.join(work, "open_cpu")
-        opened = ["--end-time", "0.15", "--set", "boundaries.x_max.type=open", "--set",
-                  "domain.max=[0.12,0.2286]", "--set", "particles.spacing=0.0057", "--set",
-                  "probes=[]"] + quiet
-        run(a.fluid_sim, [s2, "--backend", "cuda", "--out", g] + opened, env)
-        run(a.fluid_sim, [s2, "--backend", "cpu", "--out", c] + opened)
-        ok &= compare_runs(g, c, tolerance, same_steps=True)
-        removed = summary(g)["removed_particles"], summary(c)["removed_particles"]
-        good = removed[0] == removed[1] > 0
-        print(f"  {'ok  ' if good else 'FAIL'} removed particles {removed[0]}, the cpu run {removed[1]}")
-        ok &= good
-        # What the back end does not run: one line naming the scene key, exit 5.
-        print("refusals:")
-        sym = run(a.fluid_sim, [s2, "--backend", "cuda", "--set", "particles.evaluation=symmetric",
-                                "--out", os.path.join(work, "sym")] + quiet, env, check=False)
-        good = sym.returncode == 5 and "particles.evaluation" in sym.stderr
-        print(f"  {'ok  ' if good else 'FAIL'} symmetric: exit {sym.returncode}: {sym.stderr.strip()}")
-        ok &= good
-        # Without the test hook, on a build without CUDA or a machine without a GPU: exit 12.
-        plain = run(a.fluid_sim, [s2, "--backend", "cuda", "--end-time", "1e-4", "--out",
-                                  os.path.join(work, "plain")] + quiet,
-                    {"NUMERICS_TEST_DEVICE_EXECUTION": ""}, check=False)
-        good = plain.returncode in (0, 12) and (plain.returncode == 0 or "cuda" in plain.stderr)
-        print(f"  {'ok  ' if good else 'FAIL'} without the hook: exit {plain.returncode} "
-              f"(0 with a GPU, 12 without): {plain.stderr.strip()}")
-        ok &= good
+        ok &= open_side_and_refusals(a, work, env, quiet, s2, tolerance)
     print("PASSED" if ok else "FAILED")
     return 0 if ok else 1
 

@@ -527,6 +527,17 @@ def mesh_files():
             "ply_binary": ("body.ply", ply_binary(v, f))}
     for kind, (name, data) in good.items():
         cli_case(C, f"good_{kind}", ACCEPT, scene_mesh(name), {name: data})
+    bad = broken_mesh_files(v, f)
+    for name, (fname, data) in bad.items():
+        cli_case(C, name, refuse(5, "bodies[0]", fname), scene_mesh(fname), {fname: data},
+                 prior=name in ("ply_ascii_truncated", "garbage_stl"))
+
+    mesh_files_odd_paths(C, v, f)
+    mesh_files_python(C, v, f)
+
+
+def broken_mesh_files(v, f):
+    """The broken (or not-a-mesh) files of mesh_files, by case name: (file name, bytes)."""
     bad = {}
     pa, pb = ply_ascii(v, f), ply_binary(v, f)
     bad["ply_ascii_truncated"] = ("body.ply", pa[: len(pa) * 2 // 3])
@@ -560,10 +571,12 @@ def mesh_files():
     inf_v[2] = (0.27, float("inf"), 0.19)
     bad["stl_binary_inf_vertex"] = ("body.stl", stl_binary(inf_v, f))
     bad["text_file_named_ply"] = ("body.ply", b"this is not a mesh\n")
-    for name, (fname, data) in bad.items():
-        cli_case(C, name, refuse(5, "bodies[0]", fname), scene_mesh(fname), {fname: data},
-                 prior=name in ("ply_ascii_truncated", "garbage_stl"))
+    return bad
 
+
+def mesh_files_odd_paths(C, v, f):
+    """mesh_files' cases of a mesh that is missing, a directory, a FIFO, /dev/zero or cut short."""
+    pa = ply_ascii(v, f)
     cli_case(C, "missing_file", refuse(5, "bodies[0]", "nowhere.stl"), scene_mesh("nowhere.stl"))
     cli_case(C, "directory_as_mesh", refuse(5, "bodies[0]", "dir.stl"), scene_mesh("dir.stl"),
              setup=lambda d: os.makedirs(os.path.join(d, "dir.stl")))
@@ -581,7 +594,13 @@ def mesh_files():
     cli_case(C, "section_2d_of_fifo", refuse(5, "bodies[0]", "pipe.obj"), sec2,
              setup=lambda d: os.mkfifo(os.path.join(d, "pipe.obj")))
 
-    # The same through Python: Scene.load(path).check() in its own interpreter.
+
+def mesh_files_python(C, v, f):
+    """mesh_files' cases through Python, each in its own interpreter."""
+    pb, sb = ply_binary(v, f), stl_binary(v, f)
+    nan_v = list(v)
+    nan_v[6] = (float("nan"), 0.27, 0.31)
+    # Scene.load(path).check(), and one Simulation.
     check = "numerics.Scene.load(SCENE).check()\n"
     py_cases = {
         "py_ply_truncated": ("body.ply", pb[: len(pb) // 2], None),
@@ -643,6 +662,11 @@ def setup_scale():
     poly["points"][400000] = [400002, -5]
     j["bodies"] = [poly]
     cli_case(C, "self_crossing_polygon_1e6", refuse(5, "bodies[0]", "edge"), j)
+    setup_scale_limits(C)
+
+
+def setup_scale_limits(C):
+    """setup_scale's cases at the limits: the lattice, the particles, the outputs and checkpoints."""
     # Lattice limit: 2e8 points over the domain and its walls.
     j = scene2d(bodies=False)
     j["domain"]["max"] = [1.4, 1.4]
@@ -806,6 +830,11 @@ def mesh_diag():
              scene_mesh("body.stl"), good, args=["--set", "bodies.0.rotate=[0,0,NaN]"])
     raw = json.dumps(scene_mesh("body.stl", {"rotate": [0, 0, 12345]})).replace("12345", "NaN")
     cli_case(C, "rotate_nan_literal_in_json", refuse(4, "scene.json"), raw=raw, files=good, dim=3)
+    mesh_diag_topology(C, v, f, good)
+
+
+def mesh_diag_topology(C, v, f, good):
+    """mesh_diag's faulty meshes (open, non-manifold, mis-oriented, ...) and a section that misses."""
     cli_case(C, "open_mesh", refuse(5, "bodies[0]", "not closed", "open edge"),
              scene_mesh("body.stl"), {"body.stl": stl_ascii(v, f[:11])})
     cli_case(C, "non_manifold", refuse(5, "bodies[0]", "manifold"), scene_mesh("body.stl"),
@@ -906,43 +935,47 @@ def no_particles():
 
 # ----- 7. restart --------------------------------------------------------------------------------
 
-def restart():
-    C = "restart"
+def restart_first_run(ctx, d, fname="body.stl", data=None, dim=3):
+    """A restart case's first run, in <d>/A with checkpoints; returns A, an empty <d>/B, a checkpoint."""
     v, f = cube()
+    a = os.path.join(d, "A")
+    os.makedirs(a)
+    if dim == 3:
+        write(a, fname, data or (obj(v, f) if fname.endswith(".obj") else stl_ascii(v, f)))
+        write(a, "scene.json", json.dumps(scene_mesh(fname)))
+    else:
+        j = scene2d(bodies=False)
+        j["walls"] = [{"shape": "polygon", "points": [[0.12, 0.1], [0.18, 0.1], [0.15, 0.16]]}]
+        write(a, "scene.json", json.dumps(j))
+    r = run_proc(ctx, [ctx.app(dim), "scene.json", "--out", "outA", "--end-time", "0.004",
+                       "--checkpoint-every", "0.002", "--quiet", "--threads", "1"], a)
+    chks = sorted(x for x in os.listdir(os.path.join(a, "outA")) if x.startswith("checkpoint_")) \
+        if os.path.isdir(os.path.join(a, "outA")) else []
+    if r.rc != 0 or not chks:
+        raise RuntimeError(f"the first run failed ({r.rc}): {r.err[-300:]}")
+    b = os.path.join(d, "B")
+    os.makedirs(b)
+    return a, b, os.path.join(a, "outA", chks[0])
+
+
+def rcase(name, expect, act, dim=3, fname="body.stl"):
+    """A restart case: act(ctx, A, B, checkpoint) gives the argv, its folder and a folder to watch."""
+    def fn(ctx, d):
+        a, b, chk = restart_first_run(ctx, d, fname, dim=dim)
+        argv, cwd, watch = act(ctx, a, b, chk)
+        argv = [ctx.app(dim if "@2D" not in argv else 2)] + [x for x in argv if x != "@2D"]
+        argv += ["--threads", "1", "--quiet"]
+        before = checksums(watch) if watch else None
+        r = run_proc(ctx, argv, cwd)
+        res = classify_cli(expect, r, lost_files(before, watch) if watch else ())
+        res.repro = "cd " + cwd + " && " + " ".join(shq(x) for x in argv)
+        return res
+    CASES.append(Case("restart", name, expect, fn))
+
+
+def restart():
+    _, f = cube()
     v_edit, _ = cube(side=0.121)
-
-    def base(ctx, d, fname="body.stl", data=None, dim=3):
-        a = os.path.join(d, "A")
-        os.makedirs(a)
-        if dim == 3:
-            write(a, fname, data or (obj(v, f) if fname.endswith(".obj") else stl_ascii(v, f)))
-            write(a, "scene.json", json.dumps(scene_mesh(fname)))
-        else:
-            j = scene2d(bodies=False)
-            j["walls"] = [{"shape": "polygon", "points": [[0.12, 0.1], [0.18, 0.1], [0.15, 0.16]]}]
-            write(a, "scene.json", json.dumps(j))
-        r = run_proc(ctx, [ctx.app(dim), "scene.json", "--out", "outA", "--end-time", "0.004",
-                           "--checkpoint-every", "0.002", "--quiet", "--threads", "1"], a)
-        chks = sorted(x for x in os.listdir(os.path.join(a, "outA")) if x.startswith("checkpoint_")) \
-            if os.path.isdir(os.path.join(a, "outA")) else []
-        if r.rc != 0 or not chks:
-            raise RuntimeError(f"the first run failed ({r.rc}): {r.err[-300:]}")
-        b = os.path.join(d, "B")
-        os.makedirs(b)
-        return a, b, os.path.join(a, "outA", chks[0])
-
-    def rcase(name, expect, act, dim=3, fname="body.stl"):
-        def fn(ctx, d):
-            a, b, chk = base(ctx, d, fname, dim=dim)
-            argv, cwd, watch = act(ctx, a, b, chk)
-            argv = [ctx.app(dim if "@2D" not in argv else 2)] + [x for x in argv if x != "@2D"]
-            argv += ["--threads", "1", "--quiet"]
-            before = checksums(watch) if watch else None
-            r = run_proc(ctx, argv, cwd)
-            res = classify_cli(expect, r, lost_files(before, watch) if watch else ())
-            res.repro = "cd " + cwd + " && " + " ".join(shq(x) for x in argv)
-            return res
-        CASES.append(Case(C, name, expect, fn))
 
     rcase("checkpoint_alone_other_dir", ACCEPT,
           lambda ctx, a, b, chk: (["--restart", chk, "--out", os.path.join(b, "outB")], b, None))
@@ -987,7 +1020,11 @@ def restart():
         os.remove(os.path.join(a, "body.stl"))
         return (["--restart", chk, "--out", "o"], b, None)
     rcase("mesh_deleted", refuse((5, 8), "body.stl"), deleted)
+    restart_bad_checkpoints()
 
+
+def restart_bad_checkpoints():
+    """restart's cases of a bad checkpoint (cut short, corrupt, missing, not one) or changed settings."""
     def truncated(ctx, a, b, chk):
         data = open(chk, "rb").read()
         write(b, "cut.chk", data[: len(data) // 2])
@@ -1065,57 +1102,68 @@ def cli():
     cli_case(C, "out_unwritable", refuse(7, "/proc/nope"), s, args=["--out", "/proc/nope/out"])
     cli_case(C, "restart_and_version", refuse(2, "--version"), args=["--version", "--restart", "x.chk"],
              dim=2, end_time=None, bare=True)
+    cli_shared_folder(C)
+    cli_second_thread(C)
 
-    # Two runs writing one folder at once.
-    def two_runs(ctx, d, second_python=False):
-        j = scene2d()
-        j["output"]["every"] = 0.5
-        write(d, "long.json", json.dumps(j))
-        out = os.path.join(d, "out")
-        # Long enough to be running whatever the machine's load; stopped with Ctrl-C after.
-        first = subprocess.Popen([ctx.fs2, "long.json", "--out", out, "--end-time", "60",
-                                  "--threads", "1", "--quiet"], cwd=d, stdout=subprocess.PIPE,
-                                 stderr=subprocess.PIPE, env=ctx.env, start_new_session=True)
-        t0 = time.time()
-        while time.time() - t0 < 30 and not os.path.exists(os.path.join(out, "particles_0000.vtu")):
-            time.sleep(0.05)
-        early = checksums(out) if os.path.isdir(out) else {}
-        if second_python:
-            r = run_python(ctx, f"sim = numerics.Simulation({os.path.join(d, 'long.json')!r}, "
-                                f"out={out!r}, threads=1, quiet=True)\n", d)
-            res = classify_py(refuse(7, "in use", "out", excs=("RunError",)), r)
-            res.repro = f"(fluid_sim long.json --out out --end-time 60 &) ; python case.py in {d}"
-        else:
-            argv = [ctx.fs2, "long.json", "--out", out, "--end-time", "0.01", "--threads", "1",
-                    "--quiet"]
-            r = run_proc(ctx, argv, d)
-            running = first.poll() is None
-            res = classify_cli(refuse(7, "in use"), r)
-            if not running and res.outcome == "clean":
-                res.note = "the first run ended before the second: inconclusive"
-            res.repro = (f"cd {d} && (fluid_sim long.json --out out --end-time 60 &); sleep 1; "
-                         + " ".join(shq(a) for a in argv))
-        if first.poll() is None:
-            os.killpg(first.pid, signal.SIGINT)  # a clean stop: exit 130, summary.json written
-        else:
-            res.note += " the first run ended before the second began: inconclusive"
-            res.outcome = "unclear"
-        try:
-            fo, fe = first.communicate(timeout=ctx.timeout * 3)
-        except subprocess.TimeoutExpired:
-            os.killpg(first.pid, signal.SIGKILL)
-            return Result("hang", None, "", "the first run did not end")
-        lost = [k for k, h in early.items() if k.endswith(".vtu") and checksums(out).get(k) != h]
-        if first.returncode not in (0, 130) or not os.path.exists(os.path.join(out, "summary.json")) or lost:
-            res.note += f" first run harmed: exit {first.returncode}, {fe.decode()[-200:]} {lost}"
-            res.outcome = "data_loss"
-        return res
+
+def two_runs(ctx, d, second_python=False):
+    """Two runs writing one folder at once: the second (app, or Python) must be refused."""
+    j = scene2d()
+    j["output"]["every"] = 0.5
+    write(d, "long.json", json.dumps(j))
+    out = os.path.join(d, "out")
+    # Long enough to be running whatever the machine's load; stopped with Ctrl-C after.
+    first = subprocess.Popen([ctx.fs2, "long.json", "--out", out, "--end-time", "60",
+                              "--threads", "1", "--quiet"], cwd=d, stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, env=ctx.env, start_new_session=True)
+    t0 = time.time()
+    while time.time() - t0 < 30 and not os.path.exists(os.path.join(out, "particles_0000.vtu")):
+        time.sleep(0.05)
+    early = checksums(out) if os.path.isdir(out) else {}
+    if second_python:
+        r = run_python(ctx, f"sim = numerics.Simulation({os.path.join(d, 'long.json')!r}, "
+                            f"out={out!r}, threads=1, quiet=True)\n", d)
+        res = classify_py(refuse(7, "in use", "out", excs=("RunError",)), r)
+        res.repro = f"(fluid_sim long.json --out out --end-time 60 &) ; python case.py in {d}"
+    else:
+        argv = [ctx.fs2, "long.json", "--out", out, "--end-time", "0.01", "--threads", "1",
+                "--quiet"]
+        r = run_proc(ctx, argv, d)
+        running = first.poll() is None
+        res = classify_cli(refuse(7, "in use"), r)
+        if not running and res.outcome == "clean":
+            res.note = "the first run ended before the second: inconclusive"
+        res.repro = (f"cd {d} && (fluid_sim long.json --out out --end-time 60 &); sleep 1; "
+                     + " ".join(shq(a) for a in argv))
+    if first.poll() is None:
+        os.killpg(first.pid, signal.SIGINT)  # a clean stop: exit 130, summary.json written
+    else:
+        res.note += " the first run ended before the second began: inconclusive"
+        res.outcome = "unclear"
+    try:
+        fo, fe = first.communicate(timeout=ctx.timeout * 3)
+    except subprocess.TimeoutExpired:
+        os.killpg(first.pid, signal.SIGKILL)
+        return Result("hang", None, "", "the first run did not end")
+    lost = [k for k, h in early.items() if k.endswith(".vtu") and checksums(out).get(k) != h]
+    if first.returncode not in (0, 130) or not os.path.exists(os.path.join(out, "summary.json")) or lost:
+        res.note += f" first run harmed: exit {first.returncode}, {fe.decode()[-200:]} {lost}"
+        res.outcome = "data_loss"
+    return res
+
+
+def cli_shared_folder(C):
+    """cli's cases of two runs (apps or Python) writing one folder at once."""
     CASES.append(Case(C, "two_runs_one_folder", refuse(7, "in use"), lambda ctx, d: two_runs(ctx, d)))
     CASES.append(Case(C, "python_while_app_writes_folder", refuse(7, "in use", excs=("RunError",)),
                       lambda ctx, d: two_runs(ctx, d, True)))
     py_case(C, "two_simulations_one_folder", refuse(7, "in use", excs=("RunError",)),
             "a = numerics.Simulation(SCENE, out=OUT, threads=1, quiet=True)\n"
             "b = numerics.Simulation(SCENE, out=OUT, threads=1, quiet=True)\n")
+
+
+def cli_second_thread(C):
+    """cli's cases of a Simulation used from a second thread while the first runs it."""
     # The first thread is held inside run() (in its callback) while the second tries, whatever
     # the machine's speed.
     thread_code = """\
@@ -1149,56 +1197,61 @@ finally:
 
 # ----- 9. scenes at the edge of sense ------------------------------------------------------------
 
+def edge_2d(**sets):
+    """scene2d() with values set by path, a__0__b=v for j["a"][0]["b"] = v."""
+    j = scene2d()
+    for path, val in sets.items():
+        node = j
+        keys = path.split("__")
+        for k in keys[:-1]:
+            node = node[int(k)] if k.isdigit() else node.setdefault(k, {})
+        node[keys[-1]] = val
+    return j
+
+
+def edge_2d_auto(**sets):
+    """edge_2d(**sets) with the water's sound speed "auto" (c0 = 10 U)."""
+    j = edge_2d(**sets)
+    j["materials"]["water"]["sound_speed"] = "auto"
+    return j
+
+
 def edge():
     C = "edge"
-
-    def s2(**sets):
-        j = scene2d()
-        for path, val in sets.items():
-            node = j
-            keys = path.split("__")
-            for k in keys[:-1]:
-                node = node[int(k)] if k.isdigit() else node.setdefault(k, {})
-            node[keys[-1]] = val
-        return j
     cli_case(C, "pressure_minus_1e6", refuse(5, "fluids[0]", "pressure"),
-             s2(fluids__0__pressure=-1e6), prior=True)
-    cli_case(C, "pressure_1e9", refuse(5, "fluids[0]", "pressure"), s2(fluids__0__pressure=1e9))
+             edge_2d(fluids__0__pressure=-1e6), prior=True)
+    cli_case(C, "pressure_1e9", refuse(5, "fluids[0]", "pressure"), edge_2d(fluids__0__pressure=1e9))
     cli_case(C, "pressure_expression_minus_1e6", refuse((5, 6), "fluids[0]", "pressure"),
-             s2(fluids__0__pressure="-1e6*y"))
+             edge_2d(fluids__0__pressure="-1e6*y"))
     cli_case(C, "water_at_20000C", warn("fluids[0]", "temperature"),
-             s2(fluids__0__temperature=20000), quiet=False, stop_after=15)
+             edge_2d(fluids__0__temperature=20000), quiet=False, stop_after=15)
     cli_case(C, "water_at_minus_300C", refuse(5, "fluids[0]", "temperature"),
-             s2(fluids__0__temperature=-300))
+             edge_2d(fluids__0__temperature=-300))
     cli_case(C, "wall_temperature_1e5", refuse(5, "x_max", "temperature"),
-             s2(boundaries__x_max__thermal__temperature=1e5))
+             edge_2d(boundaries__x_max__thermal__temperature=1e5))
     # With the "auto" sound speed (c0 = 10 U) a fast wall or flow means a tiny step: a warning
     # about the number of steps, or a refusal above 1e6 m/s (docs/scenes.md, materials).
-    def auto(**sets):
-        j = s2(**sets)
-        j["materials"]["water"]["sound_speed"] = "auto"
-        return j
-    cli_case(C, "wall_moving_1e5_m_s", warn("steps"), auto(boundaries__y_min__velocity=[1e5, 0]),
+    cli_case(C, "wall_moving_1e5_m_s", warn("steps"), edge_2d_auto(boundaries__y_min__velocity=[1e5, 0]),
              quiet=False, stop_after=15, end_time="0.1")
     cli_case(C, "wall_moving_1e6_m_s", refuse(5, "sound_speed", "y_min"),
-             auto(boundaries__y_min__velocity=[1e6, 0]))
-    cli_case(C, "fluid_velocity_1e5", warn("steps"), auto(fluids__0__velocity=[1e5, 0]),
+             edge_2d_auto(boundaries__y_min__velocity=[1e6, 0]))
+    cli_case(C, "fluid_velocity_1e5", warn("steps"), edge_2d_auto(fluids__0__velocity=[1e5, 0]),
              quiet=False, stop_after=15, end_time="0.1")
-    cli_case(C, "max_speed_1e5", warn("steps"), auto(physics__max_speed=1e5), quiet=False,
+    cli_case(C, "max_speed_1e5", warn("steps"), edge_2d_auto(physics__max_speed=1e5), quiet=False,
              stop_after=15, end_time="0.1")
-    cli_case(C, "gravity_1e12", refuse(5, "sound_speed", "gravity"), auto(gravity=[0, -1e12]))
+    cli_case(C, "gravity_1e12", refuse(5, "sound_speed", "gravity"), edge_2d_auto(gravity=[0, -1e12]))
     # With a sound speed given far below the flow's speed: refused, or stopped at once (exit 9)
     # naming the sound speed (docs/scenes.md, exit code 9).
     cli_case(C, "wall_1e5_m_s_given_c_20", refuse((5, 9), "sound speed"),
-             s2(boundaries__y_min__velocity=[1e5, 0]))
+             edge_2d(boundaries__y_min__velocity=[1e5, 0]))
     cli_case(C, "fluid_1e5_m_s_given_c_20", refuse((5, 9), "sound speed"),
-             s2(fluids__0__velocity=[1e5, 0]))
-    cli_case(C, "end_1e5_s_3e8_steps", warn("steps"), s2(output__every=1000), quiet=False,
+             edge_2d(fluids__0__velocity=[1e5, 0]))
+    cli_case(C, "end_1e5_s_3e8_steps", warn("steps"), edge_2d(output__every=1000), quiet=False,
              stop_after=15, end_time="1e5")
-    cli_case(C, "cfl_1e-6", warn("steps"), s2(time__cfl=1e-6), quiet=False, stop_after=15,
+    cli_case(C, "cfl_1e-6", warn("steps"), edge_2d(time__cfl=1e-6), quiet=False, stop_after=15,
              end_time="0.02")
     cli_case(C, "dense_stiff_material", warn("steps"),
-             s2(materials__water__density=1e7, materials__water__sound_speed=1e6),
+             edge_2d(materials__water__density=1e7, materials__water__sound_speed=1e6),
              quiet=False, stop_after=15, end_time="1")
     j = scene3d(emitters=True)
     j["emitters"][0]["speed"] = 1e5
@@ -1207,12 +1260,12 @@ def edge():
              dict(scene3d(emitters=True), emitters=[dict(TINY_3D["emitters"][0], temperature=500)]),
              quiet=False, stop_after=15)
     cli_case(C, "spacing_1e-5_tiny_domain", refuse(5, "particles.spacing"),
-             s2(particles__spacing=1e-5))
+             edge_2d(particles__spacing=1e-5))
     cli_case(C, "domain_1e-300", refuse(5, ("domain", "spacing")),
-             s2(domain__max=[1e-300, 1e-300]))
+             edge_2d(domain__max=[1e-300, 1e-300]))
     py_case(C, "py_pressure_minus_1e6", refuse(5, "fluids[0]", "pressure", excs=("SceneError",)),
             "numerics.Simulation(SCENE, out=OUT, threads=1, quiet=True)\n",
-            scene=s2(fluids__0__pressure=-1e6), prior=True)
+            scene=edge_2d(fluids__0__pressure=-1e6), prior=True)
 
 
 BUILDERS = {"mesh_files": mesh_files, "setup_scale": setup_scale, "python_args": python_args,
@@ -1222,7 +1275,8 @@ BUILDERS = {"mesh_files": mesh_files, "setup_scale": setup_scale, "python_args":
 
 # ---------------------------------------------------------------------------------------------
 
-def main():
+def parse_args():
+    """The command line, with the apps' paths made absolute in args.fs2 and args.fs3."""
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--bin", help="folder holding fluid_sim and fluid_sim_3d (default: build/release/apps/...)")
     ap.add_argument("--python-path", default=os.path.join(REPO, "build/release/python"),
@@ -1242,26 +1296,16 @@ def main():
         args.fs3 = os.path.join(REPO, "build/release/apps/fluid_sim_3d/fluid_sim_3d")
     args.fs2, args.fs3 = os.path.abspath(args.fs2), os.path.abspath(args.fs3)
     args.python_path = os.path.abspath(args.python_path)
-    for cls in args.only or CLASSES:
-        BUILDERS[cls]()
-    cases = [c for c in CASES if not args.case or any(s in c.name for s in args.case)]
-    if args.list:
-        for c in cases:
-            print(f"{c.cls:13} {c.name:42} {c.expect.describe()}")
-        return 0
-    for p in (args.fs2, args.fs3):
-        if not os.access(p, os.X_OK):
-            sys.exit(f"probe.py: {p} is not an executable (--bin)")
-    args.work = os.path.abspath(args.work or tempfile.mkdtemp(prefix="hostile_probe_"))
-    os.makedirs(args.work, exist_ok=True)
-    ctx = Ctx(args)
-    print(f"# {len(cases)} cases, work folder {args.work}, {args.jobs} at a time, "
-          f"timeout {args.timeout:g} s", flush=True)
+    return args
+
+
+def run_cases(ctx, cases, work, jobs):
+    """Runs the cases, jobs at a time, printing a line as each ends; returns [(case, Result)]."""
     lock = threading.Lock()
     results = []
 
     def one(c):
-        d = os.path.join(args.work, c.cls, c.name)
+        d = os.path.join(work, c.cls, c.name)
         shutil.rmtree(d, ignore_errors=True)
         os.makedirs(d)
         t0 = time.time()
@@ -1278,9 +1322,13 @@ def main():
             results.append((c, res))
         return res
 
-    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as ex:
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, jobs)) as ex:
         list(ex.map(one, cases))
+    return results
 
+
+def report(results, work):
+    """Prints the cases not clean and the table, writes results.json; returns each outcome's count."""
     order = {c: i for i, c in enumerate(CLASSES)}
     results.sort(key=lambda cr: (order[cr[0].cls], cr[0].name))
     bad = [(c, r) for c, r in results if r.outcome != "clean"]
@@ -1289,7 +1337,7 @@ def main():
         for c, r in bad:
             print(f"- {c.cls}/{c.name}: {r.outcome}, exit {r.rc}; expected {c.expect.describe()}"
                   f"{'; ' + r.note if r.note else ''}\n    {r.message[:400]}\n    repro: {r.repro}")
-    with open(os.path.join(args.work, "results.json"), "w") as fh:
+    with open(os.path.join(work, "results.json"), "w") as fh:
         json.dump([{"class": c.cls, "name": c.name, "expected": c.expect.describe(),
                     "outcome": r.outcome, "exit": r.rc, "message": r.message, "note": r.note,
                     "repro": r.repro, "seconds": round(r.seconds, 2)} for c, r in results], fh,
@@ -1307,6 +1355,28 @@ def main():
             total[o] += counts[o]
         print(f"| {cls} | {len(rs)} | " + " | ".join(str(counts[o]) for o in OUTCOMES) + " |")
     print(f"| total | {len(results)} | " + " | ".join(str(total[o]) for o in OUTCOMES) + " |")
+    return total
+
+
+def main():
+    args = parse_args()
+    for cls in args.only or CLASSES:
+        BUILDERS[cls]()
+    cases = [c for c in CASES if not args.case or any(s in c.name for s in args.case)]
+    if args.list:
+        for c in cases:
+            print(f"{c.cls:13} {c.name:42} {c.expect.describe()}")
+        return 0
+    for p in (args.fs2, args.fs3):
+        if not os.access(p, os.X_OK):
+            sys.exit(f"probe.py: {p} is not an executable (--bin)")
+    args.work = os.path.abspath(args.work or tempfile.mkdtemp(prefix="hostile_probe_"))
+    os.makedirs(args.work, exist_ok=True)
+    ctx = Ctx(args)
+    print(f"# {len(cases)} cases, work folder {args.work}, {args.jobs} at a time, "
+          f"timeout {args.timeout:g} s", flush=True)
+    results = run_cases(ctx, cases, args.work, args.jobs)
+    total = report(results, args.work)
     print(f"\n# details: {os.path.join(args.work, 'results.json')}")
     return 1 if total["crash"] or total["hang"] or total["data_loss"] else 0
 

@@ -105,56 +105,64 @@ def check_meshio(out):
     dim = s["dimension"]
     n, n_fluid = s["particles"], s["fluid_particles"]
     files = vtu_files(out)
+    for path in files:
+        check_meshio_vtu(meshio, np, path, dim, n, n_fluid)
+    check_meshio_series(meshio, np, out, files, s)
+
+
+def check_meshio_vtu(meshio, np, path, dim, n, n_fluid):
+    """One VTU as meshio reads it (points, cells, fields), and its fluid as the CSV has it."""
     vector_fields = ["velocity"]
     scalar_fields = ["density", "pressure", "temperature", "mass", "material", "kind", "id"]
-    for path in files:
-        name = os.path.basename(path)
-        mesh = read_vtu(meshio, path)
-        pts = mesh.points
-        check(pts.shape == (n, 3), f"{name}: points {pts.shape}, expected ({n}, 3)")
-        check(np.all(np.isfinite(pts)), f"{name}: non-finite positions")
-        if dim == 2:
-            check(np.all(pts[:, 2] == 0), f"{name}: 2D run with z != 0")
-        else:
-            check(np.ptp(pts[:, 2]) > 0, f"{name}: 3D run with all z equal")
-        cells = sum(len(c.data) for c in mesh.cells)
-        check(cells == n, f"{name}: {cells} cells (vertices), expected {n}")
-        data = mesh.point_data
-        for f in vector_fields + scalar_fields:
-            check(f in data, f"{name}: no point data {f!r} (has {sorted(data)})")
-            check(len(data[f]) == n, f"{name}: {f} has {len(data[f])} values, expected {n}")
-            check(np.all(np.isfinite(data[f])), f"{name}: non-finite {f}")
-        v = data["velocity"]
-        check(v.ndim == 2 and v.shape[1] in (dim, 3),
-              f"{name}: velocity of shape {v.shape} in a {dim}D run")
-        if dim == 2 and v.shape[1] == 3:
-            check(np.all(v[:, 2] == 0), f"{name}: 2D run with a z velocity")
-        kind = data["kind"].ravel()
-        check(set(np.unique(kind)) <= {0, 1, 2}, f"{name}: kinds {np.unique(kind)}")
-        check(np.count_nonzero(kind == 0) == n_fluid,
-              f"{name}: {np.count_nonzero(kind == 0)} fluid particles, expected {n_fluid}")
-        ids = data["id"].ravel().astype(np.int64)
-        check(len(np.unique(ids)) == n, f"{name}: ids are not unique")
-        check(np.all(data["density"] > 0), f"{name}: density <= 0")
-        fluid_t = data["temperature"].ravel()[kind == 0]
-        check(fluid_t.min() < 40 < fluid_t.max(),
-              f"{name}: fluid temperatures {fluid_t.min()}..{fluid_t.max()}, expected hot and cold")
-        # The same values as the app's CSV of the same output, particle by particle.
-        header, rows = read_csv(os.path.splitext(path)[0] + ".csv")
-        check(len(rows) == n_fluid, f"{name}: the CSV has {len(rows)} rows, expected {n_fluid}")
-        axes = "xyz"[:dim]
-        for i in np.flatnonzero(kind == 0):
-            row = rows.get(int(ids[i]))
-            check(row is not None, f"{name}: fluid particle id {ids[i]} is not in the CSV")
-            got = list(pts[i, :dim]) + list(v[i, :dim]) + [
-                data[f].ravel()[i] for f in ("density", "pressure", "temperature")]
-            want = [row[a] for a in axes] + [row["v" + a] for a in axes] + [
-                row[f] for f in ("density", "pressure", "temperature")]
-            check(np.allclose(got, want, rtol=1e-6, atol=1e-9),
-                  f"{name}: particle id {ids[i]}: meshio {got}, CSV {want}")
-        print(f"{name}: {n} points, {n_fluid} fluid, fields {sorted(data)}")
+    name = os.path.basename(path)
+    mesh = read_vtu(meshio, path)
+    pts = mesh.points
+    check(pts.shape == (n, 3), f"{name}: points {pts.shape}, expected ({n}, 3)")
+    check(np.all(np.isfinite(pts)), f"{name}: non-finite positions")
+    if dim == 2:
+        check(np.all(pts[:, 2] == 0), f"{name}: 2D run with z != 0")
+    else:
+        check(np.ptp(pts[:, 2]) > 0, f"{name}: 3D run with all z equal")
+    cells = sum(len(c.data) for c in mesh.cells)
+    check(cells == n, f"{name}: {cells} cells (vertices), expected {n}")
+    data = mesh.point_data
+    for f in vector_fields + scalar_fields:
+        check(f in data, f"{name}: no point data {f!r} (has {sorted(data)})")
+        check(len(data[f]) == n, f"{name}: {f} has {len(data[f])} values, expected {n}")
+        check(np.all(np.isfinite(data[f])), f"{name}: non-finite {f}")
+    v = data["velocity"]
+    check(v.ndim == 2 and v.shape[1] in (dim, 3),
+          f"{name}: velocity of shape {v.shape} in a {dim}D run")
+    if dim == 2 and v.shape[1] == 3:
+        check(np.all(v[:, 2] == 0), f"{name}: 2D run with a z velocity")
+    kind = data["kind"].ravel()
+    check(set(np.unique(kind)) <= {0, 1, 2}, f"{name}: kinds {np.unique(kind)}")
+    check(np.count_nonzero(kind == 0) == n_fluid,
+          f"{name}: {np.count_nonzero(kind == 0)} fluid particles, expected {n_fluid}")
+    ids = data["id"].ravel().astype(np.int64)
+    check(len(np.unique(ids)) == n, f"{name}: ids are not unique")
+    check(np.all(data["density"] > 0), f"{name}: density <= 0")
+    fluid_t = data["temperature"].ravel()[kind == 0]
+    check(fluid_t.min() < 40 < fluid_t.max(),
+          f"{name}: fluid temperatures {fluid_t.min()}..{fluid_t.max()}, expected hot and cold")
+    # The same values as the app's CSV of the same output, particle by particle.
+    header, rows = read_csv(os.path.splitext(path)[0] + ".csv")
+    check(len(rows) == n_fluid, f"{name}: the CSV has {len(rows)} rows, expected {n_fluid}")
+    axes = "xyz"[:dim]
+    for i in np.flatnonzero(kind == 0):
+        row = rows.get(int(ids[i]))
+        check(row is not None, f"{name}: fluid particle id {ids[i]} is not in the CSV")
+        got = list(pts[i, :dim]) + list(v[i, :dim]) + [
+            data[f].ravel()[i] for f in ("density", "pressure", "temperature")]
+        want = [row[a] for a in axes] + [row["v" + a] for a in axes] + [
+            row[f] for f in ("density", "pressure", "temperature")]
+        check(np.allclose(got, want, rtol=1e-6, atol=1e-9),
+              f"{name}: particle id {ids[i]}: meshio {got}, CSV {want}")
+    print(f"{name}: {n} points, {n_fluid} fluid, fields {sorted(data)}")
 
-    # The series: every VTU once, in order, at increasing times.
+
+def check_meshio_series(meshio, np, out, files, s):
+    """The .pvd series: every VTU once, in order, at increasing times."""
     pvd = os.path.join(out, f"{PREFIX}.pvd")
     root = ET.parse(pvd).getroot()
     check(root.get("type") == "Collection", f"{pvd}: type {root.get('type')!r}")
@@ -254,12 +262,8 @@ def load_png(path):
     return np.asarray(Image.open(path).convert("RGB")).astype(int)
 
 
-def check_paraview(out):
-    try:
-        import numpy as np
-        from PIL import Image  # noqa: F401
-    except ImportError as e:
-        skip(f"numpy or PIL is not installed (python3-numpy, python3-pil): {e}")
+def paraview_picture(out):
+    """Has pvbatch run particles_paraview.py --screenshot in out; the path of the picture."""
     cmd = pvbatch_command()
     picture = os.path.join(out, f"{PREFIX}_paraview.png")
     if os.path.exists(picture):
@@ -269,6 +273,16 @@ def check_paraview(out):
     print(r.stdout + r.stderr)
     check(r.returncode == 0, f"pvbatch exited with {r.returncode}")
     check(os.path.exists(picture), f"pvbatch wrote no {picture}")
+    return picture
+
+
+def check_paraview(out):
+    try:
+        import numpy as np
+        from PIL import Image  # noqa: F401
+    except ImportError as e:
+        skip(f"numpy or PIL is not installed (python3-numpy, python3-pil): {e}")
+    picture = paraview_picture(out)
     img = load_png(picture)
     h, w, _ = img.shape
     check((w, h) == (1280, 720), f"{picture}: {w}x{h}, expected 1280x720")

@@ -18,60 +18,51 @@ struct Case {
 
 class EndToEnd : public ::testing::TestWithParam<Case> {};
 
-TEST_P(EndToEnd, WritesEveryOutput) {
-    const Case c = GetParam();
-    const std::string app = c.dim == 2 ? FLUID_SIM : FLUID_SIM_3D;
-    const std::string dir = freshDir("e2e_" + std::to_string(c.dim) + "d_" + c.backend);
-    const Result r = run(app,
-                         "'" + scene(c.dim == 2 ? "tiny_2d.json" : "tiny_3d.json") +
-                             "' --out out --backend " + c.backend + " --threads 2",
-                         dir);
-    ASSERT_EQ(r.code, 0) << r.output;
-    EXPECT_TRUE(contains(r.output, "particles.pvd")) << r.output;  // tells what to open
-    const std::string out = dir + "/out/";
+namespace {
 
-    // Outputs at t = 0, 0.01, 0.02: three VTU files listed in the series with their times.
-    const std::string pvd = readFile(out + "particles.pvd");
-    for (int k = 0; k < 3; ++k) {
-        const std::string name = "particles_000" + std::to_string(k);
-        EXPECT_TRUE(contains(pvd, "file=\"" + name + ".vtu\"")) << pvd;
-        const VtuFile v = readVtu(readFile(out + name + ".vtu"));
-        EXPECT_NEAR(v.time, 0.01 * k, 1e-12);
-        ASSERT_GT(v.points, 0u);
-        for (const char* field :
-             {"velocity", "density", "pressure", "temperature", "mass", "material"}) {
-            ASSERT_TRUE(v.arrays.count(field)) << field;
-            const VtuArray& a = v.arrays.at(field);
-            EXPECT_EQ(a.values.size(), v.points * a.components) << field;
-        }
-        EXPECT_EQ(v.arrays.at("velocity").components, 3);
-        // CSV named like the VTU: header, then fluid particles only (fewer rows than points).
-        const std::string csv = readFile(out + name + ".csv");
-        const std::string header = csv.substr(0, csv.find('\n'));
-        EXPECT_EQ(
-            header.rfind(c.dim == 2 ? "x,y,vx,vy,density,pressure,temperature,mass,material"
-                                    : "x,y,z,vx,vy,vz,density,pressure,temperature,mass,material",
-                         0),
-            0u)
-            << header;
-        const auto rows = std::count(csv.begin(), csv.end(), '\n') - 1;
-        EXPECT_GT(rows, 0);
-        EXPECT_LT(std::size_t(rows), v.points);
-        const std::string png = readFile(out + name + ".png");
-        ASSERT_GT(png.size(), 8u);
-        EXPECT_EQ(png.substr(1, 3), "PNG");
+/// Output k (t = 0.01 k), named `name`: the VTU with every field, the CSV and the PNG.
+void expectSnapshot(const std::string& out, const std::string& name, int k, int dim) {
+    const VtuFile v = readVtu(readFile(out + name + ".vtu"));
+    EXPECT_NEAR(v.time, 0.01 * k, 1e-12);
+    ASSERT_GT(v.points, 0u);
+    for (const char* field :
+         {"velocity", "density", "pressure", "temperature", "mass", "material"}) {
+        ASSERT_TRUE(v.arrays.count(field)) << field;
+        const VtuArray& a = v.arrays.at(field);
+        EXPECT_EQ(a.values.size(), v.points * a.components) << field;
     }
-    // probes.csv: a time column and <probe>.<field> columns, one row per millisecond (the
-    // default output.probes_every; the steps are shorter) from t = 0 to the end, 0.02 s.
+    EXPECT_EQ(v.arrays.at("velocity").components, 3);
+    // CSV named like the VTU: header, then fluid particles only (fewer rows than points).
+    const std::string csv = readFile(out + name + ".csv");
+    const std::string header = csv.substr(0, csv.find('\n'));
+    EXPECT_EQ(header.rfind(dim == 2 ? "x,y,vx,vy,density,pressure,temperature,mass,material"
+                                    : "x,y,z,vx,vy,vz,density,pressure,temperature,mass,material",
+                           0),
+              0u)
+        << header;
+    const auto rows = std::count(csv.begin(), csv.end(), '\n') - 1;
+    EXPECT_GT(rows, 0);
+    EXPECT_LT(std::size_t(rows), v.points);
+    const std::string png = readFile(out + name + ".png");
+    ASSERT_GT(png.size(), 8u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+}
+
+/// probes.csv: a time column and <probe>.<field> columns, one row per millisecond (the default
+/// output.probes_every; the steps are shorter) from t = 0 to the end, 0.02 s.
+void expectProbes(const std::string& out, int dim) {
     const std::string probes = readFile(out + "probes.csv");
     EXPECT_EQ(probes.substr(0, probes.find('\n')),
-              c.dim == 2 ? "time,p1.pressure,p1.vx,p1.vy" : "time,p.temperature");
+              dim == 2 ? "time,p1.pressure,p1.vx,p1.vy" : "time,p.temperature");
     const std::vector<double> times = readCsv(out + "probes.csv").at("time");
     ASSERT_EQ(times.size(), 21u);
     for (std::size_t k = 0; k < times.size(); ++k)
         EXPECT_EQ(std::floor(times[k] / 1e-3 + 1e-9), double(k)) << times[k];
     EXPECT_DOUBLE_EQ(times.back(), 0.02);
+}
 
+/// summary.json: every key, the run's settings, and the conservation of mass.
+void expectSummary(const std::string& out, const Case& c) {
     const auto s = nlohmann::json::parse(readFile(out + "summary.json"));
     for (const char* key : {"dimension", "particles", "steps", "final_time", "wall_seconds",
                             "particle_steps_per_second", "threads", "backend", "conservation"})
@@ -89,6 +80,32 @@ TEST_P(EndToEnd, WritesEveryOutput) {
         EXPECT_EQ(s["conservation"]["mass"]["start"], s["conservation"]["mass"]["end"]);
     else
         EXPECT_GT(s["emitted_particles"].get<int>(), 0);  // the 3D scene's emitter ran
+}
+
+}  // namespace
+
+// ASSERT_NO_FATAL_FAILURE: a failed ASSERT in a helper ends the test, as it did inline.
+TEST_P(EndToEnd, WritesEveryOutput) {
+    const Case c = GetParam();
+    const std::string app = c.dim == 2 ? FLUID_SIM : FLUID_SIM_3D;
+    const std::string dir = freshDir("e2e_" + std::to_string(c.dim) + "d_" + c.backend);
+    const Result r = run(app,
+                         "'" + scene(c.dim == 2 ? "tiny_2d.json" : "tiny_3d.json") +
+                             "' --out out --backend " + c.backend + " --threads 2",
+                         dir);
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_TRUE(contains(r.output, "particles.pvd")) << r.output;  // tells what to open
+    const std::string out = dir + "/out/";
+
+    // Outputs at t = 0, 0.01, 0.02: three VTU files listed in the series with their times.
+    const std::string pvd = readFile(out + "particles.pvd");
+    for (int k = 0; k < 3; ++k) {
+        const std::string name = "particles_000" + std::to_string(k);
+        EXPECT_TRUE(contains(pvd, "file=\"" + name + ".vtu\"")) << pvd;
+        ASSERT_NO_FATAL_FAILURE(expectSnapshot(out, name, k, c.dim));
+    }
+    ASSERT_NO_FATAL_FAILURE(expectProbes(out, c.dim));
+    expectSummary(out, c);
 }
 
 INSTANTIATE_TEST_SUITE_P(Apps, EndToEnd,

@@ -180,14 +180,13 @@ void addVec(Sums& out, std::size_t c0, Size a, const V2& x, Float sign = 1) {
         out[c0][a] -= x[0], out[c0 + 1][a] -= x[1];
 }
 
-TEST(Formulas, FluidPartsAreAPlainLoopOverTheFormulasBitwise) {
-    const Storage<2> s = particles();
-    const auto m = s.getValue<Float>(QuantityId::MASS);
+// The fluid parts, a few per helper; each helper reads the fields its formulas use.
+
+/// Continuity and delta-SPH: the density rate.
+void expectDensityParts(const Storage<2>& s) {
     const auto rho = s.getValue<Float>(QuantityId::DENSITY);
-    const auto p = s.getValue<Float>(QuantityId::PRESSURE);
     const auto kind = s.getValue<int>(QuantityId::KIND);
     const auto V = s.getValue<Float>(FluidId::VOLUME);
-    const auto u = s.getValue<V2>(FluidId::PAIR_VELOCITY);
     const auto v = s.getDt<V2>(QuantityId::POSITION);
     const auto fluid = [&](Size a) { return isFluid(kind[a]); };
     // Continuity's velocity is every particle's own (a held wall's is zero in a run; a moving
@@ -215,6 +214,16 @@ TEST(Formulas, FluidPartsAreAPlainLoopOverTheFormulasBitwise) {
             out[0][i] += flux * V[j];
             if (sym) out[0][j] -= flux * V[i];
         });
+}
+
+/// The pressure gradient and artificial viscosity (accelerations, by the neighbour's mass).
+void expectPressureParts(const Storage<2>& s) {
+    const auto m = s.getValue<Float>(QuantityId::MASS);
+    const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+    const auto p = s.getValue<Float>(QuantityId::PRESSURE);
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    const auto u = s.getValue<V2>(FluidId::PAIR_VELOCITY);
+    const auto fluid = [&](Size a) { return isFluid(kind[a]); };
 
     auto pressure = std::make_shared<PressureGradientData>();
     for (Size i = 0; i < s.size(); ++i)
@@ -240,6 +249,15 @@ TEST(Formulas, FluidPartsAreAPlainLoopOverTheFormulasBitwise) {
             if (fluid(i)) addVec(out, 0, i, grad * pi * m[j], -1);
             if (sym && fluid(j)) addVec(out, 0, j, grad * pi * m[i]);
         });
+}
+
+/// Laminar viscosity, with a viscosity per particle and some particles without it.
+void expectLaminarViscosityPart(const Storage<2>& s) {
+    const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    const auto V = s.getValue<Float>(FluidId::VOLUME);
+    const auto u = s.getValue<V2>(FluidId::PAIR_VELOCITY);
+    const auto fluid = [&](Size a) { return isFluid(kind[a]); };
 
     auto viscous = std::make_shared<ViscousData<2>>();
     for (Size i = 0; i < s.size(); ++i) {
@@ -260,7 +278,13 @@ TEST(Formulas, FluidPartsAreAPlainLoopOverTheFormulasBitwise) {
                 addVec(out, 0, j, f::laminarViscosityAcceleration(dv, factor, V[i], 1 / rho[j]),
                        -1);
         });
+}
 
+/// The kernel sum, and its part over the neighbours at a free surface.
+void expectKernelSumPart(const Storage<2>& s) {
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    const auto V = s.getValue<Float>(FluidId::VOLUME);
+    const auto fluid = [&](Size a) { return isFluid(kind[a]); };
     // With V ~ 1 and the previous sums of particles(), W(0) = 0.7 puts a third at a surface.
     const Float w0 = 0.7;
     const auto previous = s.getValue<Float>(FluidId::KERNEL_SUM);
@@ -275,6 +299,16 @@ TEST(Formulas, FluidPartsAreAPlainLoopOverTheFormulasBitwise) {
             out[0][j] += f::kernelSumWeight(V[i], pair.w);
             if (atSurface(i)) out[1][j] += f::kernelSumWeight(V[i], pair.w);
         });
+}
+
+/// Particle shifting: the gradients of the kernel sum, density and velocity, and the direction
+/// to the walls.
+void expectShiftingPart(const Storage<2>& s) {
+    const auto rho = s.getValue<Float>(QuantityId::DENSITY);
+    const auto kind = s.getValue<int>(QuantityId::KIND);
+    const auto V = s.getValue<Float>(FluidId::VOLUME);
+    const auto u = s.getValue<V2>(FluidId::PAIR_VELOCITY);
+    const auto fluid = [&](Size a) { return isFluid(kind[a]); };
 
     auto shifting = std::make_shared<ShiftingData<2>>();
     for (Size i = 0; i < s.size(); ++i)  // some pairs closer than the local spacing
@@ -301,6 +335,15 @@ TEST(Formulas, FluidPartsAreAPlainLoopOverTheFormulasBitwise) {
             for (int b = 0; b < 2; ++b)
                 addVec(out, 6 + 2 * b, j, f::velocityGradientTerm(dv, V[i], grad[b]));
         });
+}
+
+TEST(Formulas, FluidPartsAreAPlainLoopOverTheFormulasBitwise) {
+    const Storage<2> s = particles();
+    expectDensityParts(s);
+    expectPressureParts(s);
+    expectLaminarViscosityPart(s);
+    expectKernelSumPart(s);
+    expectShiftingPart(s);
 }
 
 TEST(Formulas, HeatConductionIsAPlainLoopOverTheFormulasBitwise) {

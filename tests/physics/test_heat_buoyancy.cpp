@@ -34,12 +34,16 @@ using namespace num;
 using namespace num::sph;
 using namespace num::sph::heat_test;
 
-TEST(HeatBuoyancy, WarmBlobRisesAtBoussinesqRate) {
-    const double L = 1, R = 0.1, T0 = 20, dT = 10, beta = 2e-4, g = 9.81;
-    const double rampTime = 0.2, tEnd = 1.0, c0 = 5, nu = 1e-6;
-    const double dx = fullResolution() ? 0.01 : 0.02;
-    const Vector<2> centre{{0.5 * L, 0.5 * L}};
+namespace {
 
+const double L = 1, R = 0.1, T0 = 20, dT = 10, beta = 2e-4, g = 9.81;
+const double rampTime = 0.2, tEnd = 1.0, c0 = 5, nu = 1e-6;
+const Vector<2> centre{{0.5 * L, 0.5 * L}};
+// Marks the blob's particles (reordering by cell carries the tag along).
+const QuantityId tagId = QuantityId(-401);
+
+/// Water with conduction and the ramped Boussinesq force alone.
+FluidModel<2> blobModel() {
     FluidModel<2> model;
     model.restDensity = 1000;
     model.soundSpeed = c0;
@@ -54,7 +58,11 @@ TEST(HeatBuoyancy, WarmBlobRisesAtBoussinesqRate) {
     model.heat.conduction = true;  // water's alpha = 1.4e-7 m^2/s: the blob stays sharp
     const BodyForce<2> gravity = rampedForce(Vector<2>{{0, -g}}, rampTime);
     model.extraTerms += makeTerm<BoussinesqBuoyancy<2>>(gravity);
+    return model;
+}
 
+/// The periodic box: the warm disc first, the cold water around it.
+FluidGeometry<2> blobGeometry(double dx) {
     FluidGeometry<2> geo;
     geo.domain.min = {{0, 0}};
     geo.domain.max = {{L, L}};
@@ -63,16 +71,53 @@ TEST(HeatBuoyancy, WarmBlobRisesAtBoussinesqRate) {
     geo.fluid.push_back(FluidRegion<2>::filling(BoxOrBall<2>::ball(centre, R), T0 + dT));
     geo.fluid.push_back(
         FluidRegion<2>::filling(BoxOrBall<2>::box(geo.domain.min, geo.domain.max), T0));
+    return geo;
+}
 
-    RunSettings settings;
-    settings.set("kernel", "cubic_spline").set("smoothing_length", 1.3 * dx);
-    Storage<2> s = makeFluidStorage(model, geo, settings);
-    // Tag the blob's particles (reordering by cell carries the tag along).
-    const QuantityId tagId = QuantityId(-401);
+/// Tags the warm particles with tagId; returns the tags.
+std::vector<int> tagBlob(Storage<2>& s) {
     std::vector<int> tag(s.size());
     const auto T = s.getValue<double>(QuantityId::TEMPERATURE);
     for (Size i = 0; i < s.size(); ++i) tag[i] = T[i] > T0 + 0.5 * dT;
     s.insert<int>(tagId, OrderEnum::ZERO, tag);
+    return tag;
+}
+
+/// int_0^t s, with the ramp s(t) = (1 - cos(pi t / t_r)) / 2.
+double rampIntegral(double t) {
+    if (t >= rampTime) return t - rampTime / 2;
+    return t / 2 - rampTime / (2 * std::numbers::pi) * std::sin(std::numbers::pi * t / rampTime);
+}
+
+/// The mean vertical velocity of the tagged particles.
+double blobVelocity(const Storage<2>& s, double blobCount) {
+    const auto v = s.getDt<Vector<2>>(QuantityId::POSITION);
+    const auto tg = s.getValue<int>(tagId);
+    double sum = 0;
+    for (Size i = 0; i < s.size(); ++i)
+        if (tg[i]) sum += v[i][1];
+    return sum / blobCount;
+}
+
+/// The largest deviation over the samples after the ramp (early: all small velocities).
+double largestAfterRamp(const std::vector<ProfileRow>& profile) {
+    double maxLate = 0;
+    for (const ProfileRow& r : profile)
+        if (r.coordinate >= rampTime)
+            maxLate = std::max(maxLate, std::abs(r.numeric - r.analytic) / r.analytic);
+    return maxLate;
+}
+
+}  // namespace
+
+TEST(HeatBuoyancy, WarmBlobRisesAtBoussinesqRate) {
+    const double dx = fullResolution() ? 0.01 : 0.02;
+    const FluidModel<2> model = blobModel();
+    const FluidGeometry<2> geo = blobGeometry(dx);
+    RunSettings settings;
+    settings.set("kernel", "cubic_spline").set("smoothing_length", 1.3 * dx);
+    Storage<2> s = makeFluidStorage(model, geo, settings);
+    const std::vector<int> tag = tagBlob(s);
 
     SequentialScheduler scheduler;
     Solver<2> solver(scheduler, settings, makeFluidEquations(model, geo), geo.domain);
@@ -82,35 +127,17 @@ TEST(HeatBuoyancy, WarmBlobRisesAtBoussinesqRate) {
     const double blobCount = std::count(tag.begin(), tag.end(), 1);
     const double phi = blobCount / double(s.size());
     const double aBlob = beta * dT * g * (1 + phi) / 2;
-    const auto rampIntegral = [&](double t) {
-        if (t >= rampTime) return t - rampTime / 2;
-        return t / 2 -
-               rampTime / (2 * std::numbers::pi) * std::sin(std::numbers::pi * t / rampTime);
-    };
-    const auto blobVelocity = [&] {
-        const auto v = s.getDt<Vector<2>>(QuantityId::POSITION);
-        const auto tg = s.getValue<int>(tagId);
-        double sum = 0;
-        for (Size i = 0; i < s.size(); ++i)
-            if (tg[i]) sum += v[i][1];
-        return sum / blobCount;
-    };
-
     ValidationResult result;
     result.name = "heat_buoyancy_blob";
     const int samples = 20;
     for (int k = 1; k <= samples; ++k) {
         const double t = tEnd * k / samples;
         run.advanceTo(t);
-        result.profile.push_back({t, blobVelocity(), aBlob * rampIntegral(t), t});
+        result.profile.push_back({t, blobVelocity(s, blobCount), aBlob * rampIntegral(t), t});
     }
     const double vNum = result.profile.back().numeric, vEst = result.profile.back().analytic;
     const double relErr = std::abs(vNum - vEst) / vEst;
-    // The largest deviation over the samples after the ramp (early: all small velocities).
-    double maxLate = 0;
-    for (const ProfileRow& r : result.profile)
-        if (r.coordinate >= rampTime)
-            maxLate = std::max(maxLate, std::abs(r.numeric - r.analytic) / r.analytic);
+    const double maxLate = largestAfterRamp(result.profile);
 
     result.resolution = std::to_string(int(std::lround(L / dx))) +
                         "^2 (R = " + std::to_string(int(std::lround(R / dx))) + " dx)";

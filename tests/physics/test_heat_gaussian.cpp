@@ -38,6 +38,35 @@ double pulseExact(const Vector<Dim>& x, double t) {
     return std::pow(t0 / (t0 + t), Dim / 2.0) * sum;
 }
 
+/// The errors against pulseExact at tEnd, in units of the initial peak (the jump is 1).
+struct PulseErrors {
+    double max = 0, mean = 0;
+    std::vector<ProfileRow> axis;  ///< the line of particles next to the x axis, by x
+};
+
+template <int Dim>
+PulseErrors pulseErrors(const Storage<Dim>& s, double dx) {
+    const auto xs = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
+    const auto T = s.template getValue<double>(QuantityId::TEMPERATURE);
+    const double sigma = std::sqrt(2 * alpha * (t0 + tEnd));
+    PulseErrors e;
+    double sumErr = 0;
+    int inside = 0;
+    for (Size i = 0; i < s.size(); ++i) {
+        const double Ta = pulseExact<Dim>(xs[i], tEnd);
+        const double err = std::abs(T[i] - Ta);  // the jump (initial peak) is 1
+        e.max = std::max(e.max, err);
+        if (norm(xs[i]) < 3 * sigma) sumErr += err, ++inside;
+        bool onAxis = true;  // the line of particles next to the x axis
+        for (int k = 1; k < Dim; ++k) onAxis &= xs[i][k] > -1e-9 && xs[i][k] < 0.5 * dx + 1e-9;
+        if (onAxis) e.axis.push_back({xs[i][0], T[i], Ta, tEnd});
+    }
+    std::sort(e.axis.begin(), e.axis.end(),
+              [](const ProfileRow& a, const ProfileRow& b) { return a.coordinate < b.coordinate; });
+    e.mean = sumErr / inside;
+    return e;
+}
+
 template <int Dim>
 void runPulse(const std::string& name, double dx) {
     const auto x = lattice<Dim>(Vector<Dim>::filled(-halfBox), Vector<Dim>::filled(halfBox), dx);
@@ -61,26 +90,13 @@ void runPulse(const std::string& name, double dx) {
     const double heat0 = totalHeat(s);
     run.advanceTo(tEnd);
 
-    const auto xs = s.template getValue<Vector<Dim>>(QuantityId::POSITION);
     const auto T = s.template getValue<double>(QuantityId::TEMPERATURE);
-    const double sigma = std::sqrt(2 * alpha * (t0 + tEnd));
-    double maxErr = 0, sumErr = 0;
-    int inside = 0;
+    const PulseErrors e = pulseErrors(s, dx);
+    const double maxErr = e.max, meanErr = e.mean;
+    const double heatDrift = std::abs(totalHeat(s) - heat0) / heat0;
     ValidationResult result;
     result.name = name;
-    for (Size i = 0; i < s.size(); ++i) {
-        const double Ta = pulseExact<Dim>(xs[i], tEnd);
-        const double err = std::abs(T[i] - Ta);  // the jump (initial peak) is 1
-        maxErr = std::max(maxErr, err);
-        if (norm(xs[i]) < 3 * sigma) sumErr += err, ++inside;
-        bool onAxis = true;  // the line of particles next to the x axis
-        for (int k = 1; k < Dim; ++k) onAxis &= xs[i][k] > -1e-9 && xs[i][k] < 0.5 * dx + 1e-9;
-        if (onAxis) result.profile.push_back({xs[i][0], T[i], Ta, tEnd});
-    }
-    std::sort(result.profile.begin(), result.profile.end(),
-              [](const ProfileRow& a, const ProfileRow& b) { return a.coordinate < b.coordinate; });
-    const double meanErr = sumErr / inside;
-    const double heatDrift = std::abs(totalHeat(s) - heat0) / heat0;
+    result.profile = e.axis;
     const int n = int(std::lround(2 * halfBox / dx));
     result.resolution =
         std::to_string(n) + (Dim == 3 ? "^3" : "^2") + " (dx = " + std::to_string(dx) + ")";

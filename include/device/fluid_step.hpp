@@ -56,6 +56,7 @@
 #include "device/fluid_state.hpp"
 #include "device/neighbour_grid.hpp"
 #include "device/outlet_pass.hpp"
+#include "device/step_passes.hpp"
 #include "sph/formulas/fluid_pairs.hpp"
 #include "sph/formulas/fluid_particles.hpp"
 #include "sph/formulas/heat_pairs.hpp"

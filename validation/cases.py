@@ -1354,21 +1354,21 @@ case("hydrostatic_tank_3d", "hydrostatic_tank_3d.json", hydrostatic, 0.066666666
 # The study adds a / 80 (12,800 particles, 9 min on 2 cores); documented at a / 40.
 case("dam_break_martin_moyce", "dam_break_martin_moyce.json", dam_break, 0.05715 / 40,
      [0.05715 / 10, 0.05715 / 20, 0.05715 / 40, 0.05715 / 80], (0.05715 / 20, [0.34]),
-     miss_note="The front leads the experiment by +0.12 to +0.16 at T = 0.83 to 2.0, as much at a / 80 as at "
-     "a / 40. The lead is an offset in time: the dam is removed at once and the experiment's release is not "
-     "modelled (shifted by T = 0.175, the release-time correction of the Lethe CFD code's Martin & Moyce example, "
-     "the a / 80 front is within 0.113 of the experiment throughout). PySPH's weakly-compressible scheme on the "
-     "same column (validation/pysph_martin_moyce.py) leads as much: +0.128 to +0.169 at a / 80.")
+     miss_note="The front leads the experiment by +0.12 to +0.16 at T = 0.83 to 2.0, at a / 40 and"
+               " a / 80 alike: an offset in time, since the dam is removed at once (shifted by T ="
+               " 0.175, the release-time correction of the Lethe CFD code's example, it is within "
+               "0.113). PySPH on the same column (validation/pysph_martin_moyce.py) leads as much:"
+               " +0.128 to +0.169 at a / 80.")
 # Documented at H / 80 (4 to 5 min on 2 cores); at H / 100 the averaged impact peak is 3.07.
 case("dam_break_pressure_lobovsky", "dam_break_pressure_lobovsky.json", dam_break_pressure, 0.3 / 80,
      [0.3 / 20, 0.3 / 40, 0.3 / 60, 0.3 / 80], (0.3 / 20, [0.16, 1.9, None]),
      details=True,
-     miss_note="The impact peak is 63 % high and does not converge (3.92, 4.01, 2.81 and 3.02 at H / 20 to "
-     "H / 80; its impulse 1.134 against the measured 1.126), and the front arrives 2.4 % late. The wall "
-     "pressure rings at the model's sound speed (34 m/s, not 1,480 m/s), and the thin front is held back by the "
-     "tension the free-surface density floor allows and by the artificial viscosity at the walls. PySPH's "
-     "weakly-compressible scheme in the same tank (validation/pysph_lobovsky.py) arrives within the gate at "
-     "H / 80 (T = 2.449) and misses the peak by more (3.37).")
+     miss_note="The impact peak is 63 % high and does not converge (3.92, 4.01, 2.81, 3.02 at H / "
+               "20 to H / 80; its impulse 1.134 against 1.126), and the front arrives 2.4 % late: "
+               "the wall pressure rings at the model's sound speed (34 m/s), and the free-surface "
+               "density floor and the walls' artificial viscosity hold the thin front back. PySPH "
+               "in the same tank (validation/pysph_lobovsky.py) arrives within the gate at H / 80 "
+               "and misses the peak by more (3.37).")
 # Each is documented at the finest spacing of its study: Ra = 1e3 and 1e4 at 0.01 (100 x 100),
 # Ra = 1e5 at 0.008 (125 x 125, 25 min). Until 2026-12-02 Ra = 1e3 and 1e4 were documented at 0.02
 # and Ra = 1e5 at 0.01, where they passed by errors that do not hold as the spacing shrinks; until
@@ -1408,12 +1408,12 @@ case("buoyancy_box_2d", "buoyancy_box_2d.json", buoyancy, 0.02, [0.05, 0.04, 0.0
 # outlet; 872ef69) -> regression bound 0.30 (times 1.5).
 CYLINDER_CI_BOUND = 0.30
 CYLINDER_MISS = (
-    "c_D is 6.1 % low at D / dx = 20 and 19.4 % at 10; PySPH's inlet and outlet on this set-up "
-    "(validation/pysph_cylinder_inlet_re20.py, EDAC) meets the gate, +2.8 % at 20. The cause is the particle "
-    "shifting along walls (docs/physics.md): at the front stagnation point the particles crowd against the "
-    "surface at a pressure about 100 Pa below their neighbours', so the wall pressure and the drag are low. "
-    "Without shifting near walls c_D is 2.3 % low at D / dx = 20, but the lid-driven cavity (Re 100) and "
-    "natural convection (Ra 1e4) then miss their gates, so the default keeps it.")
+    "c_D is 6.1 % low at D / dx = 20 (19.4 % at 10); PySPH's inlet and outlet on this set-up "
+    "(validation/pysph_cylinder_inlet_re20.py) meets the gate, +2.8 % at 20, so the miss is ours: "
+    "shifting along walls leaves the particles at the front stagnation point about 100 Pa below "
+    "their neighbours (docs/physics.md). Without shifting near walls c_D is 2.3 % low, but the "
+    "cavity (Re 100) and natural convection (Ra 1e4) then miss their gates, so the default keeps "
+    "it.")
 case("cylinder_re20", "cylinder_re20.json", cylinder_benchmark, 0.005, [0.01, 0.005],
      (0.01, [CYLINDER_CI_BOUND]), issue=48, miss_note=CYLINDER_MISS,
      shared_cores=True)
@@ -1430,11 +1430,10 @@ case("piston_waves_2d", "piston_waves_2d.json", piston_waves, 0.01, [0.02, 0.01]
 # bound 0.17 (times 1.5).
 WATER_ENTRY_CI_BOUND = 0.17
 WATER_ENTRY_MISS = (
-    "Only the first point, T = 0.10, misses: +20 % at D / dx = 40 (+11 %, +7 % at 10, 20); from T = 0.28 on "
-    "the depth is within 8.4 %. That point hangs on the instant of first contact (1 ms is 16 % of it) and lies "
-    "below a von Karman added-mass estimate (0.21 D); the data are read second-hand off a figure. PySPH's "
-    "rigid-body scheme on this set-up (validation/pysph_water_entry.py) misses too: 0.123 at D / dx = 20 and "
-    "0.156 at 10, this app 0.101 and 0.113.")
+    "Only T = 0.10 misses: +20 % at D / dx = 40 (+11 %, +7 % at 10, 20); from T = 0.28 on the "
+    "depth is within 8.4 %. That point hangs on the instant of first contact (1 ms is 16 % of it),"
+    " and the data are read off a figure. PySPH's rigid-body scheme "
+    "(validation/pysph_water_entry.py) misses too: 0.123 at D / dx = 20, this app 0.101.")
 case("water_entry_2d", "water_entry_2d.json", water_entry, 0.00275, [0.011, 0.0055, 0.00275],
      (0.011, [WATER_ENTRY_CI_BOUND]), issue=59, gates="10 % of the experiment's depth (as Martin & Moyce's front)",
      miss_note=WATER_ENTRY_MISS)
@@ -1462,11 +1461,11 @@ case("graetz_2d", "graetz_2d.json", graetz, 0.00025, [0.001, 0.0005, 0.00025], (
 PIPE_CI_BOUNDS = [0.052, 0.40, None]
 case("cylinder_re100", "cylinder_re100.json", cylinder_shedding, 0.005, [0.01, 0.005], (0.01, None),
      gates="Schaefer & Turek 1996, 2D-2", not_in_ci="40 min at D / dx = 20 on one core", shared_cores=True,
-     miss_note="The wake does not shed as the benchmark's at D / dx = 10 or 20. At 20 the forces are dominated by "
-     "the particles' pressure noise: c_L jumps by about 1 between outputs 5 ms apart, and even averaged over "
-     "0.05 s it shows no regular period; its spectrum peaks at St 0.15 against 0.30. The mean c_D is 2.40 against "
-     "about 3.2, low for the reason cylinder_re20 gives; c_D max within the gate at 20 is a noise peak, not the "
-     "shedding's. No peer was run on this set-up.")
+     miss_note="The wake does not shed as the benchmark's at D / dx = 10 or 20. At 20 pressure "
+               "noise dominates the forces (c_L jumps by about 1 between outputs 5 ms apart, with "
+               "no regular period even averaged over 0.05 s; its spectrum peaks at St 0.15 against"
+               " 0.30), so c_D max within the gate is a noise peak; the mean c_D is 2.40 against "
+               "about 3.2, low as in cylinder_re20. No peer was run.")
 case("pipe_inflow_3d", "pipe_inflow_3d.json", pipe_flow, 0.0005, [0.001, 0.0005], (0.001, PIPE_CI_BOUNDS),
      gates="the source each check names", details=True, shared_cores=True,
      note="The pipe is a wall (the difference of a box and a cylinder); where it meets the inlet's side its "

@@ -236,7 +236,8 @@ const KeyTable<PhysicsSpec> kPhysicsKeys{
      .field = &PhysicsSpec::shiftingNormalToWalls,
      .fallback = d::shiftingNormalToWalls,
      .meaning = "within a kernel support of a wall or body, also shift towards or away from "
-                "it (by default only along it: the normal part damps the boundary layer)"},
+                "it (by default only along it: the normal part damps the boundary layer); "
+                "true for flow onto a body (docs/physics.md)"},
     {.name = "free_surface_clamp",
      .type = KeyType::FLAG,
      .field = &PhysicsSpec::freeSurfaceTensionLimit,

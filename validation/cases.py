@@ -703,7 +703,7 @@ def floating_draft(run):
     height of its centre after the first 0.5 s (it bobs about its rest), with the still water
     level L from the water's area A and the box's displacement, L W = A + B d_m, so that
     d_m = (A / W - y_bottom) / (1 - B / W); and upright (its angle)."""
-    body, fluid = run.scene["bodies"][0], run.scene["fluids"][0]
+    body = run.scene["bodies"][0]
     rho_w = next(iter(run.scene["materials"].values()))["density"]
     B, H = (body["max"][0] - body["min"][0]), (body["max"][1] - body["min"][1])
     W = run.scene["domain"]["max"][0] - run.scene["domain"]["min"][0]

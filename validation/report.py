@@ -9,10 +9,11 @@ without its profile: the runs found in RESULTS_DIR replace their entries there, 
 is written from it (an empty RESULTS_DIR rewrites the report from the summary alone). Per case
 the report gives the set-up (cases.py's SETUPS), the run, the checks at documentation resolution
 (measured error, the gate, pass or MISSED), the run's details where cases.py asks for them
-("details"), why a missed gate is missed (miss_note), what the figures alone do not show (note),
-the convergence table over the study's spacings and a plot (PLOT_DIR/CASE.png: the app's result
-against the reference, and the errors against the spacing; redrawn when the run at documentation
-resolution is in RESULTS_DIR, else the stored plot is kept).
+("details"), why a missed gate is missed (miss_note), what the figures alone do not show (note)
+and a plot (PLOT_DIR/CASE.png: the app's result against the reference, and the errors against
+the spacing; redrawn when the run at documentation resolution is in RESULTS_DIR, else the stored
+plot is kept). PLOT_DIR/convergence.md holds each case's convergence table over the study's
+spacings and what CI asserts.
 """
 import glob
 import json
@@ -130,8 +131,8 @@ def case_section(name, c, doc, runs, rel_plot, png):
         run.append("cores shared with other work")
     run.append(f"build {doc['app_build']}")
     out = [f"## {name}\n", f"{c['setup']}. Run: `{doc['command']}` ({', '.join(run)}).\n",
-           f"Checks (gate: {c.get('gates', 'issue {}'.format(c.get('issue', 9)))}; "
-           f"{ci_line(c, len(doc['checks']))}):\n"]
+           f"Checks (gate: {c.get('gates', 'issue {}'.format(c.get('issue', 9)))}; convergence and CI: "
+           f"[{name}]({rel_plot}/convergence.md#{name})):\n"]
     for i, ch in enumerate(doc["checks"]):
         out.append(f"{i + 1}. {ch['metric']}: {ch['value']:.4g}, gate {ch['gate']:g}, "
                    f"{'pass' if ch['passed'] else '**MISSED**'}")
@@ -144,8 +145,15 @@ def case_section(name, c, doc, runs, rel_plot, png):
         out.append(f"{c['note']}\n")
     if c.get("doc_note"):
         out.append(f"Resolution: {c['doc_note']}.\n")
-    out.append("| spacing | particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |")
-    out.append("|" + "---|" * (len(doc["checks"]) + 3))
+    out.append(f"![{name}]({rel_plot}/{os.path.basename(png)})\n")
+    return "\n".join(out)
+
+
+def convergence_section(name, c, doc, runs):
+    """A case's convergence table (the documentation resolution in bold) and what CI asserts."""
+    out = [f"## {name}\n", f"{ci_line(c, len(doc['checks']))}.\n",
+           "| spacing | particles | " + " | ".join(f"check {i + 1}" for i in range(len(doc["checks"]))) + " | wall s |",
+           "|" + "---|" * (len(doc["checks"]) + 3)]
     for r in runs:
         if "failed" in r:
             out.append(f"| {r['spacing']:.4g} | run failed: {r['failed']} |")
@@ -153,8 +161,17 @@ def case_section(name, c, doc, runs, rel_plot, png):
         sp = f"{r['spacing']:.4g}"
         out.append(f"| {f'**{sp}**' if r is doc else sp} | {r['fluid_particles']} | " +
                    " | ".join(f"{ch['value']:.4g}" for ch in r["checks"]) + f" | {r['wall_seconds']:.0f} |")
-    out.append(f"\n![{name}]({rel_plot}/{os.path.basename(png)})\n")
-    return "\n".join(out)
+    return "\n".join(out) + "\n"
+
+
+CONVERGENCE_HEAD = """# Validation: convergence and CI
+
+Each case of [the validation report](../validation.md): its checks (numbered as there) at every
+spacing of its study, the documentation resolution in bold, and what CI (`ctest -L validation`)
+asserts at its coarser spacing: the issue's gate or, where the case misses it or comes close, a
+regression bound (the error measured there plus 50 %).
+
+"""
 
 
 def report_head(span, passed, missed, absent):
@@ -162,7 +179,8 @@ def report_head(span, passed, missed, absent):
     return f"""# Validation report
 
 Each case is a scene of `scenes/validation/` run by `fluid_sim` or `fluid_sim_3d` with the app's
-defaults (only the spacing changes, `--set particles.spacing=DX`) and compared with its reference
+defaults (only the spacing changes, `--set particles.spacing=DX`; a case that sets one more key
+shows it in its command) and compared with its reference
 ([reference_solutions.md](reference_solutions.md), `validation/data/`) from the app's own outputs
 by `validation/cases.py`. A gate is never loosened: a case that misses it says **MISSED**.
 
@@ -174,7 +192,7 @@ by `validation/cases.py`. A gate is never loosened: a case that misses it says *
 
 Wall times: 2 threads on 2 CPU cores (a KVM guest) unless a run says otherwise.
 App builds of {span}; each case's run names its build.
-Each case's table is its convergence study, the documentation resolution in bold.
+Each case's convergence study is in [validation/convergence.md](validation/convergence.md).
 
 **{passed} of {len(cases.CASES)} cases meet their gates** at documentation resolution, {missed} miss them{f", {absent} have no result" if absent else ""}.
 
@@ -189,7 +207,7 @@ def main():
     by_case = load(results_dir, summary)
     write_summary(by_case, summary)
     rel_plot = os.path.relpath(plot_dir, os.path.dirname(os.path.abspath(report)))
-    rows, sections, dates = [], [], set()
+    rows, sections, tables, dates = [], [], [], set()
     passed = missed = absent = 0
     for name, c in cases.CASES.items():
         runs = by_case.get(name, [])
@@ -212,10 +230,13 @@ def main():
                     f"{main_ch['value']:.3g} | {main_ch['gate']:g} | {'pass' if ok else '**MISSED**'} |")
         png = plot(name, doc, runs, plot_dir)
         sections.append(case_section(name, c, doc, runs, rel_plot, png))
+        tables.append(convergence_section(name, c, doc, runs))
     span = (f"{min(dates)} to {max(dates)}" if len(dates) > 1 else min(dates) if dates else "dates unknown")
     head = report_head(span, passed, missed, absent)
     with open(report, "w") as f:
         f.write(head + "\n".join(rows) + "\n\n" + "\n".join(sections))
+    with open(os.path.join(plot_dir, "convergence.md"), "w") as f:
+        f.write(CONVERGENCE_HEAD + "\n".join(tables))
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every validation case through the apps at documentation resolution together with its
-# convergence study, and rewrites docs/validation.md with its plots (docs/validation/*.png).
+# convergence study, and rewrites docs/validation.md with its plots (docs/validation/*.png) and
+# docs/validation/convergence.md.
 #   validation/run.sh [build-dir]      (default build/release)
 # Each run is `validation/cases.py run CASE --spacing DX` (the scene of scenes/validation/, the
 # app, its defaults); its full result goes to docs/validation/results/CASE@DX.json (not kept in

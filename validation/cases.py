@@ -1486,8 +1486,9 @@ case("cylinder_re100", "cylinder_re100.json", cylinder_shedding, 0.005, [0.01, 0
                "about 3.2, low as in cylinder_re20. PySPH's inlet and outlet on this set-up "
                "(validation/pysph_cylinder_inlet.py --re 100, EDAC) at D / dx = 10 sheds at St 0.294 "
                "(within the gate) but misses the other two: c_D max 3.744 (+16 %), c_L max 1.164 (+16 %); "
-               "the app there: St 0.55, c_D max 34 % off, c_L max 7 % off (with shifting_normal_to_walls: St "
-               "0.199, c_D max 4.07, c_L max 0.685).")
+               "the app there: St 0.55, c_D max 34 % off, c_L max 7 % off. With shifting_normal_to_walls "
+               "(docs/physics.md) the wake sheds as the benchmark's at D / dx = 20: St 0.299 (0.4 % off), "
+               "c_D max 3.681 (+14 %, mean 3.53), c_L max 1.392 (+39 %); at 10 St 0.199.")
 case("pipe_inflow_3d", "pipe_inflow_3d.json", pipe_flow, 0.0005, [0.001, 0.0005], (0.001, PIPE_CI_BOUNDS),
      gates="the source each check names", details=True, shared_cores=True,
      note="The pipe is a wall (the difference of a box and a cylinder); where it meets the inlet's side its "

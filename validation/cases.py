@@ -1417,7 +1417,8 @@ CYLINDER_NORMAL_NOTE = (
     "With `physics.shifting_normal_to_walls: true` particles near the body are shifted towards and away "
     "from it too, and the front stagnation point keeps its pressure: the drag is within the gate at both "
     "spacings, as PySPH's (+5.0 % and +2.8 %). It is not the default: the lid-driven cavity at Re 100 then "
-    "misses its gate (0.0356 against 0.03 at spacing 0.01; 0.0122 with the default), while natural "
+    "misses its gate (0.0356 against 0.03 at spacing 0.01; 0.0122 with the default) and so does the 2D "
+    "hydrostatic tank (0.0148 against 0.01 at 0.025; 0.0061 with the default), while natural "
     "convection at Ra 1e4 meets its gates either way (u_max, v_max, Nu 0.7, 1.5, 0.1 % with it at "
     "spacing 0.01; 1.0, 2.0, 0.0 % by default; 2026-12-07).")
 CYLINDER_MISS = (
@@ -1426,7 +1427,7 @@ CYLINDER_MISS = (
     "shifting along walls leaves the particles at the front stagnation point about 100 Pa below "
     "their neighbours (docs/physics.md). With the shifting's normal component kept near walls "
     "(cylinder_re20_normal_shift) c_D is within the gate, +1.3 %, but the lid-driven cavity at Re 100 "
-    "then misses its gate, so the default keeps the shifting along walls only.")
+    "and the hydrostatic tank then miss their gates, so the default keeps the shifting along walls only.")
 case("cylinder_re20", "cylinder_re20.json", cylinder_benchmark, 0.005, [0.01, 0.005],
      (0.01, [CYLINDER_CI_BOUND]), issue=48, miss_note=CYLINDER_MISS,
      shared_cores=True)
